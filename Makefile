@@ -1,0 +1,32 @@
+# Thin wrapper over the CMake presets. `make demo` and `make test` are the README's quick start.
+PRESET ?= release
+BUILD := build/$(PRESET)
+JOBS ?= $(shell nproc)
+GLINT := $(BUILD)/apps/glint/glint
+
+.PHONY: all deps build demo test format format-check clean
+
+all: build
+
+deps:
+	scripts/install-deps.sh
+
+build:
+	cmake --preset $(PRESET) >/dev/null
+	cmake --build --preset $(PRESET) -j $(JOBS)
+
+demo: deps build
+	$(GLINT) render scenes/showcase.yaml -o showcase.png
+	@echo "The showcase image is in $(CURDIR)/showcase.png"
+
+test: build
+	ctest --preset $(PRESET) -j $(JOBS)
+
+format:
+	clang-format -i $$(git ls-files '*.h' '*.cpp')
+
+format-check:
+	clang-format --dry-run -Werror $$(git ls-files '*.h' '*.cpp')
+
+clean:
+	rm -rf build
