@@ -1,0 +1,80 @@
+// OpenEXR reading and writing. OpenEXR reports failures with its own exceptions (Iex, derived
+// from std::exception); they are caught here and rethrown as ImageError naming the file.
+#include "glint/image/exr_io.h"
+
+#include <ImfChannelList.h>
+#include <ImfFrameBuffer.h>
+#include <ImfHeader.h>
+#include <ImfInputFile.h>
+#include <ImfOutputFile.h>
+
+#include <cstddef>
+#include <cstdint>
+#include <exception>
+#include <string>
+
+#include "glint/image/image_error.h"
+#include "glint/image/image_limits.h"
+
+namespace glint {
+namespace {
+
+// The frame buffers below address the channels of Image::pixels in place.
+static_assert(sizeof(Color) == 3 * sizeof(float) && offsetof(Color, g) == sizeof(float) &&
+              offsetof(Color, b) == 2 * sizeof(float));
+
+constexpr const char* kChannels[3] = {"R", "G", "B"};
+
+}  // namespace
+
+void write_exr(const std::filesystem::path& path, const Image& image) {
+    check_image_shape(path, image);
+    try {
+        Imf::Header header(image.width, image.height);
+        header.compression() = Imf::ZIP_COMPRESSION;
+        Imf::FrameBuffer frame;
+        // OpenEXR's slices take a non-const pointer for reading and writing alike; writing
+        // only reads through it.
+        char* base = reinterpret_cast<char*>(const_cast<Color*>(image.pixels.data()));
+        for (int c = 0; c < 3; ++c) {
+            header.channels().insert(kChannels[c], Imf::Channel(Imf::FLOAT));
+            frame.insert(kChannels[c],
+                         Imf::Slice(Imf::FLOAT, base + c * sizeof(float), sizeof(Color),
+                                    sizeof(Color) * std::size_t(image.width)));
+        }
+        Imf::OutputFile file(path.c_str(), header);
+        file.setFrameBuffer(frame);
+        file.writePixels(image.height);
+    } catch (const std::exception& e) {
+        throw ImageError(path, std::string("cannot write EXR: ") + e.what());
+    }
+}
+
+Image read_exr(const std::filesystem::path& path) {
+    try {
+        Imf::InputFile file(path.c_str());
+        const Imath::Box2i window = file.header().dataWindow();
+        const std::int64_t width = std::int64_t(window.max.x) - window.min.x + 1;
+        const std::int64_t height = std::int64_t(window.max.y) - window.min.y + 1;
+        check_image_size(path, width, height);
+
+        Image image(static_cast<int>(width), static_cast<int>(height));
+        Imf::FrameBuffer frame;
+        for (int c = 0; c < 3; ++c) {
+            // Slice::Make offsets the base by the data window's origin without overflow.
+            frame.insert(kChannels[c],
+                         Imf::Slice::Make(Imf::FLOAT, &image.pixels[0].r + c, window, sizeof(Color),
+                                          sizeof(Color) * std::size_t(width), 1, 1,
+                                          /*fillValue=*/0.0));
+        }
+        file.setFrameBuffer(frame);
+        file.readPixels(window.min.y, window.max.y);
+        return image;
+    } catch (const ImageError&) {
+        throw;
+    } catch (const std::exception& e) {
+        throw ImageError(path, std::string("cannot read EXR: ") + e.what());
+    }
+}
+
+}  // namespace glint

@@ -1,0 +1,164 @@
+// PNG through libpng. libpng reports errors by longjmp: only the two small functions marked
+// below call setjmp, and they hold nothing with a destructor, so a jump never skips C++ cleanup.
+// Everything that owns memory lives in their callers.
+#include "glint/image/png_io.h"
+
+#include <png.h>
+
+#include <array>
+#include <bit>
+#include <cstdint>
+#include <cstdio>
+#include <string>
+#include <vector>
+
+#include "glint/image/file_io.h"
+#include "glint/image/image_error.h"
+#include "glint/image/image_limits.h"
+#include "glint/image/quantize.h"
+#include "glint/image/srgb.h"
+
+namespace glint {
+namespace {
+
+// Where the error callback leaves libpng's message; plain data, as it outlives the jump.
+struct PngMessage {
+    char text[256] = "unknown libpng error";
+};
+
+[[noreturn]] void on_png_error(png_structp png, png_const_charp message) {
+    auto* out = static_cast<PngMessage*>(png_get_error_ptr(png));
+    std::snprintf(out->text, sizeof out->text, "%s", message);
+    png_longjmp(png, 1);
+}
+
+void on_png_warning(png_structp, png_const_charp) {}  // e.g. unknown chunks: not the user's problem
+
+struct PngWriteStructs {
+    png_structp png = nullptr;
+    png_infop info = nullptr;
+    ~PngWriteStructs() { png_destroy_write_struct(&png, &info); }
+};
+
+struct PngReadStructs {
+    png_structp png = nullptr;
+    png_infop info = nullptr;
+    ~PngReadStructs() { png_destroy_read_struct(&png, &info, nullptr); }
+};
+
+// Calls setjmp: plain locals only.
+bool encode_png(png_structp png, png_infop info, std::FILE* file, png_uint_32 width,
+                png_uint_32 height, png_bytepp rows) {
+    if (setjmp(png_jmpbuf(png))) return false;
+    png_init_io(png, file);
+    png_set_IHDR(png, info, width, height, 8, PNG_COLOR_TYPE_RGB, PNG_INTERLACE_NONE,
+                 PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
+    png_set_sRGB_gAMA_and_cHRM(png, info, PNG_sRGB_INTENT_PERCEPTUAL);
+    png_write_info(png, info);
+    png_write_image(png, rows);
+    png_write_end(png, info);
+    return true;
+}
+
+// Calls setjmp: plain locals only. Reads the header and asks libpng to deliver every PNG as
+// 16-bit RGB in host byte order, so one decoding loop serves all colour types and depths.
+bool read_png_header(png_structp png, png_infop info, std::FILE* file, png_uint_32* width,
+                     png_uint_32* height) {
+    if (setjmp(png_jmpbuf(png))) return false;
+    png_init_io(png, file);
+    png_set_sig_bytes(png, 8);
+    png_set_user_limits(png, png_uint_32(kMaxImageDimension), png_uint_32(kMaxImageDimension));
+    png_read_info(png, info);
+    png_set_expand(png);  // palette to RGB, gray below 8 bits to 8 bits
+    png_set_expand_16(png);
+    png_set_strip_alpha(png);
+    png_set_gray_to_rgb(png);
+    if constexpr (std::endian::native == std::endian::little) png_set_swap(png);
+    png_set_interlace_handling(png);
+    png_read_update_info(png, info);
+    *width = png_get_image_width(png, info);
+    *height = png_get_image_height(png, info);
+    return true;
+}
+
+// Calls setjmp: plain locals only.
+bool read_png_rows(png_structp png, png_bytepp rows) {
+    if (setjmp(png_jmpbuf(png))) return false;
+    png_read_image(png, rows);
+    png_read_end(png, nullptr);
+    return true;
+}
+
+float decode_srgb16(std::uint16_t value) {
+    static const std::vector<float> table = [] {
+        std::vector<float> t(65536);
+        for (std::size_t i = 0; i < t.size(); ++i) t[i] = srgb_to_linear(float(i) / 65535);
+        return t;
+    }();
+    return table[value];
+}
+
+}  // namespace
+
+void write_png(const std::filesystem::path& path, const Image& image) {
+    check_image_shape(path, image);
+    std::vector<std::uint8_t> bytes = quantize_srgb8(image);
+    std::vector<png_bytep> rows(std::size_t(image.height));
+    for (std::size_t y = 0; y < rows.size(); ++y) {
+        rows[y] = bytes.data() + y * std::size_t(image.width) * 3;
+    }
+
+    UniqueFile file = open_file(path, "wb");
+    PngMessage message;
+    PngWriteStructs s;
+    s.png = png_create_write_struct(PNG_LIBPNG_VER_STRING, &message, on_png_error, on_png_warning);
+    if (s.png) s.info = png_create_info_struct(s.png);
+    if (!s.info) throw ImageError(path, "cannot write PNG: libpng could not start");
+    if (!encode_png(s.png, s.info, file.get(), png_uint_32(image.width), png_uint_32(image.height),
+                    rows.data())) {
+        throw ImageError(path, std::string("cannot write PNG: ") + message.text);
+    }
+    close_written_file(std::move(file), path);
+}
+
+Image read_png(const std::filesystem::path& path) {
+    UniqueFile file = open_file(path, "rb");
+    std::array<png_byte, 8> signature{};
+    if (std::fread(signature.data(), 1, signature.size(), file.get()) != signature.size() ||
+        png_sig_cmp(signature.data(), 0, signature.size()) != 0) {
+        throw ImageError(path, "not a PNG file (wrong signature)");
+    }
+
+    PngMessage message;
+    PngReadStructs s;
+    s.png = png_create_read_struct(PNG_LIBPNG_VER_STRING, &message, on_png_error, on_png_warning);
+    if (s.png) s.info = png_create_info_struct(s.png);
+    if (!s.info) throw ImageError(path, "cannot read PNG: libpng could not start");
+
+    png_uint_32 width = 0, height = 0;
+    if (!read_png_header(s.png, s.info, file.get(), &width, &height)) {
+        throw ImageError(path, std::string("malformed PNG: ") + message.text);
+    }
+    check_image_size(path, width, height);
+    if (png_get_rowbytes(s.png, s.info) != std::size_t(width) * 6) {
+        throw ImageError(path, "malformed PNG: unexpected row layout after conversion to RGB");
+    }
+
+    std::vector<std::uint16_t> samples(std::size_t(width) * height * 3);
+    std::vector<png_bytep> rows(height);
+    for (std::size_t y = 0; y < rows.size(); ++y) {
+        rows[y] = reinterpret_cast<png_bytep>(samples.data() + y * std::size_t(width) * 3);
+    }
+    if (!read_png_rows(s.png, rows.data())) {
+        throw ImageError(path, std::string("malformed PNG: ") + message.text);
+    }
+
+    Image image(static_cast<int>(width), static_cast<int>(height));
+    for (std::size_t i = 0; i < image.pixels.size(); ++i) {
+        image.pixels[i] = {decode_srgb16(samples[3 * i]), decode_srgb16(samples[3 * i + 1]),
+                           decode_srgb16(samples[3 * i + 2])};
+    }
+    return image;
+}
+
+}  // namespace glint

@@ -1,0 +1,19 @@
+// PNG files through libpng: 8-bit sRGB output (dithered), and input of any standard PNG.
+#pragma once
+
+#include <filesystem>
+
+#include "glint/image/image.h"
+
+namespace glint {
+
+// Writes 8-bit RGB, sRGB-encoded and dithered (see quantize.h), with sRGB, gAMA and cHRM
+// chunks. Writes `path` directly; write_image() goes through a temporary. Throws ImageError.
+void write_png(const std::filesystem::path& path, const Image& image);
+
+// Reads 1- to 16-bit gray, RGB and palette PNGs, with or without alpha, into linear floats.
+// The samples are taken as sRGB-encoded whatever gAMA or iCCP chunks say, and alpha is
+// dropped. A missing, truncated or corrupt file throws ImageError naming it.
+Image read_png(const std::filesystem::path& path);
+
+}  // namespace glint
