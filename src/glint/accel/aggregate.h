@@ -1,0 +1,35 @@
+// The one interface every acceleration structure implements: closest hit and any hit over a
+// set of primitives. Queries never allocate and never throw.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+
+#include "glint/accel/primitive.h"
+#include "glint/geometry/surface_point.h"
+#include "glint/math/bounds.h"
+#include "glint/math/interval.h"
+#include "glint/math/ray.h"
+
+namespace glint {
+
+struct Hit {
+    ShapeHit shape_hit;
+    std::uint32_t primitive;  // index into the primitives the aggregate was built over
+};
+
+// Built over a primitive array that the caller keeps alive and unchanged.
+class Aggregate {
+public:
+    virtual ~Aggregate() = default;
+
+    // Bounds of the bounded primitives; unbounded ones (planes) are not included.
+    virtual Bounds3 bounds() const = 0;
+    // The nearest hit with t in t_range among primitives visible to ray_mask.
+    virtual std::optional<Hit> intersect(const Ray& ray, Interval t_range,
+                                         std::uint32_t ray_mask) const = 0;
+    // Whether any primitive visible to ray_mask is hit with t in t_range (shadow feelers).
+    virtual bool occluded(const Ray& ray, Interval t_range, std::uint32_t ray_mask) const = 0;
+};
+
+}  // namespace glint

@@ -1,0 +1,15 @@
+#include "glint/accel/make_aggregate.h"
+
+#include "glint/accel/primitive_list.h"
+
+namespace glint {
+
+std::unique_ptr<Aggregate> make_aggregate(AccelKind kind, std::span<const Primitive> primitives) {
+    switch (kind) {
+        case AccelKind::list:
+            return std::make_unique<PrimitiveList>(primitives);
+    }
+    return nullptr;
+}
+
+}  // namespace glint

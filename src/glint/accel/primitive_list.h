@@ -1,0 +1,25 @@
+// The brute-force aggregate: every ray against every primitive. The reference that every
+// acceleration structure must agree with, and the notes' "simple method".
+#pragma once
+
+#include <span>
+
+#include "glint/accel/aggregate.h"
+
+namespace glint {
+
+class PrimitiveList final : public Aggregate {
+public:
+    explicit PrimitiveList(std::span<const Primitive> primitives);
+
+    Bounds3 bounds() const override { return bounds_; }
+    std::optional<Hit> intersect(const Ray& ray, Interval t_range,
+                                 std::uint32_t ray_mask) const override;
+    bool occluded(const Ray& ray, Interval t_range, std::uint32_t ray_mask) const override;
+
+private:
+    std::span<const Primitive> primitives_;
+    Bounds3 bounds_;
+};
+
+}  // namespace glint

@@ -1,0 +1,48 @@
+#include "glint/geometry/box.h"
+
+#include <algorithm>
+#include <cstdint>
+
+namespace glint {
+
+std::optional<ShapeHit> Box::intersect(const Ray& ray, Interval t_range) const {
+    float t_near = -kInfinity, t_far = kInfinity;
+    std::uint32_t near_face = 0, far_face = 0;
+    for (int axis = 0; axis < 3; ++axis) {
+        const float inv = 1 / ray.direction[axis];
+        float t_min_side = (min[axis] - ray.origin[axis]) * inv;
+        float t_max_side = (max[axis] - ray.origin[axis]) * inv;
+        std::uint32_t enter = 2 * axis, leave = 2 * axis + 1;
+        if (t_min_side > t_max_side) {
+            std::swap(t_min_side, t_max_side);
+            std::swap(enter, leave);
+        }
+        // A NaN (origin on a face plane, parallel direction) leaves the bounds as they were.
+        if (t_min_side > t_near) t_near = t_min_side, near_face = enter;
+        if (t_max_side < t_far) t_far = t_max_side, far_face = leave;
+        if (t_near > t_far) return std::nullopt;
+    }
+    if (t_range.contains(t_near)) return ShapeHit{t_near, 0, 0, near_face};
+    if (t_range.contains(t_far)) return ShapeHit{t_far, 0, 0, far_face};
+    return std::nullopt;
+}
+
+SurfacePoint Box::surface_at(const Ray& ray, const ShapeHit& hit) const {
+    const int axis = static_cast<int>(hit.part / 2);
+    const bool max_side = hit.part % 2 == 1;
+    const Point3 p = ray.at(hit.t);
+    float c[3] = {p.x, p.y, p.z};
+    c[axis] = max_side ? max[axis] : min[axis];  // snap onto the face
+    SurfacePoint sp;
+    sp.p = {c[0], c[1], c[2]};
+    float n[3] = {0, 0, 0};
+    n[axis] = max_side ? 1.0f : -1.0f;
+    sp.normal = {n[0], n[1], n[2]};
+    const int a = (axis + 1) % 3, b = (axis + 2) % 3;
+    const int u_axis = std::min(a, b), v_axis = std::max(a, b);
+    sp.uv = {(c[u_axis] - min[u_axis]) / (max[u_axis] - min[u_axis]),
+             (c[v_axis] - min[v_axis]) / (max[v_axis] - min[v_axis])};
+    return sp;
+}
+
+}  // namespace glint

@@ -1,0 +1,26 @@
+// An infinite plane through a point with a unit normal.
+#pragma once
+
+#include <optional>
+
+#include "glint/geometry/surface_point.h"
+#include "glint/math/bounds.h"
+#include "glint/math/interval.h"
+#include "glint/math/ray.h"
+
+namespace glint {
+
+struct Plane {
+    Point3 point;
+    Normal3 normal{0, 1, 0};  // unit length
+
+    // Infinite: an empty box with infinite corners would be lost in a union, so the bounds are
+    // the whole space. Acceleration structures keep unbounded shapes apart.
+    Bounds3 bounds() const;
+    // t = -(D + N.P0) / (N.R) with D = -N.point (the notes' ray-polygon plane step).
+    std::optional<ShapeHit> intersect(const Ray& ray, Interval t_range) const;
+    // uv: world-unit coordinates along two perpendicular directions in the plane.
+    SurfacePoint surface_at(const Ray& ray, const ShapeHit& hit) const;
+};
+
+}  // namespace glint

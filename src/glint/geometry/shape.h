@@ -1,0 +1,33 @@
+// A Shape is one surface's geometry, as plain data: the scene describes it and the renderer
+// intersects the same value. Dispatch is a switch over the alternatives, not a virtual call.
+#pragma once
+
+#include <optional>
+#include <string_view>
+#include <variant>
+
+#include "glint/geometry/box.h"
+#include "glint/geometry/plane.h"
+#include "glint/geometry/sphere.h"
+#include "glint/geometry/surface_point.h"
+#include "glint/geometry/triangle.h"
+
+namespace glint {
+
+using Shape = std::variant<Sphere, Plane, Triangle, Box>;
+
+inline Bounds3 bounds(const Shape& shape) {
+    return std::visit([](const auto& s) { return s.bounds(); }, shape);
+}
+
+inline std::optional<ShapeHit> intersect(const Shape& shape, const Ray& ray, Interval t_range) {
+    return std::visit([&](const auto& s) { return s.intersect(ray, t_range); }, shape);
+}
+
+inline SurfacePoint surface_at(const Shape& shape, const Ray& ray, const ShapeHit& hit) {
+    return std::visit([&](const auto& s) { return s.surface_at(ray, hit); }, shape);
+}
+
+std::string_view shape_name(const Shape& shape);
+
+}  // namespace glint

@@ -1,0 +1,27 @@
+// What traversal knows about a hit (ShapeHit), and the full surface point built from it.
+#pragma once
+
+#include <cstdint>
+
+#include "glint/math/vector.h"
+
+namespace glint {
+
+// The cheap part of a hit: the ray parameter and whatever the intersection routine found on the
+// way that surface_at() needs again (barycentrics for triangles, the face for boxes).
+struct ShapeHit {
+    float t = 0;
+    float u = 0, v = 0;
+    std::uint32_t part = 0;
+};
+
+struct SurfacePoint {
+    Point3 p;
+    // Unit geometric normal. On closed shapes it points outwards; on open ones (planes,
+    // triangles) it is the side the description names. Never flipped towards the ray here.
+    Normal3 normal;
+    // Texture coordinates; their range and meaning depend on the shape.
+    Point2 uv;
+};
+
+}  // namespace glint

@@ -1,0 +1,29 @@
+// A single triangle. Its front side is the one from which the vertices run counter-clockwise.
+#pragma once
+
+#include <array>
+#include <optional>
+
+#include "glint/geometry/surface_point.h"
+#include "glint/math/bounds.h"
+#include "glint/math/interval.h"
+#include "glint/math/ray.h"
+
+namespace glint {
+
+struct Triangle {
+    std::array<Point3, 3> vertices;
+    std::array<Point2, 3> uvs{{{0, 0}, {1, 0}, {0, 1}}};
+
+    Bounds3 bounds() const;
+    // Moeller and Trumbore (1997). Two-sided; hit.u and hit.v are the barycentric weights of
+    // vertices 1 and 2.
+    std::optional<ShapeHit> intersect(const Ray& ray, Interval t_range) const;
+    // The normal is normalize((v1 - v0) x (v2 - v0)); uv interpolates the vertex uvs.
+    SurfacePoint surface_at(const Ray& ray, const ShapeHit& hit) const;
+};
+
+// Twice the area; zero for collinear vertices, which no ray can hit.
+float double_area(const Triangle& triangle);
+
+}  // namespace glint

@@ -1,0 +1,29 @@
+// The classic material of the lecture notes: Phong's local model plus the weights of the
+// reflected and refracted rays of Whitted's recursion.
+#pragma once
+
+#include <string>
+
+#include "glint/math/color.h"
+#include "glint/shading/texture.h"
+
+namespace glint {
+
+// How the highlight is measured: Phong's (R.V)^n or Blinn's (H.N)^n.
+enum class Highlight { blinn, phong };
+
+struct Material {
+    std::string name;
+    Texture color = Color{1, 1, 1};  // the surface colour; scales the ambient and diffuse terms
+    float ka = 0.1f;                 // ambient coefficient
+    float kd = 0.7f;                 // diffuse coefficient
+    float ks = 0;                    // specular (highlight) coefficient; the highlight is white
+    float shininess = 20;            // highlight exponent n
+    Highlight highlight = Highlight::blinn;
+    float reflect = 0;   // kr, weight of the mirror-reflected ray
+    float transmit = 0;  // kt, weight of the refracted ray
+    float ior = 1;       // index of refraction of the material (the outside is vacuum, 1)
+    Color emission;      // added to the surface's own light, unaffected by lights and shadows
+};
+
+}  // namespace glint

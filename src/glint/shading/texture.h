@@ -1,0 +1,25 @@
+// Colour sources for materials: a constant colour or a checker pattern, either painted on the
+// surface's uv coordinates (2D) or carved out of space (3D, a solid texture).
+#pragma once
+
+#include <variant>
+
+#include "glint/geometry/surface_point.h"
+#include "glint/math/color.h"
+
+namespace glint {
+
+enum class CheckerSpace { uv, solid };
+
+struct CheckerTexture {
+    Color even{1, 1, 1};
+    Color odd{0, 0, 0};
+    float size = 1;  // edge of one square: uv units for uv, scene units for solid; > 0
+    CheckerSpace space = CheckerSpace::solid;
+};
+
+using Texture = std::variant<Color, CheckerTexture>;
+
+Color evaluate(const Texture& texture, const SurfacePoint& sp);
+
+}  // namespace glint

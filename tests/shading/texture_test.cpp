@@ -1,0 +1,36 @@
+#include "glint/shading/texture.h"
+
+#include <gtest/gtest.h>
+
+namespace glint {
+namespace {
+
+SurfacePoint at(Point3 p, Point2 uv = {}) {
+    SurfacePoint sp;
+    sp.p = p;
+    sp.uv = uv;
+    return sp;
+}
+
+const Color kWhite{1, 1, 1}, kBlack{0, 0, 0};
+
+TEST(Texture, ConstantColour) { EXPECT_EQ(evaluate(Color{1, 2, 3}, at({})), (Color{1, 2, 3})); }
+
+TEST(Texture, SolidCheckerAlternatesAcrossEveryAxisAndAcrossZero) {
+    const CheckerTexture checker{kWhite, kBlack, 0.5f, CheckerSpace::solid};
+    EXPECT_EQ(evaluate(checker, at({0.1f, 0.1f, 0.1f})), kWhite);
+    EXPECT_EQ(evaluate(checker, at({0.6f, 0.1f, 0.1f})), kBlack);
+    EXPECT_EQ(evaluate(checker, at({0.6f, 0.6f, 0.1f})), kWhite);
+    EXPECT_EQ(evaluate(checker, at({0.6f, 0.6f, 0.6f})), kBlack);
+    EXPECT_EQ(evaluate(checker, at({-0.1f, 0.1f, 0.1f})), kBlack);  // floor(-0.2) = -1
+}
+
+TEST(Texture, UvCheckerUsesTextureCoordinates) {
+    const CheckerTexture checker{kWhite, kBlack, 0.25f, CheckerSpace::uv};
+    EXPECT_EQ(evaluate(checker, at({9, 9, 9}, {0.1f, 0.1f})), kWhite);
+    EXPECT_EQ(evaluate(checker, at({9, 9, 9}, {0.3f, 0.1f})), kBlack);
+    EXPECT_EQ(evaluate(checker, at({9, 9, 9}, {0.3f, 0.3f})), kWhite);
+}
+
+}  // namespace
+}  // namespace glint
