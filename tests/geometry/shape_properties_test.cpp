@@ -16,7 +16,8 @@ struct DistanceToSurface {
     float operator()(const Sphere& s) const { return distance(p, s.center) - s.radius; }
     float operator()(const Plane& s) const { return dot(s.normal, p - s.point); }
     float operator()(const Triangle& s) const {
-        const Vector3 n = normalize(cross(s.vertices[1] - s.vertices[0], s.vertices[2] - s.vertices[0]));
+        const Vector3 n =
+            normalize(cross(s.vertices[1] - s.vertices[0], s.vertices[2] - s.vertices[0]));
         return dot(n, p - s.vertices[0]);
     }
     float operator()(const Box& s) const {
@@ -82,9 +83,12 @@ INSTANTIATE_TEST_SUITE_P(
     AllShapes, ShapeProperties,
     ::testing::Values(Shape{Sphere{{0.2f, -0.1f, 0.3f}, 1.1f}},
                       Shape{Plane{{0, 0.3f, 0}, Normal3(normalize(Vector3{0.2f, 1, -0.3f}))}},
-                      Shape{Triangle{{Point3{-1, -1, 0.2f}, Point3{1.5f, -0.5f, 0}, Point3{0, 1.2f, -0.3f}}}},
+                      Shape{Triangle{
+                          {Point3{-1, -1, 0.2f}, Point3{1.5f, -0.5f, 0}, Point3{0, 1.2f, -0.3f}}}},
                       Shape{Box{{-0.8f, -0.5f, -1}, {1, 0.7f, 0.4f}}}),
-    [](const ::testing::TestParamInfo<Shape>& param) { return std::string(shape_name(param.param)); });
+    [](const ::testing::TestParamInfo<Shape>& param) {
+        return std::string(shape_name(param.param));
+    });
 
 }  // namespace
 }  // namespace glint

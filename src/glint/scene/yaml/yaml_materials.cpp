@@ -1,0 +1,114 @@
+// Reading materials and checker textures, and resolving objects' material references.
+#include "glint/scene/yaml/yaml_materials.h"
+
+#include <algorithm>
+#include <limits>
+
+#include "glint/scene/suggest.h"
+
+namespace glint {
+
+namespace {
+constexpr std::string_view kTextureTypes[] = {"checker"};
+constexpr std::string_view kCheckerSpaces[] = {"solid", "uv"};
+constexpr std::string_view kHighlights[] = {"blinn", "phong"};
+// Notes list the defined materials only while the list stays readable.
+constexpr std::size_t kMaxListedNames = 30;
+}  // namespace
+
+Texture read_texture(const YamlSource& source, const YAML::Node& node, const Field& field) {
+    auto entries = read_map(source, node, field);
+    const std::string type = read_type(source, node, entries, "texture", kTextureTypes);
+    // Only the checker exists yet; a new texture type adds a branch here on `type`.
+    const MapReader map(source, node, std::move(entries), type + " texture",
+                        {"type", "even", "odd", "size", "space"});
+    CheckerTexture checker;
+    checker.even = map.color("even", checker.even);
+    checker.odd = map.color("odd", checker.odd);
+    checker.size = map.number("size", kPositive, checker.size);
+    const std::string space =
+        map.choice("space", kCheckerSpaces, "checker space", "checker spaces", "solid");
+    checker.space = space == "uv" ? CheckerSpace::uv : CheckerSpace::solid;
+    return checker;
+}
+
+Material read_material(const YamlSource& source, const YAML::Node& node, const Field& field,
+                       std::string what, std::string name) {
+    const MapReader map(source, node, field, std::move(what),
+                        {"color", "ka", "kd", "ks", "shininess", "highlight", "reflect", "transmit",
+                         "ior", "emission"});
+    Material m;
+    m.name = std::move(name);
+    if (const MapEntry* color = map.find("color")) {
+        m.color = color->value.IsMap()
+                      ? read_texture(source, color->value, map.field("color"))
+                      : Texture(read_color(source, color->value, map.field("color")));
+    }
+    m.ka = map.number("ka", kNonNegative, m.ka);
+    m.kd = map.number("kd", kNonNegative, m.kd);
+    m.ks = map.number("ks", kNonNegative, m.ks);
+    m.shininess = map.number("shininess", kNonNegative, m.shininess);
+    const std::string highlight =
+        map.choice("highlight", kHighlights, "highlight", "highlights", "blinn");
+    m.highlight = highlight == "phong" ? Highlight::phong : Highlight::blinn;
+    m.reflect = map.number("reflect", kUnitInterval, m.reflect);
+    m.transmit = map.number("transmit", kUnitInterval, m.transmit);
+    m.ior = map.number("ior", kPositive, m.ior);
+    m.emission = map.color("emission", m.emission);
+    return m;
+}
+
+void MaterialTable::read_named(const YAML::Node& section, const Field& field) {
+    for (const MapEntry& entry : read_map(source_, section, field)) {
+        if (entry.key.empty()) throw source_.error_at(entry.key_node, "material name is empty");
+        Material material = read_material(source_, entry.value, {"", entry.key, entry.key_node},
+                                          "material " + quote(entry.key), entry.key);
+        named_.emplace(entry.key, add(std::move(material)));
+    }
+}
+
+std::uint32_t MaterialTable::resolve(const MapEntry* entry, std::size_t object_index) {
+    if (!entry) {
+        // A material the file names "default" replaces the built-in one for every object that
+        // gives none.
+        if (const auto it = named_.find(kDefaultName); it != named_.end()) return it->second;
+        if (!default_) {
+            Material material;
+            material.name = kDefaultName;
+            default_ = add(std::move(material));
+        }
+        return *default_;
+    }
+    const YAML::Node& value = entry->value;
+    const Field field{"", "material", entry->key_node};
+    if (value.IsMap()) {
+        const std::string name = "(object " + std::to_string(object_index) + ")";
+        return add(read_material(source_, value, field, "material", name));
+    }
+    if (!value.IsScalar()) throw type_error(source_, value, field, "a material name or map");
+    const std::string& name = value.Scalar();
+    if (const auto it = named_.find(name); it != named_.end()) return it->second;
+
+    std::vector<std::string_view> names;
+    for (const auto& [defined, index] : named_) names.push_back(defined);  // sorted: a std::map
+    std::string note;
+    if (names.empty()) {
+        note = "no materials are defined; define them in the top-level \"materials\" map";
+    } else if (names.size() <= kMaxListedNames) {
+        note = "materials are: " + join(names) + did_you_mean(name, names);
+    } else {
+        note = std::to_string(names.size()) + " materials are defined" + did_you_mean(name, names);
+    }
+    throw source_.error_at(value, "unknown material " + quote(name), {note});
+}
+
+std::uint32_t MaterialTable::add(Material material) {
+    // An index must fit the object's 32-bit field; a file this size is refused long before.
+    if (materials_.size() >= std::numeric_limits<std::uint32_t>::max()) {
+        throw source_.error("too many materials");
+    }
+    materials_.push_back(std::move(material));
+    return std::uint32_t(materials_.size() - 1);
+}
+
+}  // namespace glint

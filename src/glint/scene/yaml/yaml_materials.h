@@ -1,0 +1,45 @@
+// Materials and textures of the YAML format, and the table that resolves an object's material:
+// a name from the top-level `materials`, an inline map, or the shared default.
+#pragma once
+
+#include <cstdint>
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "glint/scene/yaml/yaml_map_reader.h"
+#include "glint/shading/material.h"
+
+namespace glint {
+
+// A material map; `what` names it in messages (`material "glass"`).
+Material read_material(const YamlSource& source, const YAML::Node& node, const Field& field,
+                       std::string what, std::string name);
+// A texture map such as {type: checker, even: 1, odd: 0}.
+Texture read_texture(const YamlSource& source, const YAML::Node& node, const Field& field);
+
+// Appends materials to a scene's list and hands out their indices.
+class MaterialTable {
+public:
+    // The name an object without a material gets, unless the file defines a material so named.
+    static constexpr std::string_view kDefaultName = "default";
+
+    MaterialTable(const YamlSource& source, std::vector<Material>& materials)
+        : source_(source), materials_(materials) {}
+
+    // Reads the top-level `materials` map of name -> material map.
+    void read_named(const YAML::Node& section, const Field& field);
+    // The material of objects[object_index]: `entry` is its "material" key, null when absent.
+    std::uint32_t resolve(const MapEntry* entry, std::size_t object_index);
+
+private:
+    std::uint32_t add(Material material);
+
+    const YamlSource& source_;
+    std::vector<Material>& materials_;
+    std::map<std::string, std::uint32_t, std::less<>> named_;
+    std::optional<std::uint32_t> default_;
+};
+
+}  // namespace glint

@@ -1,0 +1,204 @@
+// The YAML scene loader: reads the file within its size limit, parses it with yaml-cpp, and walks
+// the sections in a fixed order (materials before the objects that name them). Whatever goes
+// wrong, including inside yaml-cpp, leaves as a SceneError.
+#include "glint/scene/yaml/yaml_scene_loader.h"
+
+#include <yaml-cpp/depthguard.h>
+#include <yaml-cpp/eventhandler.h>
+
+#include <algorithm>
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+#include <memory>
+#include <new>
+#include <sstream>
+
+#include "glint/scene/yaml/yaml_lights.h"
+#include "glint/scene/yaml/yaml_map_reader.h"
+#include "glint/scene/yaml/yaml_materials.h"
+#include "glint/scene/yaml/yaml_settings.h"
+#include "glint/scene/yaml/yaml_shapes.h"
+
+namespace glint {
+
+namespace {
+
+// An optional section given with no value (`lights:`) counts as absent.
+const MapEntry* section(const MapReader& scene, std::string_view key) {
+    const MapEntry* entry = scene.find(key);
+    return entry && !entry->value.IsNull() ? entry : nullptr;
+}
+
+std::string indexed(std::string_view key, std::size_t i) {
+    return std::string(key) + "[" + std::to_string(i) + "]";
+}
+
+SceneObject read_object(const YamlSource& source, const YAML::Node& node, const Field& field,
+                        MaterialTable& materials, std::size_t index) {
+    auto entries = read_map(source, node, field);
+    const std::vector<std::string_view> names = shape_type_names();
+    const std::string name = read_type(source, node, entries, "object", names);
+    const auto types = shape_types();
+    const ShapeType& type = *std::find_if(types.begin(), types.end(),
+                                          [&](const ShapeType& t) { return t.name == name; });
+    std::vector<std::string_view> keys = type.keys;
+    keys.insert(keys.end(), {"type", "material", "casts_shadow"});
+    const MapReader object(source, node, std::move(entries), name, std::move(keys));
+
+    SceneObject result{type.parse(object)};
+    result.material = materials.resolve(object.find("material"), index);
+    result.casts_shadow = object.boolean("casts_shadow", true);
+    return result;
+}
+
+Scene read_scene(const YamlSource& source, const YAML::Node& root) {
+    const MapReader scene(source, root, Field("", "scene"), "scene",
+                          {"image", "camera", "ambient", "materials", "lights", "objects"});
+    Scene result;
+    if (const MapEntry* image = section(scene, "image")) {
+        result.settings = read_image(source, image->value, scene.field("image"));
+    }
+    result.camera = read_camera(source, scene.require("camera").value, scene.field("camera"));
+    result.ambient = scene.color("ambient", result.ambient);
+
+    MaterialTable materials(source, result.materials);
+    if (const MapEntry* named = section(scene, "materials")) {
+        materials.read_named(named->value, scene.field("materials"));
+    }
+    if (const MapEntry* lights = section(scene, "lights")) {
+        const auto items =
+            read_sequence(source, lights->value, scene.field("lights"), "a list of lights");
+        for (std::size_t i = 0; i < items.size(); ++i) {
+            result.lights.push_back(read_light(source, items[i], {"", indexed("lights", i)}));
+        }
+    }
+    if (const MapEntry* objects = section(scene, "objects")) {
+        const auto items =
+            read_sequence(source, objects->value, scene.field("objects"), "a list of objects");
+        for (std::size_t i = 0; i < items.size(); ++i) {
+            result.objects.push_back(
+                read_object(source, items[i], {"", indexed("objects", i)}, materials, i));
+        }
+    }
+    return result;
+}
+
+// Records where each document starts, and nothing else.
+class DocumentStarts : public YAML::EventHandler {
+public:
+    std::vector<YAML::Mark> starts;
+
+    void OnDocumentStart(const YAML::Mark& mark) override { starts.push_back(mark); }
+    void OnDocumentEnd() override {}
+    void OnNull(const YAML::Mark&, YAML::anchor_t) override {}
+    void OnAlias(const YAML::Mark&, YAML::anchor_t) override {}
+    void OnScalar(const YAML::Mark&, const std::string&, YAML::anchor_t,
+                  const std::string&) override {}
+    void OnSequenceStart(const YAML::Mark&, const std::string&, YAML::anchor_t,
+                         YAML::EmitterStyle::value) override {}
+    void OnSequenceEnd() override {}
+    void OnMapStart(const YAML::Mark&, const std::string&, YAML::anchor_t,
+                    YAML::EmitterStyle::value) override {}
+    void OnMapEnd() override {}
+};
+
+// A scene is one document. YAML::LoadAll() cannot count them: on some invalid input (a "," where
+// a document should start) yaml-cpp 0.7 reports an empty document without consuming the token,
+// and LoadAll() loops until memory runs out (jbeder/yaml-cpp#1040). So the documents are
+// counted here, at most two, and a document that starts where the previous one did is that
+// stuck token.
+void check_single_document(const YamlSource& source, const std::string& text) {
+    std::istringstream stream(text);
+    YAML::Parser parser(stream);
+    DocumentStarts documents;
+    for (int i = 0; i < 2 && parser.HandleNextDocument(documents); ++i) {
+    }
+    if (documents.starts.size() < 2) return;
+    const YAML::Mark& second = documents.starts[1];
+    if (second.pos == documents.starts[0].pos) {
+        const std::string_view line = source.line(second.line);
+        const auto column = std::size_t(std::max(0, second.column));
+        const std::string token = column < line.size() ? std::string(1, line[column]) : "";
+        throw source.error_at(second, 1, "invalid YAML: unexpected " + quote(token));
+    }
+    throw source.error_at(second, 1, "a scene file holds one YAML document; this is a second one");
+}
+
+Scene parse_documents(const YamlSource& source, std::string_view text) {
+    const std::string yaml(text);
+    check_single_document(source, yaml);
+    const YAML::Node root = YAML::Load(yaml);
+    if (root.IsNull()) {
+        throw source.error("the scene is empty; it needs at least a camera",
+                           {"see docs/scene-format.md for an example"});
+    }
+    if (!root.IsMap()) {
+        throw source.error_at(root,
+                              "the top level of a scene must be a map of sections "
+                              "(image, camera, materials, lights, objects), got " +
+                                  describe(root));
+    }
+    return read_scene(source, root);
+}
+
+struct FileCloser {
+    void operator()(std::FILE* f) const { std::fclose(f); }
+};
+
+}  // namespace
+
+Scene parse_yaml_scene(std::string_view text, const std::string& file_name) {
+    const YamlSource source(text, file_name);
+    try {
+        return parse_documents(source, text);
+    } catch (const SceneError&) {
+        throw;
+    } catch (const YAML::DeepRecursion& e) {
+        // yaml-cpp's own message for this is "bad file".
+        throw source.error_at(
+            e.mark, 1,
+            "invalid YAML: nesting reaches the limit of " + std::to_string(e.depth()) + " levels");
+    } catch (const YAML::ParserException& e) {
+        throw source.error_at(e.mark, 1, "invalid YAML: " + e.msg);
+    } catch (const YAML::Exception& e) {
+        // The accessors above avoid the calls that throw these; this is the safety net.
+        throw source.error_at(e.mark, 1, "cannot read the YAML: " + e.msg);
+    } catch (const std::bad_alloc&) {
+        throw source.error("out of memory while reading the scene");
+    } catch (const std::exception& e) {
+        throw source.error(std::string("cannot read the scene: ") + e.what());
+    }
+}
+
+Scene load_yaml_scene(const std::filesystem::path& file) {
+    const std::string name = file.string();
+    const auto fail = [&](const std::string& why) {
+        return SceneError({name, 0, 0}, "cannot read scene file: " + why);
+    };
+    const auto too_large = [&] {
+        return SceneError({name, 0, 0}, "scene file is larger than the limit of 64 MiB");
+    };
+    std::error_code ec;
+    const auto status = std::filesystem::status(file, ec);
+    if (ec) throw fail(ec.message());
+    if (std::filesystem::is_directory(status)) throw fail("it is a directory");
+    // Regular files are measured first; pipes and devices are caught by the bounded read below.
+    if (std::filesystem::is_regular_file(status)) {
+        const auto size = std::filesystem::file_size(file, ec);
+        if (ec) throw fail(ec.message());
+        if (size > kMaxSceneFileBytes) throw too_large();
+    }
+    const std::unique_ptr<std::FILE, FileCloser> f(std::fopen(name.c_str(), "rb"));
+    if (!f) throw fail(std::strerror(errno));
+    std::string text;
+    char buffer[1 << 16];
+    while (const std::size_t n = std::fread(buffer, 1, sizeof buffer, f.get())) {
+        text.append(buffer, n);
+        if (text.size() > kMaxSceneFileBytes) throw too_large();
+    }
+    if (std::ferror(f.get())) throw fail(std::strerror(errno));
+    return parse_yaml_scene(text, name);
+}
+
+}  // namespace glint

@@ -1,0 +1,77 @@
+// Reading the image settings and the camera, with the limits that keep a scene from asking for
+// more memory or recursion than is sane, and the checks that keep the view well defined.
+#include "glint/scene/yaml/yaml_settings.h"
+
+#include <cmath>
+
+namespace glint {
+
+namespace {
+constexpr std::string_view kSamplers[] = {"regular"};
+constexpr std::string_view kCameraTypes[] = {"orthographic", "perspective"};
+}  // namespace
+
+RenderSettings read_image(const YamlSource& source, const YAML::Node& node, const Field& field) {
+    const MapReader map(source, node, field, "image",
+                        {"width", "height", "samples", "sampler", "max_depth", "min_weight",
+                         "background", "transparent_shadows"});
+    RenderSettings s;
+    s.width = map.integer("width", {1, kMaxImageSide}, s.width);
+    s.height = map.integer("height", {1, kMaxImageSide}, s.height);
+    if (std::int64_t(s.width) * s.height > kMaxImagePixels) {
+        throw source.error_at(node, "image is too large: " + std::to_string(s.width) + " x " +
+                                        std::to_string(s.height) + " pixels, more than the " +
+                                        "limit of " + std::to_string(kMaxImagePixels));
+    }
+    map.choice("sampler", kSamplers, "sampler", "samplers", "regular");
+    s.sampler = SamplerKind::regular;
+    s.samples_per_pixel = map.integer("samples", {1, kMaxSamplesPerPixel}, s.samples_per_pixel);
+    if (!is_valid_sample_count(s.sampler, s.samples_per_pixel)) {
+        throw source.error_at(map.require("samples").value,
+                              "samples must be a square number (1, 4, 9, 16, …) for the "
+                              "regular sampler, got " +
+                                  std::to_string(s.samples_per_pixel));
+    }
+    s.max_depth = map.integer("max_depth", {1, kMaxDepth}, s.max_depth);
+    s.min_weight = map.number("min_weight", kUnitInterval, s.min_weight);
+    s.background = map.color("background", s.background);
+    s.transparent_shadows = map.boolean("transparent_shadows", s.transparent_shadows);
+    return s;
+}
+
+CameraSpec read_camera(const YamlSource& source, const YAML::Node& node, const Field& field) {
+    auto entries = read_map(source, node, field);
+    const std::string type =
+        read_type(source, node, entries, "camera", kCameraTypes, "perspective");
+    const bool perspective = type == "perspective";
+    // Each projection takes only its own parameter, so a fov on an orthographic camera is
+    // reported rather than silently ignored.
+    const MapReader map(source, node, std::move(entries), type + " camera",
+                        {"type", "from", "at", "up", perspective ? "fov" : "height"});
+    CameraSpec camera;
+    camera.projection = perspective ? Projection::perspective : Projection::orthographic;
+    camera.from = map.point("from");
+    camera.at = map.point("at");
+    const auto view = unit_vector(camera.at - camera.from);
+    if (!view) {
+        throw source.error_at(map.require("at").value, "camera from and at must differ, both are " +
+                                                           format_vector(to_vector(camera.at)));
+    }
+    camera.up = map.direction("up", camera.up);
+    // Parallel vectors leave the image's horizontal axis, cross(view, up), undefined.
+    if (length(cross(*view, camera.up)) < 1e-6f) {
+        const MapEntry* up = map.find("up");
+        throw source.error_at(up ? up->value : node,
+                              "camera up is parallel to the view direction (at - from)",
+                              {"the image's vertical follows up; give one that is not along the "
+                               "line of sight"});
+    }
+    if (perspective) {
+        camera.fov = map.number("fov", {0, 180, true, true}, camera.fov);
+    } else {
+        camera.height = map.number("height", kPositive, camera.height);
+    }
+    return camera;
+}
+
+}  // namespace glint

@@ -1,0 +1,26 @@
+// The object types of the YAML format: one name -> key list -> parser table, so that a new shape
+// is one line there (plus its parser and its table in docs/scene-format.md).
+#pragma once
+
+#include <span>
+#include <string_view>
+#include <vector>
+
+#include "glint/geometry/shape.h"
+#include "glint/scene/yaml/yaml_map_reader.h"
+
+namespace glint {
+
+struct ShapeType {
+    std::string_view name;
+    // The shape's own keys; every object also takes type, material and casts_shadow.
+    std::vector<std::string_view> keys;
+    // Reads the shape from an object map whose keys have been checked.
+    Shape (*parse)(const MapReader& object);
+};
+
+// Sorted by name.
+std::span<const ShapeType> shape_types();
+std::vector<std::string_view> shape_type_names();
+
+}  // namespace glint

@@ -1,0 +1,42 @@
+// The YAML text being parsed, for errors that quote the offending line and underline its token.
+// Internal to glint_scene: yaml-cpp stays private.
+#pragma once
+
+#include <yaml-cpp/yaml.h>
+
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "glint/scene/scene_error.h"
+
+namespace glint {
+
+// Makes SceneErrors located in the text.
+class YamlSource {
+public:
+    // text must outlive the source.
+    YamlSource(std::string_view text, std::string file_name);
+
+    const std::string& file_name() const { return file_name_; }
+    // An error without a position in the file.
+    SceneError error(std::string message, std::vector<std::string> notes = {}) const;
+    // An error at a yaml-cpp mark (0-based); span is the caret's width.
+    SceneError error_at(const YAML::Mark& mark, int span, std::string message,
+                        std::vector<std::string> notes = {}) const;
+    // An error at a node, with the caret under its whole token when it fits on one line.
+    SceneError error_at(const YAML::Node& node, std::string message,
+                        std::vector<std::string> notes = {}) const;
+
+    // A line of the text, 0-based, without its line break; empty when out of range.
+    std::string_view line(int index) const;
+
+private:
+    int span_of(const YAML::Node& node) const;
+
+    std::string_view text_;
+    std::string file_name_;
+    std::vector<std::size_t> line_starts_;
+};
+
+}  // namespace glint

@@ -1,0 +1,329 @@
+#include "glint/scene/yaml/yaml_scene_loader.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <variant>
+
+namespace glint {
+namespace {
+
+const std::filesystem::path kSourceDir = GLINT_SOURCE_DIR;
+
+std::string read_text(const std::filesystem::path& path) {
+    std::ifstream in(path, std::ios::binary);
+    std::ostringstream text;
+    text << in.rdbuf();
+    return text.str();
+}
+
+Scene parse(const std::string& text) { return parse_yaml_scene(text, "test.yaml"); }
+
+constexpr const char* kCamera = "camera: {from: [0, 0, -5], at: [0, 0, 0]}\n";
+
+TEST(YamlScene, WhittedBasicsLoads) {
+    const Scene scene = load_yaml_scene(kSourceDir / "scenes/whitted-basics.yaml");
+    EXPECT_EQ(scene.settings.width, 320);
+    EXPECT_EQ(scene.settings.height, 240);
+    EXPECT_EQ(scene.settings.samples_per_pixel, 1);
+    EXPECT_EQ(scene.settings.max_depth, 5);
+    EXPECT_EQ(scene.settings.background, (Color{0.05f, 0.05f, 0.1f}));
+    EXPECT_EQ(scene.camera.from, (Point3{0, 1.5f, -6}));
+    EXPECT_EQ(scene.camera.fov, 45);
+    EXPECT_EQ(scene.ambient, Color::gray(0.1f));
+
+    ASSERT_EQ(scene.materials.size(), 3u);  // every object names one: no default is added
+    EXPECT_EQ(scene.materials[0].name, "red");
+    EXPECT_EQ(scene.materials[1].name, "mirror");
+    EXPECT_EQ(scene.materials[2].name, "glass");
+    EXPECT_EQ(scene.materials[1].reflect, 0.8f);
+    EXPECT_EQ(scene.materials[2].transmit, 0.9f);
+    EXPECT_EQ(scene.materials[2].ior, 1.5f);
+    EXPECT_EQ(std::get<Color>(scene.materials[0].color), (Color{0.9f, 0.1f, 0.1f}));
+
+    ASSERT_EQ(scene.lights.size(), 1u);
+    EXPECT_EQ(std::get<PointLight>(scene.lights[0]).position, (Point3{-4, 6, -4}));
+
+    ASSERT_EQ(scene.objects.size(), 5u);
+    EXPECT_EQ(std::get<Sphere>(scene.objects[0].shape).radius, 1);
+    EXPECT_EQ(scene.objects[0].material, 2u);
+    EXPECT_EQ(scene.objects[1].material, 1u);
+    EXPECT_EQ(scene.objects[2].material, 0u);
+    EXPECT_TRUE(std::holds_alternative<Plane>(scene.objects[2].shape));
+    EXPECT_EQ(std::get<Triangle>(scene.objects[3].shape).vertices[2], (Point3{-2, 2, 2}));
+    EXPECT_EQ(std::get<Box>(scene.objects[4].shape).max, (Point3{-2.5f, 1, 0}));
+}
+
+TEST(YamlScene, DefaultsFillWhatTheFileLeavesOut) {
+    const Scene scene = parse(std::string(kCamera) +
+                              "objects:\n  - {type: sphere, center: [0, 0, 0], radius: 2}\n");
+    const RenderSettings defaults;
+    EXPECT_EQ(scene.settings.width, defaults.width);
+    EXPECT_EQ(scene.settings.height, defaults.height);
+    EXPECT_EQ(scene.settings.samples_per_pixel, 1);
+    EXPECT_EQ(scene.settings.max_depth, 5);
+    EXPECT_FLOAT_EQ(scene.settings.min_weight, 0.001f);
+    EXPECT_EQ(scene.settings.background, Color());
+    EXPECT_FALSE(scene.settings.transparent_shadows);
+    EXPECT_EQ(scene.camera.projection, Projection::perspective);
+    EXPECT_EQ(scene.camera.up, (Vector3{0, 1, 0}));
+    EXPECT_EQ(scene.camera.fov, 45);
+    EXPECT_EQ(scene.ambient, Color());
+    EXPECT_TRUE(scene.lights.empty());
+
+    // An object without a material gets the shared default, with the Material struct's values.
+    ASSERT_EQ(scene.materials.size(), 1u);
+    const Material& m = scene.materials[0];
+    const Material reference;
+    EXPECT_EQ(m.name, "default");
+    EXPECT_EQ(m.ka, reference.ka);
+    EXPECT_EQ(m.kd, reference.kd);
+    EXPECT_EQ(m.shininess, reference.shininess);
+    EXPECT_EQ(m.highlight, Highlight::blinn);
+    ASSERT_EQ(scene.objects.size(), 1u);
+    EXPECT_EQ(scene.objects[0].material, 0u);
+    EXPECT_TRUE(scene.objects[0].casts_shadow);
+}
+
+TEST(YamlScene, ImageSettingsAreRead) {
+    const Scene scene = parse(std::string(kCamera) +
+                              "image:\n  width: 64\n  height: 32\n  samples: 16\n"
+                              "  sampler: regular\n  max_depth: 12\n  min_weight: 0.25\n"
+                              "  background: 0.5\n  transparent_shadows: true\n");
+    EXPECT_EQ(scene.settings.width, 64);
+    EXPECT_EQ(scene.settings.height, 32);
+    EXPECT_EQ(scene.settings.samples_per_pixel, 16);
+    EXPECT_EQ(scene.settings.sampler, SamplerKind::regular);
+    EXPECT_EQ(scene.settings.max_depth, 12);
+    EXPECT_EQ(scene.settings.min_weight, 0.25f);
+    EXPECT_EQ(scene.settings.background, Color::gray(0.5f));  // one number is a gray
+    EXPECT_TRUE(scene.settings.transparent_shadows);
+}
+
+TEST(YamlScene, OrthographicCameraAndNormalisedUp) {
+    const Scene scene = parse(
+        "camera: {type: orthographic, from: [1, 2, 3], at: [1, 2, 0], up: [0, 3, 0], "
+        "height: 4.5}\n");
+    EXPECT_EQ(scene.camera.projection, Projection::orthographic);
+    EXPECT_EQ(scene.camera.from, (Point3{1, 2, 3}));
+    EXPECT_EQ(scene.camera.at, (Point3{1, 2, 0}));
+    EXPECT_EQ(scene.camera.up, (Vector3{0, 1, 0}));
+    EXPECT_EQ(scene.camera.height, 4.5f);
+}
+
+TEST(YamlScene, NamedInlineAndDefaultMaterialsAreShared) {
+    const Scene scene = parse(std::string(kCamera) +
+                              "objects:\n"
+                              "  - {type: sphere, center: [0, 0, 0], radius: 1, material: shiny}\n"
+                              "  - {type: sphere, center: [3, 0, 0], radius: 1}\n"
+                              "  - {type: sphere, center: [6, 0, 0], radius: 1,\n"
+                              "     material: {color: [0, 1, 0], highlight: phong}}\n"
+                              "  - {type: sphere, center: [9, 0, 0], radius: 1}\n"
+                              "  - {type: sphere, center: [9, 0, 0], radius: 1, material: shiny}\n"
+                              "materials:\n"  // after the objects: order in the file is free
+                              "  shiny: {ks: 0.9, shininess: 80, emission: [0.1, 0, 0]}\n");
+    ASSERT_EQ(scene.materials.size(), 3u);
+    EXPECT_EQ(scene.materials[0].name, "shiny");
+    EXPECT_EQ(scene.materials[0].ks, 0.9f);
+    EXPECT_EQ(scene.materials[0].emission, (Color{0.1f, 0, 0}));
+    EXPECT_EQ(scene.materials[1].name, "default");
+    EXPECT_EQ(scene.materials[2].name, "(object 2)");
+    EXPECT_EQ(std::get<Color>(scene.materials[2].color), (Color{0, 1, 0}));
+    EXPECT_EQ(scene.materials[2].highlight, Highlight::phong);
+    ASSERT_EQ(scene.objects.size(), 5u);
+    EXPECT_EQ(scene.objects[0].material, 0u);
+    EXPECT_EQ(scene.objects[1].material, 1u);
+    EXPECT_EQ(scene.objects[2].material, 2u);
+    EXPECT_EQ(scene.objects[3].material, 1u);
+    EXPECT_EQ(scene.objects[4].material, 0u);
+}
+
+TEST(YamlScene, AMaterialNamedDefaultReplacesTheBuiltInOne) {
+    const Scene scene = parse(std::string(kCamera) +
+                              "materials: {default: {kd: 0.3}}\n"
+                              "objects: [{type: box, min: [0, 0, 0], max: [1, 1, 1]}]\n");
+    ASSERT_EQ(scene.materials.size(), 1u);
+    EXPECT_EQ(scene.materials[0].kd, 0.3f);
+    EXPECT_EQ(scene.objects[0].material, 0u);
+}
+
+TEST(YamlScene, CheckerTexture) {
+    const Scene scene = parse(std::string(kCamera) +
+                              "materials:\n"
+                              "  floor: {color: {type: checker, even: 1, odd: [0.2, 0, 0], "
+                              "size: 0.5, space: uv}}\n"
+                              "  plain: {color: {type: checker}}\n");
+    const auto& checker = std::get<CheckerTexture>(scene.materials[0].color);
+    EXPECT_EQ(checker.even, Color::gray(1));
+    EXPECT_EQ(checker.odd, (Color{0.2f, 0, 0}));
+    EXPECT_EQ(checker.size, 0.5f);
+    EXPECT_EQ(checker.space, CheckerSpace::uv);
+    const auto& defaults = std::get<CheckerTexture>(scene.materials[1].color);
+    EXPECT_EQ(defaults.even, Color::gray(1));
+    EXPECT_EQ(defaults.odd, Color());
+    EXPECT_EQ(defaults.size, 1);
+    EXPECT_EQ(defaults.space, CheckerSpace::solid);
+}
+
+TEST(YamlScene, LightsScaleColorByIntensityAndNormaliseDirections) {
+    const Scene scene = parse(std::string(kCamera) +
+                              "lights:\n"
+                              "  - {type: point, position: [1, 2, 3], color: [1, 0.5, 0], "
+                              "intensity: 2, attenuation: [0, 0, 1]}\n"
+                              "  - {type: directional, direction: [0, -2, 0]}\n"
+                              "  - {type: point, position: [0, 0, 0]}\n");
+    ASSERT_EQ(scene.lights.size(), 3u);
+    const auto& point = std::get<PointLight>(scene.lights[0]);
+    EXPECT_EQ(point.position, (Point3{1, 2, 3}));
+    EXPECT_EQ(point.color, (Color{2, 1, 0}));
+    EXPECT_EQ(point.attenuation.constant, 0);
+    EXPECT_EQ(point.attenuation.quadratic, 1);
+    const auto& sun = std::get<DirectionalLight>(scene.lights[1]);
+    EXPECT_EQ(sun.direction, (Vector3{0, -1, 0}));
+    EXPECT_EQ(sun.color, Color::gray(1));
+    const auto& plain = std::get<PointLight>(scene.lights[2]);
+    EXPECT_EQ(plain.color, Color::gray(1));
+    EXPECT_EQ(plain.attenuation.constant, 1);
+    EXPECT_EQ(plain.attenuation.linear, 0);
+}
+
+TEST(YamlScene, ShapesAreReadAndPlaneNormalsNormalised) {
+    const Scene scene = parse(std::string(kCamera) +
+                              "objects:\n"
+                              "  - type: plane\n"
+                              "    point: [0, -1, 0]\n"
+                              "    normal: [0, 0, 5]\n"
+                              "    casts_shadow: false\n"
+                              "  - type: triangle\n"
+                              "    vertices: [[0, 0, 0], [1, 0, 0], [0, 1, 0]]\n"
+                              "    uvs: [[0, 0], [2, 0], [0, 2]]\n"
+                              "  - {type: box, min: [-1, -2, -3], max: [1, 2, 3]}\n");
+    ASSERT_EQ(scene.objects.size(), 3u);
+    const auto& plane = std::get<Plane>(scene.objects[0].shape);
+    EXPECT_EQ(plane.point, (Point3{0, -1, 0}));
+    EXPECT_EQ(plane.normal, (Normal3{0, 0, 1}));
+    EXPECT_FALSE(scene.objects[0].casts_shadow);
+    const auto& triangle = std::get<Triangle>(scene.objects[1].shape);
+    EXPECT_EQ(triangle.vertices[1], (Point3{1, 0, 0}));
+    EXPECT_EQ(triangle.uvs[2], (Point2{0, 2}));
+    const auto& box = std::get<Box>(scene.objects[2].shape);
+    EXPECT_EQ(box.min, (Point3{-1, -2, -3}));
+    EXPECT_EQ(box.max, (Point3{1, 2, 3}));
+}
+
+TEST(YamlScene, EmptySectionsAreAllowed) {
+    const Scene scene = parse(std::string(kCamera) + "image:\nmaterials:\nlights: []\nobjects:\n");
+    EXPECT_TRUE(scene.objects.empty());
+    EXPECT_TRUE(scene.materials.empty());
+}
+
+TEST(YamlScene, CrlfLineEndingsAndCommentsAreFine) {
+    const Scene scene = parse(
+        "# a comment\r\ncamera:\r\n  from: [0, 0, -1] # eye\r\n"
+        "  at: [0, 0, 0]\r\n");
+    EXPECT_EQ(scene.camera.from, (Point3{0, 0, -1}));
+}
+
+TEST(YamlScene, EmptyTextIsAnErrorWithoutALine) {
+    try {
+        parse("");
+        FAIL() << "expected a SceneError";
+    } catch (const SceneError& e) {
+        EXPECT_EQ(e.location().line, 0);
+        EXPECT_EQ(e.message(), "the scene is empty; it needs at least a camera");
+    }
+}
+
+TEST(YamlScene, MissingFileGivesAnErrorWithoutALine) {
+    const std::filesystem::path path = kSourceDir / "scenes/no-such-scene.yaml";
+    try {
+        load_yaml_scene(path);
+        FAIL() << "expected a SceneError";
+    } catch (const SceneError& e) {
+        EXPECT_EQ(e.location().line, 0);
+        EXPECT_EQ(format_scene_error(e), path.string() +
+                                             ": error: cannot read scene file: No such file or "
+                                             "directory\n");
+    }
+}
+
+TEST(YamlScene, DirectoryIsNotASceneFile) {
+    try {
+        load_yaml_scene(kSourceDir / "scenes");
+        FAIL() << "expected a SceneError";
+    } catch (const SceneError& e) {
+        EXPECT_EQ(e.message(), "cannot read scene file: it is a directory");
+    }
+}
+
+TEST(YamlScene, OversizedFileIsRefusedBeforeReading) {
+    const std::filesystem::path dir = GLINT_TEST_OUTPUT_DIR;
+    std::filesystem::create_directories(dir);
+    const std::filesystem::path path = dir / "huge.yaml";
+    {
+        std::ofstream out(path, std::ios::binary);
+        out << kCamera;
+    }
+    // A sparse file: its size is over the limit without writing 64 MiB.
+    std::filesystem::resize_file(path, kMaxSceneFileBytes + 1);
+    try {
+        load_yaml_scene(path);
+        FAIL() << "expected a SceneError";
+    } catch (const SceneError& e) {
+        EXPECT_EQ(e.location().line, 0);
+        EXPECT_EQ(e.message(), "scene file is larger than the limit of 64 MiB");
+    }
+    std::filesystem::remove(path);
+}
+
+TEST(YamlScene, DeepNestingIsAnErrorNotAStackOverflow) {
+    for (const std::string opener : {"[", "{a: ", "- "}) {
+        std::string text = "camera: ";
+        for (int i = 0; i < 100000; ++i) text += opener;
+        EXPECT_THROW(parse(text), SceneError) << opener;
+    }
+}
+
+// Every prefix of a valid scene is either a valid scene or a SceneError: never another exception
+// or a crash.
+TEST(YamlScene, EveryTruncationParsesOrThrowsSceneError) {
+    const std::string text = read_text(kSourceDir / "scenes/whitted-basics.yaml");
+    ASSERT_FALSE(text.empty());
+    int errors = 0;
+    for (std::size_t n = 0; n <= text.size(); ++n) {
+        try {
+            parse(text.substr(0, n));
+        } catch (const SceneError& e) {
+            ++errors;
+            EXPECT_FALSE(e.message().empty());
+            EXPECT_FALSE(format_scene_error(e).empty());
+        } catch (const std::exception& e) {
+            ADD_FAILURE() << "prefix of " << n << " bytes threw " << e.what();
+        }
+    }
+    EXPECT_GT(errors, 0);
+}
+
+// The same for a scene whose bytes are replaced one at a time by characters that YAML treats
+// specially.
+TEST(YamlScene, EverySingleByteCorruptionParsesOrThrowsSceneError) {
+    const std::string text = read_text(kSourceDir / "scenes/whitted-basics.yaml");
+    for (std::size_t i = 0; i < text.size(); ++i) {
+        for (const char c : {'[', '{', ':', '-', '&', '*', '\0', '\t', '"'}) {
+            std::string corrupt = text;
+            corrupt[i] = c;
+            try {
+                parse(corrupt);
+            } catch (const SceneError&) {
+            } catch (const std::exception& e) {
+                ADD_FAILURE() << "byte " << i << " set to " << int(c) << " threw " << e.what();
+            }
+        }
+    }
+}
+
+}  // namespace
+}  // namespace glint
