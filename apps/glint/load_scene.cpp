@@ -1,0 +1,20 @@
+#include "load_scene.h"
+
+#include <algorithm>
+#include <string>
+
+#include "glint/scene/scene_error.h"
+#include "glint/scene/yaml/yaml_scene_loader.h"
+
+namespace glint::cli {
+
+Scene load_scene(const std::filesystem::path& file) {
+    std::string extension = file.extension().string();
+    std::transform(extension.begin(), extension.end(), extension.begin(),
+                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    if (extension == ".yaml" || extension == ".yml") return load_yaml_scene(file);
+    throw SceneError({file.string()}, "unknown scene format \"" + extension + "\"",
+                     {"scene formats are: .yaml, .yml"});
+}
+
+}  // namespace glint::cli

@@ -1,0 +1,63 @@
+// The glint command-line tool: `glint render SCENE`, with --help and --version.
+#include <CLI/CLI.hpp>
+#include <cstdio>
+#include <limits>
+
+#include "glint/scene/scene.h"
+#include "render_command.h"
+
+#ifndef GLINT_VERSION
+#define GLINT_VERSION "unknown"
+#endif
+
+namespace {
+
+constexpr const char* kExamples = R"(
+Examples:
+  glint render scenes/showcase.yaml                     writes showcase.png
+  glint render scenes/showcase.yaml -o big.exr --width 1920 --spp 16
+  glint render scene.yaml --threads 1 --stats stats.json --quiet
+)";
+
+void add_render_command(CLI::App& app, glint::cli::RenderCommand& c) {
+    CLI::App* render = app.add_subcommand("render", "Render a scene to an image");
+    render->add_option("scene", c.scene, "Scene file (.yaml)")->required();
+    render->add_option("-o,--output", c.output,
+                       "Image to write: .png (sRGB, 8-bit), .ppm, .pfm or .exr (linear float); "
+                       "default: the scene's name with .png");
+    render->add_option("--width", c.width, "Image width in pixels (keeps the aspect alone)")
+        ->check(CLI::Range(1, glint::kMaxImageSide));
+    render->add_option("--height", c.height, "Image height in pixels (keeps the aspect alone)")
+        ->check(CLI::Range(1, glint::kMaxImageSide));
+    render->add_option("--spp", c.spp, "Samples per pixel (a square number: n x n grid)")
+        ->check(CLI::Range(1, glint::kMaxSamplesPerPixel));
+    render->add_option("--threads", c.threads, "Worker threads; 0 uses every core")
+        ->check(CLI::Range(0, 4096));
+    render->add_option("--max-depth", c.max_depth, "Deepest level of the ray tree (eye rays are 1)")
+        ->check(CLI::Range(1, glint::kMaxDepth));
+    render->add_option("--seed", c.seed, "Seed of the random numbers (same seed, same image)");
+    render->add_option("--stats", c.stats_file, "Also write the render's figures as JSON here");
+    render->add_flag("--ppm-ascii", c.ppm_ascii,
+                     "Write .ppm images as ASCII (P3), not binary (P6)");
+    render->add_flag("-q,--quiet", c.quiet, "No progress and no summary");
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    CLI::App app{
+        "glint: a ray tracer that renders the classic algorithms as the textbooks "
+        "state them"};
+    app.footer(kExamples);
+    app.set_version_flag("--version", std::string("glint ") + GLINT_VERSION);
+    app.require_subcommand(1);
+    glint::cli::RenderCommand render;
+    add_render_command(app, render);
+    try {
+        app.parse(argc, argv);
+    } catch (const CLI::ParseError& e) {
+        // --help and --version end parsing with a success code; all else is bad usage.
+        return app.exit(e) == 0 ? 0 : 2;
+    }
+    return glint::cli::run_render(render);
+}

@@ -1,0 +1,79 @@
+#include "progress.h"
+
+#include <unistd.h>
+
+#include <chrono>
+#include <csignal>
+#include <cstdio>
+#include <string>
+
+namespace glint::cli {
+
+namespace {
+
+volatile std::sig_atomic_t g_interrupted = 0;
+
+extern "C" void on_interrupt(int) { g_interrupted = 1; }
+
+std::string format_duration(double seconds) {
+    const long s = static_cast<long>(seconds + 0.5);
+    char buffer[32];
+    if (s >= 3600)
+        std::snprintf(buffer, sizeof buffer, "%ld:%02ld:%02ld", s / 3600, s / 60 % 60, s % 60);
+    else
+        std::snprintf(buffer, sizeof buffer, "%ld:%02ld", s / 60, s % 60);
+    return buffer;
+}
+
+}  // namespace
+
+ProgressWatcher::ProgressWatcher(RenderProgress& progress, bool show)
+    : progress_(progress), show_(show), terminal_(isatty(STDERR_FILENO) != 0) {
+    g_interrupted = 0;
+    std::signal(SIGINT, on_interrupt);
+    thread_ = std::thread([this] { run(); });
+}
+
+ProgressWatcher::~ProgressWatcher() {
+    done_ = true;
+    thread_.join();
+    std::signal(SIGINT, SIG_DFL);
+}
+
+void ProgressWatcher::run() {
+    using Clock = std::chrono::steady_clock;
+    const auto start = Clock::now();
+    int last_reported_tenth = 0;
+    bool drew_bar = false;
+    while (!done_) {
+        std::this_thread::sleep_for(std::chrono::milliseconds(100));
+        if (g_interrupted) progress_.cancel = true;
+        const int total = progress_.tiles_total;
+        if (!show_ || total == 0) continue;
+        const double fraction = double(progress_.tiles_done) / total;
+        const double elapsed = std::chrono::duration<double>(Clock::now() - start).count();
+        const std::string eta =
+            fraction > 0 ? format_duration(elapsed * (1 - fraction) / fraction) : "?";
+        if (terminal_) {
+            constexpr int kWidth = 30;
+            const int filled = static_cast<int>(fraction * kWidth);
+            std::fprintf(
+                stderr, "\r[%s%s] %3d%%  elapsed %s  ETA %s ", std::string(filled, '#').c_str(),
+                std::string(kWidth - filled, ' ').c_str(), static_cast<int>(fraction * 100),
+                format_duration(elapsed).c_str(), eta.c_str());
+            drew_bar = true;
+        } else if (const int tenth = static_cast<int>(fraction * 10);
+                   tenth > last_reported_tenth && tenth < 10) {
+            // Plain lines for logs: one per tenth of the work, and only after a second.
+            if (elapsed >= 1) {
+                std::fprintf(stderr, "glint: %d%% done, elapsed %s, ETA %s\n", tenth * 10,
+                             format_duration(elapsed).c_str(), eta.c_str());
+                last_reported_tenth = tenth;
+            }
+        }
+        std::fflush(stderr);
+    }
+    if (drew_bar) std::fprintf(stderr, "\r%*s\r", 70, "");
+}
+
+}  // namespace glint::cli

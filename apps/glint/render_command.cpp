@@ -1,0 +1,161 @@
+#include "render_command.h"
+
+#include <tbb/info.h>
+
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include "glint/image/atomic_file.h"
+#include "glint/image/image_error.h"
+#include "glint/image/image_format.h"
+#include "glint/image/image_io.h"
+#include "glint/render/render.h"
+#include "glint/render/world.h"
+#include "glint/scene/scene_error.h"
+#include "load_scene.h"
+#include "progress.h"
+#include "stats_json.h"
+
+namespace glint::cli {
+
+namespace {
+
+constexpr int kExitFailure = 1;
+constexpr int kExitBadInput = 2;
+constexpr int kExitInterrupted = 130;
+
+struct UsageError {
+    std::string message;
+};
+
+std::string default_output(const std::string& scene) {
+    return std::filesystem::path(scene).stem().string() + ".png";
+}
+
+// Command-line options override the scene's image settings; a lone width or height keeps the
+// scene's aspect ratio.
+void apply_overrides(const RenderCommand& c, RenderSettings& s) {
+    if (c.width && !c.height) {
+        s.height =
+            std::max(1, static_cast<int>(std::lround(double(*c.width) * s.height / s.width)));
+    } else if (c.height && !c.width) {
+        s.width =
+            std::max(1, static_cast<int>(std::lround(double(*c.height) * s.width / s.height)));
+    }
+    if (c.width) s.width = *c.width;
+    if (c.height) s.height = *c.height;
+    if (std::int64_t(s.width) * s.height > kMaxImagePixels || s.width > kMaxImageSide ||
+        s.height > kMaxImageSide)
+        throw UsageError{"image of " + std::to_string(s.width) + "x" + std::to_string(s.height) +
+                         " pixels is larger than the limit of " + std::to_string(kMaxImagePixels) +
+                         " pixels"};
+    if (c.spp) {
+        if (!is_valid_sample_count(s.sampler, *c.spp))
+            throw UsageError{
+                "--spp must be a square number (1, 4, 9, 16, ...) for the regular "
+                "sampler, got " +
+                std::to_string(*c.spp)};
+        s.samples_per_pixel = *c.spp;
+    }
+    if (c.max_depth) s.max_depth = *c.max_depth;
+}
+
+std::string with_thousands(std::uint64_t n) {
+    std::string digits = std::to_string(n), out;
+    for (std::size_t i = 0; i < digits.size(); ++i) {
+        if (i > 0 && (digits.size() - i) % 3 == 0) out += ',';
+        out += digits[i];
+    }
+    return out;
+}
+
+void print_summary(const std::string& output, const RenderSettings& s, const RenderResult& r) {
+    const RayStats& rays = r.rays;
+    const double mrays = r.seconds > 0 ? double(rays.total()) / r.seconds / 1e6 : 0;
+    std::printf("glint: wrote %s (%dx%d, %d spp) in %.2f s\n", output.c_str(), s.width, s.height,
+                s.samples_per_pixel, r.seconds);
+    std::printf("  rays       %15s  %.2f Mrays/s\n", with_thousands(rays.total()).c_str(), mrays);
+    std::printf("  primary    %15s  (%s hit)\n", with_thousands(rays.primary).c_str(),
+                with_thousands(rays.primary_hits).c_str());
+    std::printf("  shadow     %15s\n", with_thousands(rays.shadow).c_str());
+    std::printf("  reflected  %15s\n", with_thousands(rays.reflected).c_str());
+    std::printf("  refracted  %15s\n", with_thousands(rays.refracted).c_str());
+}
+
+void report_bad_samples(const BadSamples& bad, std::uint64_t seed) {
+    if (bad.count == 0) return;
+    const SampleLocation& at = *bad.first;
+    std::fprintf(stderr,
+                 "glint: warning: %s samples were NaN or infinite and were left out; the first "
+                 "is pixel (%d, %d), sample %d, seed %llu\n",
+                 with_thousands(bad.count).c_str(), at.x, at.y, at.sample,
+                 static_cast<unsigned long long>(seed));
+}
+
+void write_stats(const std::string& file, const std::string& json) {
+    write_file_atomically(file, [&](const std::filesystem::path& temporary) {
+        std::ofstream out(temporary, std::ios::binary);
+        out << json;
+        if (!out.flush()) throw ImageError(file + ": cannot write statistics");
+    });
+}
+
+}  // namespace
+
+int run_render(const RenderCommand& command) {
+    const std::string output =
+        command.output.empty() ? default_output(command.scene) : command.output;
+    try {
+        if (!format_from_extension(output))
+            throw UsageError{output + ": unknown image format \"" +
+                             std::filesystem::path(output).extension().string() +
+                             "\"; image formats are: .exr, .pfm, .png, .ppm"};
+        Scene scene = load_scene(command.scene);
+        apply_overrides(command, scene.settings);
+        const World world(scene);
+
+        RenderOptions options;
+        options.threads = command.threads;
+        options.seed = command.seed;
+        RenderProgress progress;
+        RenderResult result;
+        {
+            const ProgressWatcher watcher(progress, !command.quiet);
+            result = render(world, options, &progress);
+        }
+        report_bad_samples(result.bad_samples, command.seed);
+
+        write_image(output, result.image, WriteOptions{command.ppm_ascii});
+        const RenderSettings& s = world.settings();
+        if (!command.stats_file.empty()) {
+            const int threads =
+                command.threads > 0 ? command.threads : tbb::info::default_concurrency();
+            write_stats(command.stats_file, stats_json({command.scene, output, s.width, s.height,
+                                                        s.samples_per_pixel, threads, &result}));
+        }
+        if (!result.complete) {
+            std::fprintf(stderr, "glint: interrupted: %s holds the %d of %d tiles that were done\n",
+                         output.c_str(), progress.tiles_done.load(), progress.tiles_total.load());
+            return kExitInterrupted;
+        }
+        if (!command.quiet) print_summary(output, s, result);
+        return 0;
+    } catch (const SceneError& e) {
+        std::fputs(format_scene_error(e).c_str(), stderr);
+        return kExitBadInput;
+    } catch (const UsageError& e) {
+        std::fprintf(stderr, "glint: error: %s\n", e.message.c_str());
+        return kExitBadInput;
+    } catch (const ImageError& e) {
+        std::fprintf(stderr, "glint: error: %s\n", e.what());
+        return kExitFailure;
+    } catch (const std::exception& e) {
+        std::fprintf(stderr, "glint: error: %s\n", e.what());
+        return kExitFailure;
+    }
+}
+
+}  // namespace glint::cli

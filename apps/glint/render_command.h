@@ -1,0 +1,25 @@
+// `glint render`: load a scene, render it, write the image, and report what was traced.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string>
+
+namespace glint::cli {
+
+struct RenderCommand {
+    std::string scene;
+    std::string output;  // empty: the scene's name with .png, in the current directory
+    std::optional<int> width, height, spp, max_depth;
+    int threads = 0;  // 0: all cores
+    std::uint64_t seed = 0;
+    bool quiet = false;
+    bool ppm_ascii = false;
+    std::string stats_file;  // empty: none
+};
+
+// Exit status: 0 on success, 2 on bad input (scene, options), 1 on any other failure,
+// 130 when interrupted (after writing what was done).
+int run_render(const RenderCommand& command);
+
+}  // namespace glint::cli

@@ -1,0 +1,57 @@
+#include "stats_json.h"
+
+#include <cstdio>
+#include <sstream>
+
+namespace glint::cli {
+
+namespace {
+
+std::string quoted(const std::string& s) {
+    std::string out = "\"";
+    for (const char c : s) {
+        if (c == '"' || c == '\\') {
+            out += '\\';
+            out += c;
+        } else if (static_cast<unsigned char>(c) < 0x20) {
+            char escape[8];
+            std::snprintf(escape, sizeof escape, "\\u%04x", c);
+            out += escape;
+        } else {
+            out += c;
+        }
+    }
+    return out + "\"";
+}
+
+}  // namespace
+
+std::string stats_json(const RenderReport& report) {
+    const RenderResult& r = *report.result;
+    const double mrays = r.seconds > 0 ? double(r.rays.total()) / r.seconds / 1e6 : 0;
+    std::ostringstream json;
+    json.precision(6);
+    json << "{\n"
+         << "  \"scene\": " << quoted(report.scene) << ",\n"
+         << "  \"output\": " << quoted(report.output) << ",\n"
+         << "  \"width\": " << report.width << ",\n"
+         << "  \"height\": " << report.height << ",\n"
+         << "  \"samples_per_pixel\": " << report.samples_per_pixel << ",\n"
+         << "  \"threads\": " << report.threads << ",\n"
+         << "  \"complete\": " << (r.complete ? "true" : "false") << ",\n"
+         << "  \"seconds\": " << r.seconds << ",\n"
+         << "  \"rays\": {\n"
+         << "    \"primary\": " << r.rays.primary << ",\n"
+         << "    \"primary_hits\": " << r.rays.primary_hits << ",\n"
+         << "    \"shadow\": " << r.rays.shadow << ",\n"
+         << "    \"reflected\": " << r.rays.reflected << ",\n"
+         << "    \"refracted\": " << r.rays.refracted << ",\n"
+         << "    \"total\": " << r.rays.total() << "\n"
+         << "  },\n"
+         << "  \"mrays_per_second\": " << mrays << ",\n"
+         << "  \"bad_samples\": " << r.bad_samples.count << "\n"
+         << "}\n";
+    return json.str();
+}
+
+}  // namespace glint::cli

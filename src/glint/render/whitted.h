@@ -1,0 +1,39 @@
+// Whitted's recursive ray tracer (1980), exactly the lecture notes' TraceRay: the closest hit,
+// Phong's local term with one shadow feeler per light, and the reflected and refracted rays,
+// the ray tree cut by depth and by contribution weight:
+//   I = emission + ka Ia C + sum_lights shadow IL (kd C (N.L) + ks spec^n)
+//       + kr I(reflected) + kt I(refracted)
+#pragma once
+
+#include "glint/math/color.h"
+#include "glint/math/ray.h"
+#include "glint/render/ray_stats.h"
+#include "glint/render/world.h"
+
+namespace glint {
+
+class WhittedIntegrator {
+public:
+    explicit WhittedIntegrator(const World& world) : world_(world) {}
+
+    // The colour seen along an eye ray. Counts every ray it traces, the eye ray included.
+    Color trace_eye_ray(const Ray& ray, RayStats& stats) const;
+
+    // The colour seen along a ray at the given depth of the ray tree (eye rays are depth 1)
+    // whose contribution to the pixel is scaled by weight (the product of kr and kt above it).
+    Color trace(const Ray& ray, int depth, float weight, RayStats& stats) const;
+
+    // The fraction of a light's intensity that reaches p along the unit direction to_light
+    // over light_distance: 0 or 1, or with transparent shadows the product of the
+    // transmit weights of the surfaces crossed.
+    float shadow_factor(Point3 p, Normal3 n, Vector3 to_light, float light_distance,
+                        RayStats& stats) const;
+
+private:
+    const World& world_;
+};
+
+// Shadow feelers give up (and report full shadow) after crossing this many transparent surfaces.
+inline constexpr int kMaxShadowCrossings = 64;
+
+}  // namespace glint

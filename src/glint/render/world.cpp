@@ -1,0 +1,52 @@
+#include "glint/render/world.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace glint {
+
+namespace {
+
+float max_abs_coordinate(Point3 p) {
+    return std::max({std::abs(p.x), std::abs(p.y), std::abs(p.z)});
+}
+
+// The magnitude of coordinates where hits can occur: the finite geometry, or, when there is
+// none (a lone plane), the camera's position.
+float scene_scale(const Bounds3& bounds, Point3 eye) {
+    const float scale = bounds.is_empty() ? max_abs_coordinate(eye)
+                                          : std::max(max_abs_coordinate(bounds.min),
+                                                     max_abs_coordinate(bounds.max));
+    return std::max(scale, 1e-6f);
+}
+
+}  // namespace
+
+World::World(const Scene& scene, AccelKind accel)
+    : settings_(scene.settings),
+      camera_(scene.camera, scene.settings.width, scene.settings.height),
+      ambient_(scene.ambient),
+      materials_(scene.materials),
+      lights_(scene.lights) {
+    primitives_.reserve(scene.objects.size());
+    material_of_.reserve(scene.objects.size());
+    for (const SceneObject& object : scene.objects) {
+        std::uint32_t visibility = kVisibleToCameraRays;
+        if (object.casts_shadow) visibility |= kVisibleToShadowRays;
+        primitives_.push_back({object.shape, visibility});
+        material_of_.push_back(object.material);
+    }
+    aggregate_ = make_aggregate(accel, primitives_);
+    scene_scale_ = scene_scale(aggregate_->bounds(), camera_.eye());
+}
+
+float World::ray_epsilon(Point3 p) const {
+    return kRelativeRayEpsilon * std::max(scene_scale_, max_abs_coordinate(p));
+}
+
+Ray World::spawn_ray(Point3 p, Normal3 n, Vector3 d) const {
+    const float offset = dot(n, d) >= 0 ? ray_epsilon(p) : -ray_epsilon(p);
+    return {p + to_vector(n) * offset, d};
+}
+
+}  // namespace glint

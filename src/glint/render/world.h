@@ -1,0 +1,64 @@
+// The render-time form of a Scene: primitives with their acceleration structure, materials,
+// lights and camera, plus the scene-scaled epsilon that keeps secondary rays off their surface.
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <span>
+#include <vector>
+
+#include "glint/accel/aggregate.h"
+#include "glint/accel/make_aggregate.h"
+#include "glint/camera/camera.h"
+#include "glint/scene/scene.h"
+
+namespace glint {
+
+class World {
+public:
+    // The scene must be valid as the loaders guarantee (positive radii, known materials, ...).
+    explicit World(const Scene& scene, AccelKind accel = AccelKind::list);
+
+    const RenderSettings& settings() const { return settings_; }
+    const Camera& camera() const { return camera_; }
+    Color ambient() const { return ambient_; }
+    std::span<const Light> lights() const { return lights_; }
+
+    std::optional<Hit> intersect(const Ray& ray, Interval t_range, std::uint32_t mask) const {
+        return aggregate_->intersect(ray, t_range, mask);
+    }
+    bool occluded(const Ray& ray, Interval t_range, std::uint32_t mask) const {
+        return aggregate_->occluded(ray, t_range, mask);
+    }
+    SurfacePoint surface_at(const Ray& ray, const Hit& hit) const {
+        return glint::surface_at(primitives_[hit.primitive].shape, ray, hit.shape_hit);
+    }
+    const Material& material_of(std::uint32_t primitive) const {
+        return materials_[material_of_[primitive]];
+    }
+
+    // How far a secondary ray's origin is moved off the surface at p: a fixed fraction of the
+    // larger of the scene's extent and p's own magnitude, since float rounding error grows with
+    // the magnitude of the coordinates involved.
+    float ray_epsilon(Point3 p) const;
+    // A ray leaving the surface point in the unit direction d, its origin moved ray_epsilon off
+    // the surface to the side d goes (given by the geometric normal n).
+    Ray spawn_ray(Point3 p, Normal3 n, Vector3 d) const;
+
+private:
+    RenderSettings settings_;
+    Camera camera_;
+    Color ambient_;
+    std::vector<Material> materials_;
+    std::vector<Light> lights_;
+    std::vector<Primitive> primitives_;
+    std::vector<std::uint32_t> material_of_;  // per primitive
+    std::unique_ptr<Aggregate> aggregate_;    // over primitives_
+    float scene_scale_ = 1;                   // largest coordinate magnitude of bounded geometry
+};
+
+// Relative size of the secondary-ray offset: about 80 float ulps of the coordinates involved.
+inline constexpr float kRelativeRayEpsilon = 1e-5f;
+
+}  // namespace glint

@@ -1,0 +1,183 @@
+// End-to-end tests of the glint tool: exit codes, messages, files written and not written.
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+#include "glint/image/image_io.h"
+
+namespace glint {
+namespace {
+
+namespace fs = std::filesystem;
+
+struct Outcome {
+    int exit_code;
+    std::string out, err;
+};
+
+std::string slurp(const fs::path& file) {
+    std::ifstream in(file, std::ios::binary);
+    std::stringstream s;
+    s << in.rdbuf();
+    return s.str();
+}
+
+class Cli : public ::testing::Test {
+protected:
+    void SetUp() override {
+        dir_ = fs::path(GLINT_TEST_OUTPUT_DIR) /
+               ::testing::UnitTest::GetInstance()->current_test_info()->name();
+        fs::remove_all(dir_);
+        fs::create_directories(dir_);
+    }
+
+    Outcome run_glint(const std::string& args) const {
+        const fs::path out = dir_ / "stdout.txt", err = dir_ / "stderr.txt";
+        const std::string command = "cd '" + dir_.string() + "' && '" GLINT_BINARY "' " + args +
+                                    " > '" + out.string() + "' 2> '" + err.string() + "'";
+        const int status = std::system(command.c_str());
+        return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, slurp(out), slurp(err)};
+    }
+
+    fs::path write_scene(const std::string& name, const std::string& text) const {
+        std::ofstream(dir_ / name) << text;
+        return dir_ / name;
+    }
+
+    static std::string scene(const std::string& name) {
+        return std::string("'") + GLINT_SOURCE_DIR + "/scenes/" + name + "'";
+    }
+
+    fs::path dir_;
+};
+
+TEST_F(Cli, VersionAndHelp) {
+    const Outcome version = run_glint("--version");
+    EXPECT_EQ(version.exit_code, 0);
+    EXPECT_NE(version.out.find("glint "), std::string::npos);
+    const Outcome help = run_glint("render --help");
+    EXPECT_EQ(help.exit_code, 0);
+    EXPECT_NE(help.out.find("--spp"), std::string::npos);
+    EXPECT_NE(run_glint("--help").out.find("Examples"), std::string::npos);
+}
+
+TEST_F(Cli, UsageErrorsExitWithTwo) {
+    EXPECT_EQ(run_glint("").exit_code, 2);
+    EXPECT_EQ(run_glint("render").exit_code, 2);
+    EXPECT_EQ(run_glint("paint x.yaml").exit_code, 2);
+    EXPECT_EQ(run_glint("render " + scene("showcase.yaml") + " --width 0").exit_code, 2);
+    EXPECT_EQ(run_glint("render " + scene("showcase.yaml") + " --max-depth 999").exit_code, 2);
+}
+
+TEST_F(Cli, RendersAndSummarisesTheRays) {
+    const Outcome r = run_glint("render " + scene("showcase.yaml") + " --width 40 --spp 1");
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    const Image image = read_image(dir_ / "showcase.png");  // default: the scene's name
+    EXPECT_EQ(image.width, 40);
+    EXPECT_EQ(image.height, 30);  // the scene's 4:3 aspect kept
+    EXPECT_NE(r.out.find("Mrays/s"), std::string::npos);
+    EXPECT_NE(r.out.find("primary"), std::string::npos);
+    EXPECT_NE(r.out.find("refracted"), std::string::npos);
+}
+
+TEST_F(Cli, QuietPrintsNothing) {
+    const Outcome r =
+        run_glint("render " + scene("showcase.yaml") + " --width 16 --spp 1 -q -o a.png");
+    EXPECT_EQ(r.exit_code, 0);
+    EXPECT_EQ(r.out, "");
+    EXPECT_EQ(r.err, "");
+}
+
+TEST_F(Cli, StatsFileHasTheDocumentedKeys) {
+    const Outcome r = run_glint("render " + scene("showcase.yaml") +
+                                " --width 20 --height 10 --spp 4 -q -o a.png --stats s.json");
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    const std::string json = slurp(dir_ / "s.json");
+    for (const char* key :
+         {"\"scene\"", "\"output\"", "\"width\": 20", "\"height\": 10", "\"samples_per_pixel\": 4",
+          "\"threads\"", "\"seconds\"", "\"primary\": 800", "\"primary_hits\"", "\"shadow\"",
+          "\"reflected\"", "\"refracted\"", "\"total\"", "\"mrays_per_second\"",
+          "\"bad_samples\": 0", "\"complete\": true"})
+        EXPECT_NE(json.find(key), std::string::npos) << key << " missing from\n" << json;
+}
+
+TEST_F(Cli, EveryImageFormatIsWritten) {
+    for (const char* name : {"a.png", "a.ppm", "a.pfm", "a.exr"}) {
+        const Outcome r =
+            run_glint("render " + scene("showcase.yaml") + " --width 24 --spp 1 -q -o " + name);
+        ASSERT_EQ(r.exit_code, 0) << name << ": " << r.err;
+        EXPECT_EQ(read_image(dir_ / name).width, 24) << name;
+    }
+    ASSERT_EQ(run_glint("render " + scene("showcase.yaml") + " --width 4 -q -o b.ppm --ppm-ascii")
+                  .exit_code,
+              0);
+    EXPECT_EQ(slurp(dir_ / "b.ppm").substr(0, 2), "P3");
+    EXPECT_EQ(slurp(dir_ / "a.ppm").substr(0, 2), "P6");
+}
+
+TEST_F(Cli, ThreadCountDoesNotChangeTheImage) {
+    ASSERT_EQ(
+        run_glint("render " + scene("showcase.yaml") + " --width 64 -q -o one.pfm --threads 1")
+            .exit_code,
+        0);
+    ASSERT_EQ(
+        run_glint("render " + scene("showcase.yaml") + " --width 64 -q -o two.pfm --threads 3")
+            .exit_code,
+        0);
+    EXPECT_TRUE(slurp(dir_ / "one.pfm") == slurp(dir_ / "two.pfm"));
+}
+
+TEST_F(Cli, BadSceneExitsWithTwoAndACompilerStyleError) {
+    write_scene("bad.yaml",
+                "camera: {from: [0, 0, -5], at: [0, 0, 0]}\n"
+                "objects:\n"
+                "  - {type: spere, center: [0, 0, 0], radius: 1}\n");
+    std::ofstream(dir_ / "bad.png") << "an older image";
+    const Outcome r = run_glint("render bad.yaml");
+    EXPECT_EQ(r.exit_code, 2);
+    EXPECT_NE(r.err.find("bad.yaml:3:12: error: unknown object type \"spere\""), std::string::npos)
+        << r.err;
+    EXPECT_NE(r.err.find("did you mean \"sphere\"?"), std::string::npos) << r.err;
+    EXPECT_EQ(slurp(dir_ / "bad.png"), "an older image");  // untouched
+}
+
+TEST_F(Cli, MissingSceneAndUnknownFormatsExitWithTwo) {
+    const Outcome missing = run_glint("render nowhere.yaml");
+    EXPECT_EQ(missing.exit_code, 2);
+    EXPECT_NE(missing.err.find("nowhere.yaml"), std::string::npos);
+    const Outcome scene_format = run_glint("render scene.obj3");
+    EXPECT_EQ(scene_format.exit_code, 2);
+    EXPECT_NE(scene_format.err.find("unknown scene format"), std::string::npos);
+    const Outcome image_format = run_glint("render " + scene("showcase.yaml") + " -o out.gif");
+    EXPECT_EQ(image_format.exit_code, 2);
+    EXPECT_NE(image_format.err.find("unknown image format \".gif\""), std::string::npos);
+    EXPECT_FALSE(fs::exists(dir_ / "out.gif"));
+}
+
+TEST_F(Cli, NonSquareSampleCountIsRejected) {
+    const Outcome r = run_glint("render " + scene("showcase.yaml") + " --spp 5");
+    EXPECT_EQ(r.exit_code, 2);
+    EXPECT_NE(r.err.find("--spp must be a square number"), std::string::npos) << r.err;
+}
+
+TEST_F(Cli, UnwritableOutputExitsWithOneAndLeavesNoTemporary) {
+    const Outcome r =
+        run_glint("render " + scene("showcase.yaml") + " --width 8 -q -o no/such/dir/a.png");
+    EXPECT_EQ(r.exit_code, 1);
+    EXPECT_NE(r.err.find("a.png"), std::string::npos) << r.err;
+    // An output path that is a directory cannot be replaced: the directory survives.
+    fs::create_directories(dir_ / "taken.png");
+    EXPECT_EQ(
+        run_glint("render " + scene("showcase.yaml") + " --width 8 -q -o taken.png").exit_code, 1);
+    EXPECT_TRUE(fs::is_directory(dir_ / "taken.png"));
+    for (const auto& entry : fs::directory_iterator(dir_))
+        EXPECT_EQ(entry.path().filename().string().find(".tmp"), std::string::npos) << entry.path();
+}
+
+}  // namespace
+}  // namespace glint

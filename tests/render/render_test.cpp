@@ -1,0 +1,79 @@
+// The render loop: images that do not depend on thread count or tile size, and ray counts.
+#include "glint/render/render.h"
+
+#include <gtest/gtest.h>
+
+#include "glint/scene/yaml/yaml_scene_loader.h"
+
+namespace glint {
+namespace {
+
+Scene showcase(int width, int height) {
+    Scene scene = load_yaml_scene(std::string(GLINT_SOURCE_DIR) + "/scenes/showcase.yaml");
+    scene.settings.width = width;
+    scene.settings.height = height;
+    return scene;
+}
+
+TEST(Render, ImageIsIdenticalForOneAndManyThreadsAndAnyTileSize) {
+    const World world(showcase(96, 72));
+    RenderOptions one_thread;
+    one_thread.threads = 1;
+    const RenderResult reference = render(world, one_thread);
+    for (const auto& [threads, tile_size] : {std::pair{2, 16}, std::pair{4, 7}, std::pair{8, 1}}) {
+        RenderOptions options;
+        options.threads = threads;
+        options.tile_size = tile_size;
+        const RenderResult r = render(world, options);
+        ASSERT_EQ(r.image.pixels.size(), reference.image.pixels.size());
+        // Bit for bit: operator== on floats, not a tolerance.
+        EXPECT_TRUE(r.image.pixels == reference.image.pixels)
+            << threads << " threads, tiles of " << tile_size;
+        EXPECT_EQ(r.rays, reference.rays);
+    }
+}
+
+TEST(Render, CountsOnePrimaryRayPerSample) {
+    Scene scene = showcase(20, 10);
+    scene.settings.samples_per_pixel = 4;
+    const RenderResult r = render(World(scene), {});
+    EXPECT_EQ(r.rays.primary, 20u * 10 * 4);
+    EXPECT_LE(r.rays.primary_hits, r.rays.primary);
+    EXPECT_GT(r.rays.shadow, 0u);
+    EXPECT_TRUE(r.complete);
+    EXPECT_EQ(r.bad_samples.count, 0u);
+}
+
+TEST(Render, CancelledRenderSkipsTheRemainingTilesAndSaysSo) {
+    const World world(showcase(64, 64));
+    RenderProgress progress;
+    progress.cancel = true;
+    const RenderResult r = render(world, {}, &progress);
+    EXPECT_FALSE(r.complete);
+    EXPECT_EQ(progress.tiles_done, 0);
+    EXPECT_EQ(r.image.width, 64);
+    EXPECT_EQ(r.rays.primary, 0u);
+}
+
+TEST(Render, NonFiniteSamplesAreCountedAndLeftOut) {
+    // An emission of infinity makes every sample that sees the sphere non-finite.
+    Scene scene;
+    scene.settings.width = 8;
+    scene.settings.height = 8;
+    scene.camera.from = {0, 0, -5};
+    scene.camera.at = {0, 0, 0};
+    Material hot;
+    hot.emission = Color::gray(kInfinity);
+    scene.materials.push_back(hot);
+    scene.objects.push_back({Sphere{{0, 0, 0}, 1}, 0});
+    const RenderResult r = render(World(scene), {});
+    EXPECT_GT(r.bad_samples.count, 0u);
+    ASSERT_TRUE(r.bad_samples.first);
+    for (const Color& c : r.image.pixels) EXPECT_TRUE(is_finite(c));
+    // The first bad sample in scanline order: in the topmost row the sphere covers, row 2
+    // (its centre ray passes 5 sin(atan(0.375 tan 22.5)) = 0.77 from the sphere's centre).
+    EXPECT_EQ(r.bad_samples.first->y, 2);
+}
+
+}  // namespace
+}  // namespace glint
