@@ -33,8 +33,7 @@ TEST(Phong, DiffuseTermIsKdCNDotL) {
     expect_near(light_term(m, kRed, kN, kL, {0, 1, 0}, Color::gray(1)),
                 {0.445477f, 0.049497f, 0.049497f});
     // The light's intensity scales the term.
-    expect_near(light_term(m, kRed, kN, kL, {0, 1, 0}, Color{2, 0, 1}),
-                {0.890955f, 0, 0.049497f});
+    expect_near(light_term(m, kRed, kN, kL, {0, 1, 0}, Color{2, 0, 1}), {0.890955f, 0, 0.049497f});
 }
 
 TEST(Phong, BlinnHighlightIsHDotNToTheN) {

@@ -14,8 +14,8 @@ Camera::Camera(const CameraSpec& spec, int width, int height)
     n_ = normalize(spec.at - spec.from);
     u_ = normalize(cross(n_, spec.up));  // right-handed: right = forward x up
     v_ = cross(u_, n_);
-    half_height_ = projection_ == Projection::perspective ? std::tan(radians(spec.fov) / 2)
-                                                          : spec.height / 2;
+    half_height_ =
+        projection_ == Projection::perspective ? std::tan(radians(spec.fov) / 2) : spec.height / 2;
     half_width_ = half_height_ * width_ / height_;
 }
 

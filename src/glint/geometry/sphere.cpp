@@ -14,17 +14,17 @@ Bounds3 Sphere::bounds() const {
 
 // The steps are numbered as in the notes (P0 = origin, R = unit direction, M = centre).
 std::optional<ShapeHit> Sphere::intersect(const Ray& ray, Interval t_range) const {
-    const Vector3 to_center = center - ray.origin;         // M - P0
-    const float m2 = length_squared(to_center);            // 1. m^2
-    const float r2 = radius * radius;                      //    outside iff m^2 > r^2
+    const Vector3 to_center = center - ray.origin;  // M - P0
+    const float m2 = length_squared(to_center);     // 1. m^2; P0 is outside iff m^2 > r^2
+    const float r2 = radius * radius;
     const bool outside = m2 > r2;
-    const float h = dot(ray.direction, to_center);         // 2. h = R.(M - P0)
-    if (outside && h < 0) return std::nullopt;             //    points away: no hit
-    const Point3 closest = ray.at(h);                      // 3. D, the ray point closest to M
-    const float d2 = length_squared(center - closest);     // 4. d^2 = (M - D)^2
-    if (d2 > r2) return std::nullopt;                      // 5. the ray passes by
-    const float s = std::sqrt(r2 - d2);                    // 6. t = h -+ s
-    // Measuring d^2 from D (rather than m^2 - h^2) avoids cancellation far from the sphere.
+    const float h = dot(ray.direction, to_center);  // 2. h = R.(M - P0)
+    if (outside && h < 0) return std::nullopt;      //    outside and pointing away: no hit
+    const Point3 closest = ray.at(h);               // 3. D, the ray point closest to M
+    // 4. d^2 = (M - D)^2, measured from D itself: m^2 - h^2 would cancel far from the sphere.
+    const float d2 = length_squared(center - closest);
+    if (d2 > r2) return std::nullopt;    // 5. the ray passes by
+    const float s = std::sqrt(r2 - d2);  // 6. t1 = h - s, t2 = h + s
     const float t1 = h - s, t2 = h + s;
     if (t_range.contains(t1)) return ShapeHit{t1};
     if (t_range.contains(t2)) return ShapeHit{t2};
@@ -32,12 +32,11 @@ std::optional<ShapeHit> Sphere::intersect(const Ray& ray, Interval t_range) cons
 }
 
 SurfacePoint Sphere::surface_at(const Ray& ray, const ShapeHit& hit) const {
-    const Vector3 offset = ray.at(hit.t) - center;
-    const Vector3 n = offset / radius;                     // 8. N = (S - M) / r
+    // 7. S = P0 + t R and 8. N = (S - M) / r. N is normalised and S projected back onto the
+    // sphere, which removes the rounding error of t along the ray.
+    const Vector3 unit = normalize(ray.at(hit.t) - center);
     SurfacePoint sp;
-    // Project the hit back onto the surface: removes the rounding error of t along the ray.
-    const Vector3 unit = normalize(n);
-    sp.p = center + unit * radius;                         // 7. S = P0 + t R
+    sp.p = center + unit * radius;
     sp.normal = Normal3(unit);
     const float phi = std::atan2(-unit.z, unit.x);
     sp.uv = {(phi < 0 ? phi + 2 * kPi : phi) / (2 * kPi),
