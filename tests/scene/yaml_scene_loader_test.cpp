@@ -312,7 +312,7 @@ TEST(YamlScene, EveryTruncationParsesOrThrowsSceneError) {
 TEST(YamlScene, EverySingleByteCorruptionParsesOrThrowsSceneError) {
     const std::string text = read_text(kSourceDir / "scenes/whitted-basics.yaml");
     for (std::size_t i = 0; i < text.size(); ++i) {
-        for (const char c : {'[', '{', ':', '-', '&', '*', '\0', '\t', '"'}) {
+        for (const char c : {'{', ']', ',', '*', '\0', '"'}) {
             std::string corrupt = text;
             corrupt[i] = c;
             try {

@@ -125,10 +125,27 @@ void check_single_document(const YamlSource& source, const std::string& text) {
     throw source.error_at(second, 1, "a scene file holds one YAML document; this is a second one");
 }
 
+// Whether the text may hold more than the root document that YAML::Load() returned, which
+// ignores the rest. yaml-cpp ends a flow collection or an indented root where it closes and takes
+// what follows as another document; but a block map at the left margin runs to the end of the
+// text unless a line starts with a document marker ("---", "..."). Counting the documents costs
+// a second parse, as long as the first, so the usual scene skips it.
+bool may_hold_more_documents(const YamlSource& source, const YAML::Node& root) {
+    const YAML::Mark mark = root.Mark();
+    if (!root.IsMap() || mark.is_null() || mark.column != 0) return true;
+    const std::string_view first = source.line(mark.line);
+    if (first.starts_with('{') || first.starts_with('[')) return true;
+    for (int i = mark.line + 1; i < source.line_count(); ++i) {
+        const std::string_view line = source.line(i);
+        if (line.starts_with("---") || line.starts_with("...")) return true;
+    }
+    return false;
+}
+
 Scene parse_documents(const YamlSource& source, std::string_view text) {
     const std::string yaml(text);
-    check_single_document(source, yaml);
     const YAML::Node root = YAML::Load(yaml);
+    if (may_hold_more_documents(source, root)) check_single_document(source, yaml);
     if (root.IsNull()) {
         throw source.error("the scene is empty; it needs at least a camera",
                            {"see docs/scene-format.md for an example"});

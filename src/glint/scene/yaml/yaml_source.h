@@ -30,6 +30,7 @@ public:
 
     // A line of the text, 0-based, without its line break; empty when out of range.
     std::string_view line(int index) const;
+    int line_count() const { return int(line_starts_.size()); }
 
 private:
     int span_of(const YAML::Node& node) const;
