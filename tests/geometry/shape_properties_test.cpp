@@ -59,6 +59,8 @@ TEST_P(ShapeProperties, HitsLieOnTheSurfaceWithUnitNormals) {
         EXPECT_NEAR(std::visit(DistanceToSurface{sp.p}, shape), 0, 1e-5f);
         EXPECT_NEAR(distance(sp.p, ray.at(hit->t)), 0, 1e-4f);
         EXPECT_NEAR(length(to_vector(sp.normal)), 1, 1e-5f);
+        EXPECT_NEAR(length(to_vector(sp.shading_normal)), 1, 1e-5f);
+        EXPECT_GT(dot(sp.normal, sp.shading_normal), 0);
     }
     EXPECT_GT(hits, 200);
 }

@@ -25,6 +25,16 @@ TEST(Texture, SolidCheckerAlternatesAcrossEveryAxisAndAcrossZero) {
     EXPECT_EQ(evaluate(checker, at({-0.1f, 0.1f, 0.1f})), kBlack);  // floor(-0.2) = -1
 }
 
+TEST(Texture, HugeCoordinatesOverTinySquaresStayDefined) {
+    // 3e38 / 1e-30 overflows to infinity; the cell index must not go through an integer cast.
+    const CheckerTexture checker{kWhite, kBlack, 1e-30f, CheckerSpace::solid};
+    const Color c = evaluate(checker, at({3e38f, -3e38f, 1}));
+    EXPECT_TRUE(c == kWhite || c == kBlack);
+    EXPECT_EQ(
+        evaluate(CheckerTexture{kWhite, kBlack, 1, CheckerSpace::solid}, at({1e30f, 0.5f, 0.5f})),
+        kWhite);  // 1e30 is an even integer
+}
+
 TEST(Texture, UvCheckerUsesTextureCoordinates) {
     const CheckerTexture checker{kWhite, kBlack, 0.25f, CheckerSpace::uv};
     EXPECT_EQ(evaluate(checker, at({9, 9, 9}, {0.1f, 0.1f})), kWhite);

@@ -37,7 +37,7 @@ SurfacePoint Box::surface_at(const Ray& ray, const ShapeHit& hit) const {
     sp.p = {c[0], c[1], c[2]};
     float n[3] = {0, 0, 0};
     n[axis] = max_side ? 1.0f : -1.0f;
-    sp.normal = {n[0], n[1], n[2]};
+    sp.normal = sp.shading_normal = {n[0], n[1], n[2]};
     const int a = (axis + 1) % 3, b = (axis + 2) % 3;
     const int u_axis = std::min(a, b), v_axis = std::max(a, b);
     sp.uv = {(c[u_axis] - min[u_axis]) / (max[u_axis] - min[u_axis]),

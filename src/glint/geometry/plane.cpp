@@ -20,7 +20,7 @@ SurfacePoint Plane::surface_at(const Ray& ray, const ShapeHit& hit) const {
     const Point3 p = ray.at(hit.t);
     // Remove the error of t along the normal so the point lies on the plane.
     sp.p = p - to_vector(normal) * dot(normal, p - point);
-    sp.normal = normal;
+    sp.normal = sp.shading_normal = normal;
     Vector3 s, t;
     orthonormal_basis(to_vector(normal), s, t);
     sp.uv = {dot(sp.p - point, s), dot(sp.p - point, t)};

@@ -14,7 +14,11 @@
 
 namespace glint {
 
-using Shape = std::variant<Sphere, Plane, Triangle, Box>;
+// A struct rather than an alias so that it can be forward-declared by shapes that hold other
+// shapes (CSG, transforms). It is the variant: std::visit, std::get and friends apply.
+struct Shape : std::variant<Sphere, Plane, Triangle, Box> {
+    using variant::variant;
+};
 
 inline Bounds3 bounds(const Shape& shape) {
     return std::visit([](const auto& s) { return s.bounds(); }, shape);

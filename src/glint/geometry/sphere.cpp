@@ -37,7 +37,7 @@ SurfacePoint Sphere::surface_at(const Ray& ray, const ShapeHit& hit) const {
     const Vector3 unit = normalize(ray.at(hit.t) - center);
     SurfacePoint sp;
     sp.p = center + unit * radius;
-    sp.normal = Normal3(unit);
+    sp.normal = sp.shading_normal = Normal3(unit);
     const float phi = std::atan2(-unit.z, unit.x);
     sp.uv = {(phi < 0 ? phi + 2 * kPi : phi) / (2 * kPi),
              std::acos(std::clamp(-unit.y, -1.0f, 1.0f)) / kPi};

@@ -20,6 +20,9 @@ struct SurfacePoint {
     // Unit geometric normal. On closed shapes it points outwards; on open ones (planes,
     // triangles) it is the side the description names. Never flipped towards the ray here.
     Normal3 normal;
+    // Unit normal for shading: the geometric one, or one interpolated from vertex normals for
+    // smooth shading. On the same side of the surface as `normal`.
+    Normal3 shading_normal;
     // Texture coordinates; their range and meaning depend on the shape.
     Point2 uv;
 };

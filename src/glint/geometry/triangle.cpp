@@ -33,6 +33,7 @@ SurfacePoint Triangle::surface_at(const Ray&, const ShapeHit& hit) const {
     sp.p = to_point(to_vector(vertices[0]) * b0 + to_vector(vertices[1]) * hit.u +
                     to_vector(vertices[2]) * hit.v);
     sp.normal = Normal3(normalize(cross(vertices[1] - vertices[0], vertices[2] - vertices[0])));
+    sp.shading_normal = sp.normal;
     sp.uv = {b0 * uvs[0].x + hit.u * uvs[1].x + hit.v * uvs[2].x,
              b0 * uvs[0].y + hit.u * uvs[1].y + hit.v * uvs[2].y};
     return sp;

@@ -19,9 +19,12 @@ Color WhittedIntegrator::trace(const Ray& ray, int depth, float weight, RayStats
     const SurfacePoint sp = world_.surface_at(ray, *hit);
     const Material& m = world_.material_of(hit->primitive);
     const Color surface_color = evaluate(m.color, sp);
-    // The ray enters the surface when it meets the front (outward) side.
+    // The ray enters the surface when it meets the front (outward) side. Both normals are
+    // turned to face the incoming ray: the geometric one places secondary rays on the right
+    // side of the surface, the shading one (smooth for meshes) enters the formulas.
     const bool entering = dot(sp.normal, ray.direction) < 0;
-    const Normal3 n = entering ? sp.normal : -sp.normal;  // faces the incoming ray
+    const Normal3 ng = entering ? sp.normal : -sp.normal;
+    const Normal3 n = entering ? sp.shading_normal : -sp.shading_normal;
     const Vector3 to_viewer = -ray.direction;
 
     Color color = m.emission + ambient_term(m, surface_color, world_.ambient());
@@ -29,7 +32,7 @@ Color WhittedIntegrator::trace(const Ray& ray, int depth, float weight, RayStats
         const LightSample ls = sample_light(light, sp.p);
         // A light behind the surface adds nothing, so it needs no feeler.
         if (dot(n, ls.to_light) <= 0) continue;
-        const float shadow = shadow_factor(sp.p, n, ls.to_light, ls.distance, stats);
+        const float shadow = shadow_factor(sp.p, ng, ls.to_light, ls.distance, stats);
         if (shadow == 0) continue;
         color += shadow * light_term(m, surface_color, n, ls.to_light, to_viewer, ls.intensity);
     }
@@ -49,12 +52,12 @@ Color WhittedIntegrator::trace(const Ray& ray, int depth, float weight, RayStats
     }
     if (kr > 0 && weight * kr >= settings.min_weight) {
         ++stats.reflected;
-        const Ray r = world_.spawn_ray(sp.p, n, normalize(reflect(ray.direction, n)));
+        const Ray r = world_.spawn_ray(sp.p, ng, normalize(reflect(ray.direction, n)));
         color += kr * trace(r, depth + 1, weight * kr, stats);
     }
     if (kt > 0 && weight * kt >= settings.min_weight) {
         ++stats.refracted;
-        const Ray t = world_.spawn_ray(sp.p, n, refracted);
+        const Ray t = world_.spawn_ray(sp.p, ng, refracted);
         color += kt * trace(t, depth + 1, weight * kt, stats);
     }
     return color;

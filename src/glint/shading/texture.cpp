@@ -6,12 +6,15 @@ namespace glint {
 
 namespace {
 
-// Parity of the cell index; floor() keeps the pattern regular across zero.
+// Parity of one coordinate's cell index; floor() keeps the pattern regular across zero.
+// fmod(floor(x), 2) is exact for every float and stays defined where a cast to an integer would
+// overflow (huge coordinates over tiny squares); NaN counts as even.
+bool odd_index(float x, float size) {
+    return std::abs(std::fmod(std::floor(double(x) / size), 2.0)) == 1.0;
+}
+
 bool odd_cell(float a, float b, float c, float size) {
-    const auto cell = static_cast<long long>(std::floor(a / size)) +
-                      static_cast<long long>(std::floor(b / size)) +
-                      static_cast<long long>(std::floor(c / size));
-    return (cell & 1) != 0;
+    return (odd_index(a, size) ^ odd_index(b, size) ^ odd_index(c, size)) != 0;
 }
 
 struct Evaluate {

@@ -37,7 +37,7 @@ std::string indexed(std::string_view key, std::size_t i) {
 SceneObject read_object(const YamlSource& source, const YAML::Node& node, const Field& field,
                         MaterialTable& materials, std::size_t index) {
     auto entries = read_map(source, node, field);
-    const std::vector<std::string_view> names = shape_type_names();
+    static const std::vector<std::string_view> names = shape_type_names();
     const std::string name = read_type(source, node, entries, "object", names);
     const auto types = shape_types();
     const ShapeType& type = *std::find_if(types.begin(), types.end(),
