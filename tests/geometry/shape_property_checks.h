@@ -78,8 +78,8 @@ void expect_shape_properties(const S& shape, Distance distance_to_surface, Rando
         const Ray leaving{sp.p + to_vector(n) * options.leave_offset, d};
         const auto again = shape.intersect(leaving, {});
         if (options.convex) {
-            ASSERT_FALSE(again) << "ray " << i << " leaving a convex shape hit it at t = "
-                                << again->t;
+            ASSERT_FALSE(again) << "ray " << i
+                                << " leaving a convex shape hit it at t = " << again->t;
         } else if (again) {
             ASSERT_GT(again->t, options.min_rehit_distance) << "ray " << i << " re-hit";
         }

@@ -63,7 +63,8 @@ INSTANTIATE_TEST_SUITE_P(Scenes, GoldenImage,
                                            "features/reflection.yaml", "features/refraction.yaml",
                                            "features/textures.yaml", "features/attenuation.yaml",
                                            "features/orthographic.yaml",
-                                           "features/supersampling.yaml"),
+                                           "features/supersampling.yaml", "features/csg.yaml",
+                                           "features/instancing.yaml"),
                          [](const ::testing::TestParamInfo<std::string>& param) {
                              std::string id = fs::path(param.param).stem().string();
                              for (char& c : id)

@@ -7,16 +7,18 @@
 #include <variant>
 
 #include "glint/geometry/box.h"
+#include "glint/geometry/csg.h"
 #include "glint/geometry/plane.h"
 #include "glint/geometry/sphere.h"
 #include "glint/geometry/surface_point.h"
+#include "glint/geometry/transformed.h"
 #include "glint/geometry/triangle.h"
 
 namespace glint {
 
 // A struct rather than an alias so that it can be forward-declared by shapes that hold other
 // shapes (CSG, transforms). It is the variant: std::visit, std::get and friends apply.
-struct Shape : std::variant<Sphere, Plane, Triangle, Box> {
+struct Shape : std::variant<Sphere, Plane, Triangle, Box, Transformed, Csg> {
     using variant::variant;
 };
 
@@ -33,5 +35,12 @@ inline SurfacePoint surface_at(const Shape& shape, const Ray& ray, const ShapeHi
 }
 
 std::string_view shape_name(const Shape& shape);
+
+// Whether the shape is a closed solid (or a half-space) that a ray alternately enters and
+// leaves: what CSG needs of its operands.
+bool is_solid(const Shape& shape);
+
+// How many CSG levels the shape nests, through transforms and instances.
+int csg_depth(const Shape& shape);
 
 }  // namespace glint

@@ -13,6 +13,9 @@ struct ShapeHit {
     float t = 0;
     float u = 0, v = 0;
     std::uint32_t part = 0;
+    // For hits on CSG shapes: two bits per CSG level, innermost level in the highest bits used,
+    // saying which operand was hit and whether its normal is turned around (see csg.h).
+    std::uint64_t csg_path = 0;
 };
 
 struct SurfacePoint {

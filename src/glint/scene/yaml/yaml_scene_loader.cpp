@@ -18,7 +18,7 @@
 #include "glint/scene/yaml/yaml_map_reader.h"
 #include "glint/scene/yaml/yaml_materials.h"
 #include "glint/scene/yaml/yaml_settings.h"
-#include "glint/scene/yaml/yaml_shapes.h"
+#include "glint/scene/yaml/yaml_shape_reader.h"
 
 namespace glint {
 
@@ -34,27 +34,19 @@ std::string indexed(std::string_view key, std::size_t i) {
     return std::string(key) + "[" + std::to_string(i) + "]";
 }
 
-SceneObject read_object(const YamlSource& source, const YAML::Node& node, const Field& field,
+SceneObject read_object(ShapeReader& shapes, const YAML::Node& node, const Field& field,
                         MaterialTable& materials, std::size_t index) {
-    auto entries = read_map(source, node, field);
-    static const std::vector<std::string_view> names = shape_type_names();
-    const std::string name = read_type(source, node, entries, "object", names);
-    const auto types = shape_types();
-    const ShapeType& type = *std::find_if(types.begin(), types.end(),
-                                          [&](const ShapeType& t) { return t.name == name; });
-    std::vector<std::string_view> keys = type.keys;
-    keys.insert(keys.end(), {"type", "material", "casts_shadow"});
-    const MapReader object(source, node, std::move(entries), name, std::move(keys));
-
-    SceneObject result{type.parse(object)};
-    result.material = materials.resolve(object.find("material"), index);
-    result.casts_shadow = object.boolean("casts_shadow", true);
+    ShapeReader::Result r = shapes.read(node, field, {"material", "casts_shadow"});
+    SceneObject result{std::move(r.shape)};
+    result.material = materials.resolve(r.map.find("material"), index);
+    result.casts_shadow = r.map.boolean("casts_shadow", true);
     return result;
 }
 
 Scene read_scene(const YamlSource& source, const YAML::Node& root) {
-    const MapReader scene(source, root, Field("", "scene"), "scene",
-                          {"image", "camera", "ambient", "materials", "lights", "objects"});
+    const MapReader scene(
+        source, root, Field("", "scene"), "scene",
+        {"image", "camera", "ambient", "materials", "lights", "define", "objects"});
     Scene result;
     if (const MapEntry* image = section(scene, "image")) {
         result.settings = read_image(source, image->value, scene.field("image"));
@@ -73,12 +65,16 @@ Scene read_scene(const YamlSource& source, const YAML::Node& root) {
             result.lights.push_back(read_light(source, items[i], {"", indexed("lights", i)}));
         }
     }
+    ShapeReader shapes(source);
+    if (const MapEntry* define = section(scene, "define")) {
+        shapes.read_definitions(define->value, scene.field("define"));
+    }
     if (const MapEntry* objects = section(scene, "objects")) {
         const auto items =
             read_sequence(source, objects->value, scene.field("objects"), "a list of objects");
         for (std::size_t i = 0; i < items.size(); ++i) {
             result.objects.push_back(
-                read_object(source, items[i], {"", indexed("objects", i)}, materials, i));
+                read_object(shapes, items[i], {"", indexed("objects", i)}, materials, i));
         }
     }
     return result;

@@ -9,15 +9,15 @@ namespace glint {
 
 namespace {
 
-Shape parse_sphere(const MapReader& object) {
+Shape parse_sphere(const MapReader& object, ShapeReader&) {
     return Sphere{object.point("center"), object.number("radius", kPositive)};
 }
 
-Shape parse_plane(const MapReader& object) {
+Shape parse_plane(const MapReader& object, ShapeReader&) {
     return Plane{object.point("point"), Normal3(object.direction("normal"))};
 }
 
-Shape parse_triangle(const MapReader& object) {
+Shape parse_triangle(const MapReader& object, ShapeReader&) {
     const YamlSource& source = object.source();
     Triangle triangle;
     const MapEntry& vertices = object.require("vertices");
@@ -52,7 +52,7 @@ Shape parse_triangle(const MapReader& object) {
     return triangle;
 }
 
-Shape parse_box(const MapReader& object) {
+Shape parse_box(const MapReader& object, ShapeReader&) {
     const Box box{object.point("min"), object.point("max")};
     constexpr const char* kAxes[] = {"x", "y", "z"};
     for (int axis = 0; axis < 3; ++axis) {
@@ -66,11 +66,46 @@ Shape parse_box(const MapReader& object) {
     return box;
 }
 
+// A CSG shape folds its operands from the left: difference of [a, b, c] is (a - b) - c.
+template <CsgOperation op>
+Shape parse_csg(const MapReader& object, ShapeReader& shapes) {
+    const MapEntry& entry = object.require("objects");
+    const auto items = read_sequence(object.source(), entry.value, object.field("objects"),
+                                     "a list of at least 2 objects");
+    if (items.size() < 2) {
+        throw object.source().error_at(
+            entry.value,
+            object.what() + " needs at least 2 objects, got " + std::to_string(items.size()));
+    }
+    const auto operand = [&](std::size_t i) {
+        return shapes.read_operand(items[i], {object.what(), "objects[" + std::to_string(i) + "]"});
+    };
+    Shape result = Csg{op, operand(0), operand(1)};
+    for (std::size_t i = 2; i < items.size(); ++i) {
+        result = Csg{op, std::make_shared<const Shape>(std::move(result)), operand(i)};
+    }
+    return result;
+}
+
+// A defined shape placed again; `transform` moves it. The geometry is shared, not copied.
+// A placed definition (itself an instance) is placed again by composing the transforms, so
+// that instances of instances cost one level.
+Shape parse_instance(const MapReader& object, ShapeReader& shapes) {
+    auto defined = shapes.definition(object, "of");
+    if (const auto* placed = std::get_if<Transformed>(defined.get())) return *placed;
+    return Transformed{Transform{}, std::move(defined)};
+}
+
 const ShapeType kShapeTypes[] = {
     {"box", {"min", "max"}, parse_box},
+    {"difference", {"objects"}, parse_csg<CsgOperation::difference>},
+    {"instance", {"of"}, parse_instance},
+    {"intersection", {"objects"}, parse_csg<CsgOperation::intersection>},
+    {"merge", {"objects"}, parse_csg<CsgOperation::merge>},
     {"plane", {"point", "normal"}, parse_plane},
     {"sphere", {"center", "radius"}, parse_sphere},
     {"triangle", {"vertices", "uvs"}, parse_triangle},
+    {"union", {"objects"}, parse_csg<CsgOperation::union_of>},
 };
 
 }  // namespace

@@ -8,15 +8,17 @@
 
 #include "glint/geometry/shape.h"
 #include "glint/scene/yaml/yaml_map_reader.h"
+#include "glint/scene/yaml/yaml_shape_reader.h"
 
 namespace glint {
 
 struct ShapeType {
     std::string_view name;
-    // The shape's own keys; every object also takes type, material and casts_shadow.
+    // The shape's own keys; every shape also takes type and transform, and every object
+    // material and casts_shadow.
     std::vector<std::string_view> keys;
-    // Reads the shape from an object map whose keys have been checked.
-    Shape (*parse)(const MapReader& object);
+    // Reads the shape from a map whose keys have been checked; `shapes` reads nested shapes.
+    Shape (*parse)(const MapReader& object, ShapeReader& shapes);
 };
 
 // Sorted by name.

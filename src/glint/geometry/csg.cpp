@@ -1,0 +1,110 @@
+#include "glint/geometry/csg.h"
+
+#include <cmath>
+
+#include "glint/geometry/shape.h"
+
+namespace glint {
+
+namespace {
+
+constexpr std::uint64_t kFromB = 1;    // the hit is on operand b (else a)
+constexpr std::uint64_t kFlipped = 2;  // its normal is turned around
+
+// One operand's next surface crossing along the ray, and whether the ray is inside the operand
+// just before it.
+struct Crossing {
+    std::optional<ShapeHit> hit;
+    bool inside_before = false;
+};
+
+// The next crossing at or after t_min. Whether the ray is inside before it follows from the
+// direction in which it crosses: leaving through the surface means it was inside.
+Crossing next_crossing(const Shape& shape, const Ray& ray, float t_min) {
+    Crossing c;
+    c.hit = intersect(shape, ray, {t_min, kInfinity});
+    if (c.hit) {
+        c.inside_before = dot(surface_at(shape, ray, *c.hit).normal, ray.direction) > 0;
+    } else if (const auto* plane = std::get_if<Plane>(&shape)) {
+        // A half-space the ray never crosses: inside when the origin is below the plane.
+        c.inside_before = dot(plane->normal, ray.at(t_min) - plane->point) < 0;
+    }
+    return c;
+}
+
+// Whether a crossing of one operand lies on the result's surface, given whether the ray is
+// inside the other operand there; and whether its normal must be turned around.
+bool on_result_surface(CsgOperation op, bool on_b, bool inside_other, bool& flipped) {
+    flipped = false;
+    switch (op) {
+        case CsgOperation::union_of:
+            return true;
+        case CsgOperation::merge:
+            return !inside_other;
+        case CsgOperation::intersection:
+            return inside_other;
+        case CsgOperation::difference:
+            flipped = on_b;
+            return on_b ? inside_other : !inside_other;
+    }
+    return false;
+}
+
+// The float after t, so that the walk moves past a crossing and never finds it again.
+float after(float t) { return std::nextafter(t, kInfinity); }
+
+}  // namespace
+
+Bounds3 Csg::bounds() const {
+    const Bounds3 ba = glint::bounds(*a), bb = glint::bounds(*b);
+    switch (operation) {
+        case CsgOperation::union_of:
+        case CsgOperation::merge:
+            return merge(ba, bb);
+        case CsgOperation::intersection:
+            return {max(ba.min, bb.min), min(ba.max, bb.max)};
+        case CsgOperation::difference:
+            return ba;
+    }
+    return ba;
+}
+
+std::optional<ShapeHit> Csg::intersect(const Ray& ray, Interval t_range) const {
+    Crossing ca = next_crossing(*a, ray, t_range.min);
+    Crossing cb = next_crossing(*b, ray, t_range.min);
+    // Every crossing toggles inside/outside, so the walk ends after finitely many; the cap
+    // only guards against operands that are not closed.
+    for (int step = 0; step < 1024; ++step) {
+        if (!ca.hit && !cb.hit) return std::nullopt;
+        const bool on_b = !ca.hit || (cb.hit && cb.hit->t < ca.hit->t);
+        Crossing& c = on_b ? cb : ca;
+        const Crossing& other = on_b ? ca : cb;
+        const float t = c.hit->t;
+        if (t > t_range.max) return std::nullopt;
+        bool flipped = false;
+        if (on_result_surface(operation, on_b, other.inside_before, flipped)) {
+            ShapeHit hit = *c.hit;
+            hit.csg_path = (hit.csg_path << 2) | (on_b ? kFromB : 0) | (flipped ? kFlipped : 0);
+            return hit;
+        }
+        const bool inside_after = !c.inside_before;
+        const Shape& shape = on_b ? *b : *a;
+        c = next_crossing(shape, ray, after(t));
+        if (!c.hit) c.inside_before = inside_after;
+    }
+    return std::nullopt;
+}
+
+SurfacePoint Csg::surface_at(const Ray& ray, const ShapeHit& hit) const {
+    const std::uint64_t bits = hit.csg_path & 3;
+    ShapeHit operand_hit = hit;
+    operand_hit.csg_path = hit.csg_path >> 2;
+    SurfacePoint sp = glint::surface_at((bits & kFromB) ? *b : *a, ray, operand_hit);
+    if (bits & kFlipped) {
+        sp.normal = -sp.normal;
+        sp.shading_normal = -sp.shading_normal;
+    }
+    return sp;
+}
+
+}  // namespace glint

@@ -1,0 +1,41 @@
+// Constructive solid geometry on closed solids, with POV-Ray's four operations:
+//   union         every surface of both operands, internal ones included;
+//   merge         the surface of the union only (no internal surfaces);
+//   intersection  the surface of the common part;
+//   difference    a minus b: a's surface outside b, and b's inside a, turned inside out.
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <optional>
+
+#include "glint/geometry/surface_point.h"
+#include "glint/math/bounds.h"
+#include "glint/math/interval.h"
+#include "glint/math/ray.h"
+
+namespace glint {
+
+struct Shape;
+
+enum class CsgOperation { union_of, merge, intersection, difference };
+
+// Operands must be closed solids (or half-spaces: planes), so that a ray alternately enters and
+// leaves them; they may be CSG shapes themselves up to kMaxCsgDepth levels.
+struct Csg {
+    CsgOperation operation = CsgOperation::union_of;
+    std::shared_ptr<const Shape> a, b;  // never null
+
+    Bounds3 bounds() const;
+    // Walks both operands' hits along the ray in order, tracking whether the ray is inside
+    // each, and returns the first hit that lies on the result's surface.
+    std::optional<ShapeHit> intersect(const Ray& ray, Interval t_range) const;
+    // The operand's surface point, with the normal turned around where the operation turns
+    // the operand inside out (b in a difference), so that normals always point out of the result.
+    SurfacePoint surface_at(const Ray& ray, const ShapeHit& hit) const;
+};
+
+// Each level takes two bits of ShapeHit::csg_path.
+inline constexpr int kMaxCsgDepth = 32;
+
+}  // namespace glint

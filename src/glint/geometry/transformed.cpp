@@ -1,0 +1,52 @@
+#include "glint/geometry/transformed.h"
+
+#include "glint/geometry/shape.h"
+
+namespace glint {
+
+namespace {
+
+struct ObjectRay {
+    Ray ray;
+    float scale;  // object-space t per world-space t
+};
+
+ObjectRay to_object(const Transform& world_from_object, const Ray& ray) {
+    const Transform object_from_world = world_from_object.inverse();
+    const Vector3 d = object_from_world(ray.direction);
+    const float scale = length(d);
+    return {{object_from_world(ray.origin), d / scale}, scale};
+}
+
+}  // namespace
+
+Bounds3 Transformed::bounds() const {
+    const Bounds3 b = glint::bounds(*shape);
+    if (!b.is_finite()) {
+        return {{-kInfinity, -kInfinity, -kInfinity}, {kInfinity, kInfinity, kInfinity}};
+    }
+    return world_from_object(b);
+}
+
+std::optional<ShapeHit> Transformed::intersect(const Ray& ray, Interval t_range) const {
+    const ObjectRay o = to_object(world_from_object, ray);
+    auto hit = glint::intersect(*shape, o.ray, {t_range.min * o.scale, t_range.max * o.scale});
+    if (!hit) return std::nullopt;
+    hit->t /= o.scale;
+    // Rounding in the two scalings must not move the hit outside the caller's range.
+    if (!t_range.contains(hit->t)) return std::nullopt;
+    return hit;
+}
+
+SurfacePoint Transformed::surface_at(const Ray& ray, const ShapeHit& hit) const {
+    const ObjectRay o = to_object(world_from_object, ray);
+    ShapeHit object_hit = hit;
+    object_hit.t = hit.t * o.scale;
+    SurfacePoint sp = glint::surface_at(*shape, o.ray, object_hit);
+    sp.p = world_from_object(sp.p);
+    sp.normal = normalize(world_from_object(sp.normal));
+    sp.shading_normal = normalize(world_from_object(sp.shading_normal));
+    return sp;
+}
+
+}  // namespace glint

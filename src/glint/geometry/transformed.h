@@ -1,0 +1,31 @@
+// A shape placed by an affine transform. The shape is shared, not copied: placing one shape (a
+// mesh, a CSG tree) many times is instancing.
+#pragma once
+
+#include <memory>
+#include <optional>
+
+#include "glint/geometry/surface_point.h"
+#include "glint/math/bounds.h"
+#include "glint/math/interval.h"
+#include "glint/math/ray.h"
+#include "glint/math/transform.h"
+
+namespace glint {
+
+struct Shape;
+
+struct Transformed {
+    Transform world_from_object;
+    std::shared_ptr<const Shape> shape;  // never null
+
+    // The transformed box of the shape's bounds; unbounded shapes stay unbounded.
+    Bounds3 bounds() const;
+    // The ray is taken to object space and its direction renormalised there (shapes need unit
+    // directions); t is scaled back, so hits are in world distances.
+    std::optional<ShapeHit> intersect(const Ray& ray, Interval t_range) const;
+    // The object's surface point mapped to world space: normals by the inverse transpose.
+    SurfacePoint surface_at(const Ray& ray, const ShapeHit& hit) const;
+};
+
+}  // namespace glint

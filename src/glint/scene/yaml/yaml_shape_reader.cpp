@@ -1,0 +1,89 @@
+// Reading shape maps through the shape table, with transforms, operands and definitions.
+#include "glint/scene/yaml/yaml_shape_reader.h"
+
+#include <algorithm>
+
+#include "glint/scene/yaml/yaml_shapes.h"
+#include "glint/scene/yaml/yaml_transform.h"
+
+namespace glint {
+
+namespace {
+
+// A transform on an already placed shape (an instance) composes with its placement rather than
+// nesting another level.
+Shape place(Shape shape, const Transform& world_from_object) {
+    if (auto* placed = std::get_if<Transformed>(&shape)) {
+        placed->world_from_object = world_from_object * placed->world_from_object;
+        return shape;
+    }
+    return Transformed{world_from_object, std::make_shared<const Shape>(std::move(shape))};
+}
+
+}  // namespace
+
+void ShapeReader::read_definitions(const YAML::Node& section, const Field& field) {
+    for (const MapEntry& entry : read_map(source_, section, field)) {
+        if (entry.key.empty()) throw source_.error_at(entry.key_node, "a definition needs a name");
+        Result r = read(entry.value, {"define", entry.key, entry.key_node});
+        definitions_.emplace(entry.key, std::make_shared<const Shape>(std::move(r.shape)));
+    }
+}
+
+ShapeReader::Result ShapeReader::read(const YAML::Node& node, const Field& field,
+                                      std::vector<std::string_view> extra_keys) {
+    auto entries = read_map(source_, node, field);
+    const std::vector<std::string_view> names = shape_type_names();
+    const std::string name = read_type(source_, node, entries, "object", names);
+    const auto types = shape_types();
+    const ShapeType& type = *std::find_if(types.begin(), types.end(),
+                                          [&](const ShapeType& t) { return t.name == name; });
+    std::vector<std::string_view> keys = type.keys;
+    keys.insert(keys.end(), {"type", "transform"});
+    keys.insert(keys.end(), extra_keys.begin(), extra_keys.end());
+    MapReader map(source_, node, std::move(entries), name, std::move(keys));
+
+    Shape shape = type.parse(map, *this);
+    if (const MapEntry* transform = map.find("transform")) {
+        shape = place(std::move(shape), read_transform(source_, transform->value,
+                                                       map.field("transform")));
+    }
+    if (csg_depth(shape) > kMaxCsgDepth) {
+        throw source_.error_at(node, "CSG nests deeper than " + std::to_string(kMaxCsgDepth) +
+                                         " levels");
+    }
+    return {std::move(shape), std::move(map)};
+}
+
+std::shared_ptr<const Shape> ShapeReader::read_operand(const YAML::Node& node,
+                                                       const Field& field) {
+    Result r = read(node, field, {"material"});
+    if (const MapEntry* material = r.map.find("material")) {
+        throw source_.error_at(material->key_node, "a CSG operand has no material of its own",
+                               {"the material of the CSG object applies to all its operands"});
+    }
+    if (!is_solid(r.shape)) {
+        throw source_.error_at(
+            node, r.map.what() + " is not a closed solid, so it cannot be a CSG operand",
+            {"CSG operands are solids: spheres, boxes, planes (half-spaces), CSG shapes, and "
+             "transforms and instances of these"});
+    }
+    return std::make_shared<const Shape>(std::move(r.shape));
+}
+
+std::shared_ptr<const Shape> ShapeReader::definition(const MapReader& map,
+                                                     std::string_view key) const {
+    const MapEntry& entry = map.require(key);
+    const std::string name = read_string(source_, entry.value, map.field(key));
+    if (const auto it = definitions_.find(name); it != definitions_.end()) return it->second;
+    std::vector<std::string_view> names;
+    for (const auto& [defined, shape] : definitions_) names.push_back(defined);
+    if (names.empty()) {
+        throw source_.error_at(entry.value, "unknown definition " + quote(name),
+                               {"the scene has no `define` section (or the name is defined "
+                                "after its use)"});
+    }
+    throw unknown_name(source_, entry.value, "definition", "definitions", name, names);
+}
+
+}  // namespace glint

@@ -1,0 +1,45 @@
+// Reads shape maps, recursively: a shape's own keys (through the shape table), its `transform`,
+// CSG operands, and instances of shapes named in the `define` section. Internal to glint_scene.
+#pragma once
+
+#include <map>
+#include <memory>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "glint/geometry/shape.h"
+#include "glint/scene/yaml/yaml_map_reader.h"
+
+namespace glint {
+
+class ShapeReader {
+public:
+    explicit ShapeReader(const YamlSource& source) : source_(source) {}
+
+    const YamlSource& source() const { return source_; }
+
+    // The top-level `define` section: name -> shape map. A definition may use the ones before it.
+    void read_definitions(const YAML::Node& section, const Field& field);
+
+    struct Result {
+        Shape shape;
+        MapReader map;  // for the caller's extra keys
+    };
+    // A shape map: `type`, the type's keys, `transform`, and the caller's `extra_keys` (an
+    // object's material and casts_shadow), which the caller reads from the returned map.
+    Result read(const YAML::Node& node, const Field& field,
+                std::vector<std::string_view> extra_keys = {});
+
+    // A CSG operand: a shape map that must describe a closed solid.
+    std::shared_ptr<const Shape> read_operand(const YAML::Node& node, const Field& field);
+
+    // The shape defined under the name that `key` of the map gives (an instance's `of`).
+    std::shared_ptr<const Shape> definition(const MapReader& map, std::string_view key) const;
+
+private:
+    const YamlSource& source_;
+    std::map<std::string, std::shared_ptr<const Shape>, std::less<>> definitions_;
+};
+
+}  // namespace glint
