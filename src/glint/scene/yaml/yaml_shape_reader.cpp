@@ -45,18 +45,17 @@ ShapeReader::Result ShapeReader::read(const YAML::Node& node, const Field& field
 
     Shape shape = type.parse(map, *this);
     if (const MapEntry* transform = map.find("transform")) {
-        shape = place(std::move(shape), read_transform(source_, transform->value,
-                                                       map.field("transform")));
+        shape = place(std::move(shape),
+                      read_transform(source_, transform->value, map.field("transform")));
     }
     if (csg_depth(shape) > kMaxCsgDepth) {
-        throw source_.error_at(node, "CSG nests deeper than " + std::to_string(kMaxCsgDepth) +
-                                         " levels");
+        throw source_.error_at(node,
+                               "CSG nests deeper than " + std::to_string(kMaxCsgDepth) + " levels");
     }
     return {std::move(shape), std::move(map)};
 }
 
-std::shared_ptr<const Shape> ShapeReader::read_operand(const YAML::Node& node,
-                                                       const Field& field) {
+std::shared_ptr<const Shape> ShapeReader::read_operand(const YAML::Node& node, const Field& field) {
     Result r = read(node, field, {"material"});
     if (const MapEntry* material = r.map.find("material")) {
         throw source_.error_at(material->key_node, "a CSG operand has no material of its own",
