@@ -139,8 +139,8 @@ TEST(Csg, OnlyClosedShapesAreSolids) {
     EXPECT_TRUE(is_solid(Shape{Sphere{}}));
     EXPECT_TRUE(is_solid(Shape{Csg{CsgOperation::merge, kBall.shape, kCube.shape}}));
     EXPECT_FALSE(is_solid(Shape{Triangle{}}));
-    EXPECT_FALSE(is_solid(
-        Shape{Transformed{Transform{}, std::make_shared<const Shape>(Triangle{})}}));
+    EXPECT_FALSE(
+        is_solid(Shape{Transformed{Transform{}, std::make_shared<const Shape>(Triangle{})}}));
 }
 
 }  // namespace

@@ -18,8 +18,8 @@ Transformed place(Shape shape, Transform t) {
 }
 
 TEST(Transformed, TranslatedAndScaledSphereMatchesTheSphereItBecomes) {
-    const Transformed placed = place(Sphere{{0, 0, 0}, 1}, Transform::translate({1, 2, 3}) *
-                                                               Transform::scale(2, 2, 2));
+    const Transformed placed =
+        place(Sphere{{0, 0, 0}, 1}, Transform::translate({1, 2, 3}) * Transform::scale(2, 2, 2));
     const Sphere same{{1, 2, 3}, 2};
     RandomRays rays({1, 2, 3}, 3);
     for (int i = 0; i < 500; ++i) {

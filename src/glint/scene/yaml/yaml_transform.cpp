@@ -58,10 +58,10 @@ Transform read_transform(const YamlSource& source, const YAML::Node& node, const
         const Field step_field{field.what, field.key + "[" + std::to_string(i) + "]"};
         const auto entries = read_map(source, steps[i], step_field);
         if (entries.size() != 1) {
-            throw source.error_at(steps[i],
-                                  "a transform step is a map with one key, got " +
-                                      std::to_string(entries.size()),
-                                  {"steps are: " + join(kSteps)});
+            throw source.error_at(
+                steps[i],
+                "a transform step is a map with one key, got " + std::to_string(entries.size()),
+                {"steps are: " + join(kSteps)});
         }
         const MapEntry& step = entries.front();
         const Field value_field{"transform", step.key, step.key_node};
