@@ -5,6 +5,7 @@ set -euo pipefail
 packages=(
     build-essential cmake pkg-config clang-format
     libyaml-cpp-dev libtbb-dev libpng-dev zlib1g-dev libopenexr-dev libstb-dev
+    libassimp-dev
     libcli11-dev libgtest-dev libgmock-dev libbenchmark-dev
 )
 

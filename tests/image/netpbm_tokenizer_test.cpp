@@ -56,7 +56,7 @@ TEST(PpmTokenizer, ParseDecimal) {
     EXPECT_EQ(parse_decimal("11", 10), std::nullopt);
     EXPECT_EQ(parse_decimal("+1", 10), std::nullopt);
     EXPECT_EQ(parse_decimal("", 10), std::nullopt);
-    EXPECT_EQ(quote_token("a\x01z"), "\"a?z\"");
+    EXPECT_EQ(quote_header_token("a\x01z"), "\"a?z\"");
 }
 
 }  // namespace

@@ -1,5 +1,6 @@
 #include "glint/accel/make_aggregate.h"
 
+#include "glint/accel/bvh_aggregate.h"
 #include "glint/accel/primitive_list.h"
 
 namespace glint {
@@ -8,6 +9,8 @@ std::unique_ptr<Aggregate> make_aggregate(AccelKind kind, std::span<const Primit
     switch (kind) {
         case AccelKind::list:
             return std::make_unique<PrimitiveList>(primitives);
+        case AccelKind::bvh:
+            return std::make_unique<BvhAggregate>(primitives);
     }
     return nullptr;
 }

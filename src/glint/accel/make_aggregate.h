@@ -1,5 +1,5 @@
-// Chooses an acceleration structure by name. Only the brute-force list exists yet; the BVH,
-// grid and kd-tree join this table.
+// Chooses an acceleration structure: the brute-force list (the reference) or the BVH (the
+// default); the grid and the kd-tree will join them.
 #pragma once
 
 #include <memory>
@@ -9,7 +9,7 @@
 
 namespace glint {
 
-enum class AccelKind { list };
+enum class AccelKind { list, bvh };
 
 std::unique_ptr<Aggregate> make_aggregate(AccelKind kind, std::span<const Primitive> primitives);
 

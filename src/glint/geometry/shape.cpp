@@ -10,6 +10,16 @@ struct NameOf {
     std::string_view operator()(const Plane&) const { return "plane"; }
     std::string_view operator()(const Triangle&) const { return "triangle"; }
     std::string_view operator()(const Box&) const { return "box"; }
+    std::string_view operator()(const Disk&) const { return "disk"; }
+    std::string_view operator()(const Cylinder&) const { return "cylinder"; }
+    std::string_view operator()(const Cone&) const { return "cone"; }
+    std::string_view operator()(const Torus&) const { return "torus"; }
+    std::string_view operator()(const Quadric&) const { return "quadric"; }
+    std::string_view operator()(const Polygon&) const { return "polygon"; }
+    std::string_view operator()(const TriangleMesh&) const { return "mesh"; }
+    std::string_view operator()(const ImplicitSurface&) const { return "implicit"; }
+    std::string_view operator()(const JuliaSet&) const { return "julia"; }
+    std::string_view operator()(const Mandelbulb&) const { return "mandelbulb"; }
     std::string_view operator()(const Transformed&) const { return "transformed"; }
     std::string_view operator()(const Csg&) const { return "csg"; }
 };
@@ -19,6 +29,17 @@ struct IsSolid {
     bool operator()(const Plane&) const { return true; }  // a half-space
     bool operator()(const Triangle&) const { return false; }
     bool operator()(const Box&) const { return true; }
+    bool operator()(const Disk&) const { return false; }
+    bool operator()(const Cylinder& c) const { return c.capped; }
+    bool operator()(const Cone& c) const { return c.capped; }
+    bool operator()(const Torus&) const { return true; }
+    bool operator()(const Quadric&) const { return false; }  // clipped open by its box
+    bool operator()(const Polygon&) const { return false; }
+    bool operator()(const TriangleMesh& m) const { return m.data->closed; }
+    // Inside is f < 0; the region must enclose the surface for the solid to be closed.
+    bool operator()(const ImplicitSurface&) const { return true; }
+    bool operator()(const JuliaSet&) const { return true; }
+    bool operator()(const Mandelbulb&) const { return true; }
     bool operator()(const Transformed& t) const { return is_solid(*t.shape); }
     bool operator()(const Csg&) const { return true; }
 };

@@ -7,18 +7,30 @@
 #include <variant>
 
 #include "glint/geometry/box.h"
+#include "glint/geometry/cone.h"
 #include "glint/geometry/csg.h"
+#include "glint/geometry/cylinder.h"
+#include "glint/geometry/disk.h"
+#include "glint/geometry/implicit_surface.h"
+#include "glint/geometry/julia_set.h"
+#include "glint/geometry/mandelbulb.h"
 #include "glint/geometry/plane.h"
+#include "glint/geometry/polygon.h"
+#include "glint/geometry/quadric.h"
 #include "glint/geometry/sphere.h"
 #include "glint/geometry/surface_point.h"
+#include "glint/geometry/torus.h"
 #include "glint/geometry/transformed.h"
 #include "glint/geometry/triangle.h"
+#include "glint/geometry/triangle_mesh.h"
 
 namespace glint {
 
 // A struct rather than an alias so that it can be forward-declared by shapes that hold other
 // shapes (CSG, transforms). It is the variant: std::visit, std::get and friends apply.
-struct Shape : std::variant<Sphere, Plane, Triangle, Box, Transformed, Csg> {
+struct Shape
+    : std::variant<Sphere, Plane, Triangle, Box, Disk, Cylinder, Cone, Torus, Quadric, Polygon,
+                   TriangleMesh, ImplicitSurface, JuliaSet, Mandelbulb, Transformed, Csg> {
     using variant::variant;
 };
 

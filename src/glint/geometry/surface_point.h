@@ -28,6 +28,9 @@ struct SurfacePoint {
     Normal3 shading_normal;
     // Texture coordinates; their range and meaning depend on the shape.
     Point2 uv;
+    // How far p may lie off the true surface, for shapes found iteratively (implicit surfaces,
+    // fractals); 0 for the analytic ones. Secondary rays start at least this far off.
+    float error = 0;
 };
 
 }  // namespace glint

@@ -37,7 +37,7 @@ std::int64_t NetpbmTokenizer::next_positive(const std::string& field, std::int64
     const auto value = parse_decimal(token, max);
     if (!value || *value == 0) {
         throw malformed(field + " must be an integer from 1 to " + std::to_string(max) + ", got " +
-                        quote_token(token));
+                        quote_header_token(token));
     }
     return *value;
 }
@@ -62,7 +62,7 @@ std::optional<std::int64_t> parse_decimal(std::string_view token, std::int64_t m
     return value;
 }
 
-std::string quote_token(std::string_view token) {
+std::string quote_header_token(std::string_view token) {
     constexpr std::size_t kMaxShown = 16;
     std::string shown(token.substr(0, kMaxShown));
     for (char& c : shown) {

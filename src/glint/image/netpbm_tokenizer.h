@@ -48,6 +48,6 @@ private:
 std::optional<std::int64_t> parse_decimal(std::string_view token, std::int64_t max);
 
 // A token quoted for an error message, shortened if long: "abc" or "xxxxxxxxxxxxxxxx...".
-std::string quote_token(std::string_view token);
+std::string quote_header_token(std::string_view token);
 
 }  // namespace glint

@@ -60,7 +60,8 @@ Image read_pfm(const std::filesystem::path& path) {
     NetpbmTokenizer tokens(bytes, path, "PFM", /*allow_comments=*/false);
     const std::string_view magic = tokens.next_token();
     if (magic != "PF" && magic != "Pf") {
-        throw tokens.malformed("bad magic number " + quote_token(magic) + "; expected PF or Pf");
+        throw tokens.malformed("bad magic number " + quote_header_token(magic) +
+                               "; expected PF or Pf");
     }
     const int channels = magic == "PF" ? 3 : 1;
     const std::int64_t width = tokens.next_positive("width", kMaxImageDimension);
@@ -75,7 +76,7 @@ Image read_pfm(const std::filesystem::path& path) {
         !std::isfinite(scale) || scale == 0) {
         throw tokens.malformed(
             "scale must be a non-zero number (negative for little-endian), got " +
-            quote_token(scale_token));
+            quote_header_token(scale_token));
     }
     const bool little_endian = scale < 0;
 

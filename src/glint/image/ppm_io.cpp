@@ -42,7 +42,7 @@ std::vector<std::uint16_t> read_samples(const std::vector<unsigned char>& bytes,
             }
             const auto value = parse_decimal(token, maxval);
             if (!value) {
-                throw tokens.malformed("bad sample " + quote_token(token) + " at pixel " +
+                throw tokens.malformed("bad sample " + quote_header_token(token) + " at pixel " +
                                        pixel_of_sample(i, width) + " (maxval is " +
                                        std::to_string(maxval) + ")");
             }
@@ -106,7 +106,8 @@ Image read_ppm(const std::filesystem::path& path) {
     NetpbmTokenizer tokens(bytes, path, "PPM", /*allow_comments=*/true);
     const std::string_view magic = tokens.next_token();
     if (magic != "P3" && magic != "P6") {
-        throw tokens.malformed("bad magic number " + quote_token(magic) + "; expected P3 or P6");
+        throw tokens.malformed("bad magic number " + quote_header_token(magic) +
+                               "; expected P3 or P6");
     }
     const bool ascii = magic == "P3";
     const std::int64_t width = tokens.next_positive("width", kMaxImageDimension);

@@ -32,7 +32,7 @@ Color WhittedIntegrator::trace(const Ray& ray, int depth, float weight, RayStats
         const LightSample ls = sample_light(light, sp.p);
         // A light behind the surface adds nothing, so it needs no feeler.
         if (dot(n, ls.to_light) <= 0) continue;
-        const float shadow = shadow_factor(sp.p, ng, ls.to_light, ls.distance, stats);
+        const float shadow = shadow_factor(sp, ng, ls.to_light, ls.distance, stats);
         if (shadow == 0) continue;
         color += shadow * light_term(m, surface_color, n, ls.to_light, to_viewer, ls.intensity);
     }
@@ -52,22 +52,22 @@ Color WhittedIntegrator::trace(const Ray& ray, int depth, float weight, RayStats
     }
     if (kr > 0 && weight * kr >= settings.min_weight) {
         ++stats.reflected;
-        const Ray r = world_.spawn_ray(sp.p, ng, normalize(reflect(ray.direction, n)));
+        const Ray r = world_.spawn_ray(sp.p, ng, normalize(reflect(ray.direction, n)), sp.error);
         color += kr * trace(r, depth + 1, weight * kr, stats);
     }
     if (kt > 0 && weight * kt >= settings.min_weight) {
         ++stats.refracted;
-        const Ray t = world_.spawn_ray(sp.p, ng, refracted);
+        const Ray t = world_.spawn_ray(sp.p, ng, refracted, sp.error);
         color += kt * trace(t, depth + 1, weight * kt, stats);
     }
     return color;
 }
 
-float WhittedIntegrator::shadow_factor(Point3 p, Normal3 n, Vector3 to_light, float light_distance,
-                                       RayStats& stats) const {
-    Ray feeler = world_.spawn_ray(p, n, to_light);
+float WhittedIntegrator::shadow_factor(const SurfacePoint& sp, Normal3 n, Vector3 to_light,
+                                       float light_distance, RayStats& stats) const {
+    Ray feeler = world_.spawn_ray(sp.p, n, to_light, sp.error);
     // The offset origin is slightly nearer to or farther from the light; stop just short of it.
-    float remaining = light_distance - world_.ray_epsilon(p);
+    float remaining = light_distance - distance(sp.p, feeler.origin);
     if (!world_.settings().transparent_shadows) {
         ++stats.shadow;
         return world_.occluded(feeler, {0, remaining}, kVisibleToShadowRays) ? 0.0f : 1.0f;
@@ -80,8 +80,8 @@ float WhittedIntegrator::shadow_factor(Point3 p, Normal3 n, Vector3 to_light, fl
         factor *= world_.material_of(hit->primitive).transmit;
         if (factor == 0) return 0;
         // Continue from just beyond the surface crossed.
-        const SurfacePoint sp = world_.surface_at(feeler, *hit);
-        const Ray next = world_.spawn_ray(sp.p, sp.normal, to_light);
+        const SurfacePoint crossed = world_.surface_at(feeler, *hit);
+        const Ray next = world_.spawn_ray(crossed.p, crossed.normal, to_light, crossed.error);
         remaining -= distance(feeler.origin, next.origin);
         feeler = next;
     }

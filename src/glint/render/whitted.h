@@ -5,6 +5,7 @@
 //       + kr I(reflected) + kt I(refracted)
 #pragma once
 
+#include "glint/geometry/surface_point.h"
 #include "glint/math/color.h"
 #include "glint/math/ray.h"
 #include "glint/render/ray_stats.h"
@@ -23,10 +24,11 @@ public:
     // whose contribution to the pixel is scaled by weight (the product of kr and kt above it).
     Color trace(const Ray& ray, int depth, float weight, RayStats& stats) const;
 
-    // The fraction of a light's intensity that reaches p along the unit direction to_light
-    // over light_distance: 0 or 1, or with transparent shadows the product of the
-    // transmit weights of the surfaces crossed.
-    float shadow_factor(Point3 p, Normal3 n, Vector3 to_light, float light_distance,
+    // The fraction of a light's intensity that reaches the surface point along the unit
+    // direction to_light over light_distance: 0 or 1, or with transparent shadows the product
+    // of the transmit weights of the surfaces crossed. n is the geometric normal on the side
+    // of the light.
+    float shadow_factor(const SurfacePoint& sp, Normal3 n, Vector3 to_light, float light_distance,
                         RayStats& stats) const;
 
 private:

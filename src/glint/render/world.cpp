@@ -44,8 +44,9 @@ float World::ray_epsilon(Point3 p) const {
     return kRelativeRayEpsilon * std::max(scene_scale_, max_abs_coordinate(p));
 }
 
-Ray World::spawn_ray(Point3 p, Normal3 n, Vector3 d) const {
-    const float offset = dot(n, d) >= 0 ? ray_epsilon(p) : -ray_epsilon(p);
+Ray World::spawn_ray(Point3 p, Normal3 n, Vector3 d, float error) const {
+    const float distance = std::max(ray_epsilon(p), 2 * error);
+    const float offset = dot(n, d) >= 0 ? distance : -distance;
     return {p + to_vector(n) * offset, d};
 }
 

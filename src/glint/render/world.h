@@ -18,7 +18,7 @@ namespace glint {
 class World {
 public:
     // The scene must be valid as the loaders guarantee (positive radii, known materials, ...).
-    explicit World(const Scene& scene, AccelKind accel = AccelKind::list);
+    explicit World(const Scene& scene, AccelKind accel = AccelKind::bvh);
 
     const RenderSettings& settings() const { return settings_; }
     const Camera& camera() const { return camera_; }
@@ -42,9 +42,10 @@ public:
     // larger of the scene's extent and p's own magnitude, since float rounding error grows with
     // the magnitude of the coordinates involved.
     float ray_epsilon(Point3 p) const;
-    // A ray leaving the surface point in the unit direction d, its origin moved ray_epsilon off
-    // the surface to the side d goes (given by the geometric normal n).
-    Ray spawn_ray(Point3 p, Normal3 n, Vector3 d) const;
+    // A ray leaving the surface point p in the unit direction d, its origin moved off the
+    // surface to the side d goes (given by the geometric normal n): by ray_epsilon(p), or by
+    // twice the point's own error when that is larger.
+    Ray spawn_ray(Point3 p, Normal3 n, Vector3 d, float error = 0) const;
 
 private:
     RenderSettings settings_;

@@ -1,11 +1,12 @@
-// Colour sources for materials: a constant colour or a checker pattern, either painted on the
-// surface's uv coordinates (2D) or carved out of space (3D, a solid texture).
+// Colour sources for materials: a constant colour, a checker pattern, either painted on the
+// surface's uv coordinates (2D) or carved out of space (3D, a solid texture), or an image.
 #pragma once
 
 #include <variant>
 
 #include "glint/geometry/surface_point.h"
 #include "glint/math/color.h"
+#include "glint/shading/image_texture.h"
 
 namespace glint {
 
@@ -18,7 +19,7 @@ struct CheckerTexture {
     CheckerSpace space = CheckerSpace::solid;
 };
 
-using Texture = std::variant<Color, CheckerTexture>;
+using Texture = std::variant<Color, CheckerTexture, ImageTexture>;
 
 Color evaluate(const Texture& texture, const SurfacePoint& sp);
 

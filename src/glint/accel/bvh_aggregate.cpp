@@ -1,0 +1,51 @@
+#include "glint/accel/bvh_aggregate.h"
+
+namespace glint {
+
+BvhAggregate::BvhAggregate(std::span<const Primitive> primitives) : primitives_(primitives) {
+    std::vector<Bounds3> bounds;
+    for (std::uint32_t i = 0; i < primitives.size(); ++i) {
+        const Bounds3 b = glint::bounds(primitives[i].shape);
+        if (b.is_finite()) {
+            bounded_.push_back(i);
+            bounds.push_back(b);
+        } else {
+            unbounded_.push_back(i);
+        }
+    }
+    bvh_ = build_bvh(bounds);
+}
+
+std::optional<Hit> BvhAggregate::intersect(const Ray& ray, Interval t_range,
+                                           std::uint32_t ray_mask) const {
+    std::optional<Hit> closest;
+    const auto try_primitive = [&](std::uint32_t index, Interval range) -> std::optional<float> {
+        const Primitive& p = primitives_[index];
+        if ((p.visibility & ray_mask) == 0) return std::nullopt;
+        const auto hit = glint::intersect(p.shape, ray, range);
+        if (!hit) return std::nullopt;
+        closest = Hit{*hit, index};
+        return hit->t;
+    };
+    for (const std::uint32_t index : unbounded_) {
+        if (const auto t = try_primitive(index, t_range)) t_range.max = *t;
+    }
+    bvh_closest_hit(bvh_, ray, t_range, [&](std::uint32_t i, Interval range) {
+        return try_primitive(bounded_[i], range);
+    });
+    return closest;
+}
+
+bool BvhAggregate::occluded(const Ray& ray, Interval t_range, std::uint32_t ray_mask) const {
+    const auto hits = [&](std::uint32_t index, Interval range) {
+        const Primitive& p = primitives_[index];
+        return (p.visibility & ray_mask) != 0 && glint::intersect(p.shape, ray, range).has_value();
+    };
+    for (const std::uint32_t index : unbounded_) {
+        if (hits(index, t_range)) return true;
+    }
+    return bvh_any_hit(bvh_, ray, t_range,
+                       [&](std::uint32_t i, Interval range) { return hits(bounded_[i], range); });
+}
+
+}  // namespace glint

@@ -1,0 +1,30 @@
+// The scene-level bounding volume hierarchy: a BVH over the bounded primitives, and the
+// unbounded ones (planes) tested one by one beside it.
+#pragma once
+
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "glint/accel/aggregate.h"
+#include "glint/geometry/bvh.h"
+
+namespace glint {
+
+class BvhAggregate final : public Aggregate {
+public:
+    explicit BvhAggregate(std::span<const Primitive> primitives);
+
+    Bounds3 bounds() const override { return bvh_.bounds(); }
+    std::optional<Hit> intersect(const Ray& ray, Interval t_range,
+                                 std::uint32_t ray_mask) const override;
+    bool occluded(const Ray& ray, Interval t_range, std::uint32_t ray_mask) const override;
+
+private:
+    std::span<const Primitive> primitives_;
+    Bvh bvh_;                              // over bounded_
+    std::vector<std::uint32_t> bounded_;   // BVH primitive index -> primitive
+    std::vector<std::uint32_t> unbounded_;  // primitives with infinite bounds
+};
+
+}  // namespace glint

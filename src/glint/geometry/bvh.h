@@ -1,0 +1,156 @@
+// A bounding volume hierarchy over primitive bounds: binned-SAH build into a flat array of 32-byte
+// nodes, and allocation-free traversal templates (closest hit and any hit) that call back per
+// primitive. Meshes use it over triangles; the scene-level structure will use it over objects.
+#pragma once
+
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <optional>
+#include <span>
+#include <vector>
+
+#include "glint/math/bounds.h"
+#include "glint/math/interval.h"
+#include "glint/math/ray.h"
+
+namespace glint {
+
+// Deeper trees are never built, so a traversal stack of this many entries cannot overflow.
+inline constexpr int kBvhMaxDepth = 64;
+
+struct BvhNode {
+    Bounds3 bounds;
+    // Interior: index of the second child (the first is the next node). Leaf: index of the first
+    // of its `count` entries in Bvh::primitive_indices.
+    std::uint32_t offset = 0;
+    std::uint16_t count = 0;  // primitives in a leaf; 0 for an interior node
+    std::uint8_t axis = 0;    // interior: the axis the children were split along
+    std::uint8_t padding = 0;
+
+    bool is_leaf() const { return count > 0; }
+};
+static_assert(sizeof(BvhNode) == 32, "two nodes to a cache line");
+
+struct BvhBuildOptions {
+    int max_leaf_size = 4;  // in [1, 255]; leaves never hold more
+    int bins = 16;          // SAH candidates on the longest centroid axis, in [2, 64]
+    // SAH cost of visiting a node relative to intersecting one primitive (pbrt-v4 uses 1/2).
+    float traversal_cost = 0.5f;
+};
+
+struct Bvh {
+    std::vector<BvhNode> nodes;  // nodes[0] is the root; empty for no primitives
+    // Leaves refer to ranges of this permutation of the primitives' indices.
+    std::vector<std::uint32_t> primitive_indices;
+
+    Bounds3 bounds() const { return nodes.empty() ? Bounds3{} : nodes[0].bounds; }
+};
+
+// Builds over the primitives' bounds (primitive i has bounds[i]). Binned SAH (Wald 2007, "On fast
+// Construction of SAH-based Bounding Volume Hierarchies"), 16 bins along the longest axis of the
+// centroids' extent. Where SAH cannot split (all centroids equal) or the depth budget runs low,
+// the range is halved by count instead, so every leaf holds at most max_leaf_size primitives and
+// depth stays below kBvhMaxDepth for up to 2^32 primitives. Bounds should be finite; empty or
+// non-finite boxes are kept (they are never hit by the slab test) but placed arbitrarily.
+Bvh build_bvh(std::span<const Bounds3> bounds, const BvhBuildOptions& options = {});
+
+// A ray prepared for slab tests against many boxes: the reciprocal direction is computed once.
+struct BvhRay {
+    Point3 origin;
+    Vector3 inv_direction;
+    // Reciprocal < 0: the ray meets the max side before the min side. Taken from the reciprocal,
+    // not the direction, so that a -0 component (1 / -0 = -inf) counts as negative.
+    std::array<bool, 3> negative;
+
+    explicit BvhRay(const Ray& ray)
+        : origin(ray.origin),
+          inv_direction{1 / ray.direction.x, 1 / ray.direction.y, 1 / ray.direction.z},
+          negative{inv_direction.x < 0, inv_direction.y < 0, inv_direction.z < 0} {}
+};
+
+// Whether the ray enters the box within [t_min, t_max]. A zero direction component gives an
+// infinite reciprocal; a NaN (origin on the slab plane, ray parallel to it) leaves the bound as it
+// was, so boundaries count as inside. t_far is widened by 1 + 2 gamma(3) (pbrt-v4, 6.1.2) so that
+// rounding never culls a box whose contents the exact test would hit.
+inline bool slab_hit(const Bounds3& b, const BvhRay& r, float t_min, float t_max) {
+    constexpr float kWiden = 1 + 2 * (3 * 5.96046448e-8f) / (1 - 3 * 5.96046448e-8f);
+    for (int axis = 0; axis < 3; ++axis) {
+        const float lo = r.negative[axis] ? b.max[axis] : b.min[axis];
+        const float hi = r.negative[axis] ? b.min[axis] : b.max[axis];
+        const float t_near = (lo - r.origin[axis]) * r.inv_direction[axis];
+        const float t_far = (hi - r.origin[axis]) * r.inv_direction[axis] * kWiden;
+        t_min = t_near > t_min ? t_near : t_min;
+        t_max = t_far < t_max ? t_far : t_max;
+    }
+    return t_min <= t_max;
+}
+
+// Closest hit. visit(primitive_index, Interval) returns the t of that primitive's nearest hit in
+// the interval, or nothing; the interval's max then shrinks to it, so later calls only report
+// nearer hits. Children are visited nearer-first (by the split axis and the direction's sign).
+// Returns the nearest t, or nothing. Allocates nothing.
+template <typename Visit>
+std::optional<float> bvh_closest_hit(const Bvh& bvh, const Ray& ray, Interval t_range,
+                                     Visit&& visit) {
+    if (bvh.nodes.empty()) return std::nullopt;
+    const BvhRay r(ray);
+    std::array<std::uint32_t, kBvhMaxDepth> stack;
+    int top = 0;
+    std::uint32_t node_index = 0;
+    std::optional<float> nearest;
+    for (;;) {
+        const BvhNode& node = bvh.nodes[node_index];
+        if (slab_hit(node.bounds, r, t_range.min, t_range.max)) {
+            if (node.is_leaf()) {
+                for (std::uint32_t i = 0; i < node.count; ++i) {
+                    const std::uint32_t primitive = bvh.primitive_indices[node.offset + i];
+                    if (const std::optional<float> t = visit(primitive, t_range)) {
+                        t_range.max = *t;
+                        nearest = t;
+                    }
+                }
+            } else if (r.negative[node.axis]) {
+                stack[top++] = node_index + 1;  // the second child lies nearer
+                node_index = node.offset;
+                continue;
+            } else {
+                stack[top++] = node.offset;
+                node_index = node_index + 1;
+                continue;
+            }
+        }
+        if (top == 0) return nearest;
+        node_index = stack[--top];
+    }
+}
+
+// Any hit, for shadow feelers. visit(primitive_index, Interval) returns whether that primitive
+// is hit within the interval; traversal stops at the first that is. Allocates nothing.
+template <typename Visit>
+bool bvh_any_hit(const Bvh& bvh, const Ray& ray, Interval t_range, Visit&& visit) {
+    if (bvh.nodes.empty()) return false;
+    const BvhRay r(ray);
+    std::array<std::uint32_t, kBvhMaxDepth> stack;
+    int top = 0;
+    std::uint32_t node_index = 0;
+    for (;;) {
+        const BvhNode& node = bvh.nodes[node_index];
+        if (slab_hit(node.bounds, r, t_range.min, t_range.max)) {
+            if (node.is_leaf()) {
+                for (std::uint32_t i = 0; i < node.count; ++i) {
+                    if (visit(bvh.primitive_indices[node.offset + i], t_range)) return true;
+                }
+            } else {
+                const bool second_first = r.negative[node.axis];
+                stack[top++] = second_first ? node_index + 1 : node.offset;
+                node_index = second_first ? node.offset : node_index + 1;
+                continue;
+            }
+        }
+        if (top == 0) return false;
+        node_index = stack[--top];
+    }
+}
+
+}  // namespace glint

@@ -1,0 +1,212 @@
+// Building meshes (validation, degenerate triangles, BVH) and intersecting them.
+#include "glint/geometry/triangle_mesh.h"
+
+#include <cmath>
+#include <map>
+#include <string>
+
+namespace glint {
+
+namespace {
+
+bool in_range(float c) { return std::isfinite(c) && std::abs(c) <= kMaxMeshCoordinate; }
+
+std::string coordinate_error(const char* what, std::size_t index, float x, float y, float z) {
+    return std::string(what) + " " + std::to_string(index) +
+           " has a coordinate that is not finite " + "or beyond +-1e16: (" + std::to_string(x) +
+           ", " + std::to_string(y) + ", " + std::to_string(z) + ")";
+}
+
+// The unit vector along v, computed after scaling by the largest component so that tiny or huge
+// cross products neither underflow nor overflow. Zero stays zero.
+Vector3 robust_normalize(Vector3 v) {
+    const float m = max_component(abs(v));
+    if (!(m > 0) || !std::isfinite(m)) return {};
+    return normalize(v / m);
+}
+
+Vector3 face_cross(const MeshData& mesh, std::uint32_t index) {
+    const auto& t = mesh.triangles[index];
+    const Point3 a = mesh.positions[t[0]], b = mesh.positions[t[1]], c = mesh.positions[t[2]];
+    return cross(b - a, c - a);
+}
+
+}  // namespace
+
+MeshBuild build_mesh(MeshData arrays) {
+    MeshBuild result;
+    const std::size_t n = arrays.positions.size();
+    if (n > kMaxMeshElements || arrays.triangles.size() > kMaxMeshElements) {
+        result.error = "mesh has more than 2^31 vertices or triangles";
+        return result;
+    }
+    if (!arrays.normals.empty() && arrays.normals.size() != n) {
+        result.error = "mesh has " + std::to_string(arrays.normals.size()) + " normals for " +
+                       std::to_string(n) + " vertices";
+        return result;
+    }
+    if (!arrays.uvs.empty() && arrays.uvs.size() != n) {
+        result.error = "mesh has " + std::to_string(arrays.uvs.size()) + " uvs for " +
+                       std::to_string(n) + " vertices";
+        return result;
+    }
+    for (std::size_t i = 0; i < n; ++i) {
+        const Point3 p = arrays.positions[i];
+        if (!in_range(p.x) || !in_range(p.y) || !in_range(p.z)) {
+            result.error = coordinate_error("vertex", i, p.x, p.y, p.z);
+            return result;
+        }
+    }
+    for (std::size_t i = 0; i < arrays.normals.size(); ++i) {
+        Normal3& m = arrays.normals[i];
+        if (!std::isfinite(m.x) || !std::isfinite(m.y) || !std::isfinite(m.z)) {
+            result.error = coordinate_error("normal", i, m.x, m.y, m.z);
+            return result;
+        }
+        // A zero normal stays zero; surface_at then falls back to the geometric normal.
+        m = Normal3(robust_normalize(to_vector(m)));
+    }
+    for (std::size_t i = 0; i < arrays.uvs.size(); ++i) {
+        const Point2 uv = arrays.uvs[i];
+        if (!std::isfinite(uv.x) || !std::isfinite(uv.y)) {
+            result.error = coordinate_error("uv", i, uv.x, uv.y, 0);
+            return result;
+        }
+    }
+    std::size_t kept = 0;
+    for (std::size_t i = 0; i < arrays.triangles.size(); ++i) {
+        const auto t = arrays.triangles[i];
+        for (const std::uint32_t v : t) {
+            if (v >= n) {
+                result.error = "triangle " + std::to_string(i) + " uses vertex " +
+                               std::to_string(v) + " but there are " + std::to_string(n) +
+                               " vertices";
+                return result;
+            }
+        }
+        arrays.triangles[kept] = t;
+        // Zero area (repeated index, collinear or coincident corners): no ray can hit it and it
+        // has no normal, so it is dropped rather than carried into the BVH.
+        const Vector3 c = face_cross(arrays, std::uint32_t(kept));
+        if (c.x == 0 && c.y == 0 && c.z == 0) {
+            ++result.degenerate_dropped;
+        } else {
+            ++kept;
+        }
+    }
+    arrays.triangles.resize(kept);
+    if (kept == 0) {
+        result.error = result.degenerate_dropped == 0
+                           ? "mesh has no triangles"
+                           : "mesh has no triangles left after dropping " +
+                                 std::to_string(result.degenerate_dropped) + " degenerate ones";
+        return result;
+    }
+
+    std::vector<Bounds3> bounds(kept);
+    for (std::size_t i = 0; i < kept; ++i) {
+        const auto& t = arrays.triangles[i];
+        bounds[i] = merge(Bounds3::of(arrays.positions[t[0]], arrays.positions[t[1]]),
+                          arrays.positions[t[2]]);
+    }
+    arrays.bvh = build_bvh(bounds);
+    arrays.closed = is_closed_surface(arrays);
+    result.mesh = std::make_shared<const MeshData>(std::move(arrays));
+    return result;
+}
+
+bool is_closed_surface(const MeshData& mesh) {
+    // Vertices that share a position are one vertex: files split them for normals and uvs.
+    std::map<std::array<float, 3>, std::uint32_t> id_of;
+    std::vector<std::uint32_t> id(mesh.positions.size());
+    for (std::size_t i = 0; i < mesh.positions.size(); ++i) {
+        const Point3 p = mesh.positions[i];
+        id[i] = id_of.try_emplace({p.x, p.y, p.z}, std::uint32_t(id_of.size())).first->second;
+    }
+    // Closed and oriented: each directed edge occurs once, and so does its reverse.
+    std::vector<std::pair<std::uint32_t, std::uint32_t>> edges;
+    edges.reserve(3 * mesh.triangles.size());
+    for (const auto& t : mesh.triangles)
+        for (int k = 0; k < 3; ++k) edges.emplace_back(id[t[k]], id[t[(k + 1) % 3]]);
+    std::sort(edges.begin(), edges.end());
+    if (std::adjacent_find(edges.begin(), edges.end()) != edges.end()) return false;
+    for (const auto& [a, b] : edges)
+        if (!std::binary_search(edges.begin(), edges.end(), std::pair{b, a})) return false;
+    return true;
+}
+
+std::optional<ShapeHit> intersect_triangle(const MeshData& mesh, std::uint32_t index,
+                                           const Ray& ray, Interval t_range) {
+    const auto& tri = mesh.triangles[index];
+    const Point3 v0 = mesh.positions[tri[0]];
+    const Vector3 e1 = mesh.positions[tri[1]] - v0;
+    const Vector3 e2 = mesh.positions[tri[2]] - v0;
+    const Vector3 p = cross(ray.direction, e2);
+    const float det = dot(e1, p);
+    if (det == 0 || !std::isfinite(det)) return std::nullopt;  // parallel to the plane
+    const float inv_det = 1 / det;
+    const Vector3 s = ray.origin - v0;
+    const float b1 = dot(s, p) * inv_det;
+    if (b1 < 0 || b1 > 1) return std::nullopt;
+    const Vector3 q = cross(s, e1);
+    const float b2 = dot(ray.direction, q) * inv_det;
+    if (b2 < 0 || b1 + b2 > 1) return std::nullopt;
+    const float t = dot(e2, q) * inv_det;
+    if (!t_range.contains(t)) return std::nullopt;
+    return ShapeHit{t, b1, b2, index};
+}
+
+std::optional<ShapeHit> TriangleMesh::intersect(const Ray& ray, Interval t_range) const {
+    const MeshData& mesh = *data;
+    ShapeHit nearest;
+    const auto t = bvh_closest_hit(
+        mesh.bvh, ray, t_range, [&](std::uint32_t index, Interval range) -> std::optional<float> {
+            const auto hit = intersect_triangle(mesh, index, ray, range);
+            if (!hit) return std::nullopt;
+            nearest = *hit;
+            return hit->t;
+        });
+    if (!t) return std::nullopt;
+    return nearest;
+}
+
+bool TriangleMesh::occluded(const Ray& ray, Interval t_range) const {
+    const MeshData& mesh = *data;
+    return bvh_any_hit(mesh.bvh, ray, t_range, [&](std::uint32_t index, Interval range) {
+        return intersect_triangle(mesh, index, ray, range).has_value();
+    });
+}
+
+SurfacePoint TriangleMesh::surface_at(const Ray&, const ShapeHit& hit) const {
+    const MeshData& mesh = *data;
+    const auto& tri = mesh.triangles[hit.part];
+    const float b0 = 1 - hit.u - hit.v;
+    const Point3 p0 = mesh.positions[tri[0]], p1 = mesh.positions[tri[1]],
+                 p2 = mesh.positions[tri[2]];
+    SurfacePoint sp;
+    // The barycentric point lies in the triangle's plane, unlike origin + t * direction.
+    sp.p = to_point(to_vector(p0) * b0 + to_vector(p1) * hit.u + to_vector(p2) * hit.v);
+    sp.normal = Normal3(robust_normalize(cross(p1 - p0, p2 - p0)));
+    sp.shading_normal = sp.normal;
+    if (!mesh.normals.empty()) {
+        const Vector3 n = to_vector(mesh.normals[tri[0]]) * b0 +
+                          to_vector(mesh.normals[tri[1]]) * hit.u +
+                          to_vector(mesh.normals[tri[2]]) * hit.v;
+        const Vector3 unit = robust_normalize(n);
+        const float side = dot(sp.normal, unit);
+        // Normals that disagree with the winding are turned over; one in the surface's plane (or
+        // interpolated to zero) says nothing, and the geometric normal stands in.
+        if (side != 0 && std::isfinite(side)) {
+            sp.shading_normal = Normal3(side > 0 ? unit : -unit);
+        }
+    }
+    if (!mesh.uvs.empty()) {
+        const Point2 a = mesh.uvs[tri[0]], b = mesh.uvs[tri[1]], c = mesh.uvs[tri[2]];
+        sp.uv = {b0 * a.x + hit.u * b.x + hit.v * c.x, b0 * a.y + hit.u * b.y + hit.v * c.y};
+    } else {
+        sp.uv = {hit.u, hit.v};
+    }
+    return sp;
+}
+
+}  // namespace glint
