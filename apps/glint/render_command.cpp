@@ -114,6 +114,8 @@ int run_render(const RenderCommand& command) {
                              std::filesystem::path(output).extension().string() +
                              "\"; image formats are: .exr, .pfm, .png, .ppm"};
         Scene scene = load_scene(command.scene);
+        for (const std::string& warning : scene.warnings)
+            std::fprintf(stderr, "glint: warning: %s\n", warning.c_str());
         apply_overrides(command, scene.settings);
         const World world(scene);
 

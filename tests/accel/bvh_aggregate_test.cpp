@@ -48,8 +48,8 @@ TEST(BvhAggregate, AgreesWithBruteForceOnRandomAndAxisParallelRays) {
         if (i % 10 == 0) d = {0, 0, u(rng) < 0 ? -1.0f : 1.0f};  // axis-parallel
         if (length_squared(d) < 1e-4f) continue;
         const Ray ray{{u(rng) * 12, u(rng) * 12, u(rng) * 12}, normalize(d)};
-        for (const std::uint32_t mask : {std::uint32_t(kVisibleToCameraRays),
-                                         std::uint32_t(kVisibleToShadowRays)}) {
+        for (const std::uint32_t mask :
+             {std::uint32_t(kVisibleToCameraRays), std::uint32_t(kVisibleToShadowRays)}) {
             const auto a = bvh.intersect(ray, {}, mask);
             const auto b = list.intersect(ray, {}, mask);
             ASSERT_EQ(a.has_value(), b.has_value()) << "ray " << i;

@@ -64,7 +64,9 @@ INSTANTIATE_TEST_SUITE_P(Scenes, GoldenImage,
                                            "features/textures.yaml", "features/attenuation.yaml",
                                            "features/orthographic.yaml",
                                            "features/supersampling.yaml", "features/csg.yaml",
-                                           "features/instancing.yaml"),
+                                           "features/quadrics.yaml", "features/polygons.yaml",
+                                           "features/implicit.yaml", "features/fractals.yaml",
+                                           "features/meshes.yaml", "features/instancing.yaml"),
                          [](const ::testing::TestParamInfo<std::string>& param) {
                              std::string id = fs::path(param.param).stem().string();
                              for (char& c : id)

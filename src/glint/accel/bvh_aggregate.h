@@ -22,8 +22,8 @@ public:
 
 private:
     std::span<const Primitive> primitives_;
-    Bvh bvh_;                              // over bounded_
-    std::vector<std::uint32_t> bounded_;   // BVH primitive index -> primitive
+    Bvh bvh_;                               // over bounded_
+    std::vector<std::uint32_t> bounded_;    // BVH primitive index -> primitive
     std::vector<std::uint32_t> unbounded_;  // primitives with infinite bounds
 };
 

@@ -7,9 +7,9 @@
 #include <array>
 #include <cmath>
 
+#include "glint/geometry/number_text.h"
 #include "glint/geometry/spherical_uv.h"
 #include "glint/math/safeguarded_newton.h"
-#include "glint/geometry/number_text.h"
 
 namespace glint {
 

@@ -5,9 +5,9 @@
 #include <cmath>
 #include <limits>
 
+#include "glint/geometry/number_text.h"
 #include "glint/geometry/sphere_tracing.h"
 #include "glint/geometry/spherical_uv.h"
-#include "glint/geometry/number_text.h"
 
 namespace glint {
 

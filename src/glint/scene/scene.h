@@ -3,10 +3,12 @@
 #pragma once
 
 #include <cstdint>
+#include <string>
 #include <vector>
 
 #include "glint/camera/camera_spec.h"
 #include "glint/geometry/shape.h"
+#include "glint/image/image_limits.h"  // kMaxImagePixels, shared with image files
 #include "glint/math/color.h"
 #include "glint/sampling/pixel_sampler.h"
 #include "glint/shading/light.h"
@@ -41,11 +43,12 @@ struct Scene {
     std::vector<Material> materials;
     std::vector<Light> lights;
     std::vector<SceneObject> objects;
+    // What the loader accepted but the user should know ("3 degenerate triangles dropped").
+    std::vector<std::string> warnings;
 };
 
 // Limits checked before memory is taken, so that an absurd scene is an error, not an outage.
 inline constexpr int kMaxImageSide = 65536;
-inline constexpr std::int64_t kMaxImagePixels = std::int64_t(1) << 28;
 inline constexpr int kMaxSamplesPerPixel = 65536;
 inline constexpr int kMaxDepth = 64;
 

@@ -1,27 +1,52 @@
-// Reading materials and checker textures, and resolving objects' material references.
+// Reading materials and their textures (checker, image), and resolving objects' material
+// references.
 #include "glint/scene/yaml/yaml_materials.h"
 
 #include <algorithm>
+#include <filesystem>
 #include <limits>
+#include <memory>
 
+#include "glint/image/image_error.h"
+#include "glint/image/texture_file.h"
 #include "glint/scene/suggest.h"
 
 namespace glint {
 
 namespace {
-constexpr std::string_view kTextureTypes[] = {"checker"};
+constexpr std::string_view kTextureTypes[] = {"checker", "image"};
+constexpr std::string_view kWraps[] = {"clamp", "repeat"};
+constexpr std::string_view kFilters[] = {"bilinear", "nearest"};
 constexpr std::string_view kCheckerSpaces[] = {"solid", "uv"};
 constexpr std::string_view kHighlights[] = {"blinn", "phong"};
 // Notes list the defined materials only while the list stays readable.
 constexpr std::size_t kMaxListedNames = 30;
 }  // namespace
 
-Texture read_texture(const YamlSource& source, const YAML::Node& node, const Field& field) {
-    auto entries = read_map(source, node, field);
-    const std::string type = read_type(source, node, entries, "texture", kTextureTypes);
-    // Only the checker exists yet; a new texture type adds a branch here on `type`.
-    const MapReader map(source, node, std::move(entries), type + " texture",
-                        {"type", "even", "odd", "size", "space"});
+namespace {
+
+// An image file, relative to the scene file, decoded to linear RGB.
+Texture read_image_texture(const YamlSource& source, const MapReader& map) {
+    ImageTexture texture;
+    const MapEntry& file = map.require("file");
+    const std::string name = read_string(source, file.value, map.field("file"));
+    const auto path = std::filesystem::path(source.file_name()).parent_path() / name;
+    try {
+        texture.image = std::make_shared<const Image>(load_texture_image(path));
+    } catch (const ImageError& e) {
+        throw source.error_at(file.value, std::string("cannot read the texture: ") + e.what());
+    }
+    texture.scale = map.color("scale", texture.scale);
+    texture.wrap = map.choice("wrap", kWraps, "wrap mode", "wrap modes", "repeat") == "clamp"
+                       ? TextureWrap::clamp
+                       : TextureWrap::repeat;
+    texture.filter = map.choice("filter", kFilters, "filter", "filters", "bilinear") == "nearest"
+                         ? TextureFilter::nearest
+                         : TextureFilter::bilinear;
+    return texture;
+}
+
+Texture read_checker_texture(const MapReader& map) {
     CheckerTexture checker;
     checker.even = map.color("even", checker.even);
     checker.odd = map.color("odd", checker.odd);
@@ -30,6 +55,21 @@ Texture read_texture(const YamlSource& source, const YAML::Node& node, const Fie
         map.choice("space", kCheckerSpaces, "checker space", "checker spaces", "solid");
     checker.space = space == "uv" ? CheckerSpace::uv : CheckerSpace::solid;
     return checker;
+}
+
+}  // namespace
+
+Texture read_texture(const YamlSource& source, const YAML::Node& node, const Field& field) {
+    auto entries = read_map(source, node, field);
+    const std::string type = read_type(source, node, entries, "texture", kTextureTypes);
+    if (type == "image") {
+        const MapReader map(source, node, std::move(entries), "image texture",
+                            {"type", "file", "scale", "wrap", "filter"});
+        return read_image_texture(source, map);
+    }
+    const MapReader map(source, node, std::move(entries), "checker texture",
+                        {"type", "even", "odd", "size", "space"});
+    return read_checker_texture(map);
 }
 
 Material read_material(const YamlSource& source, const YAML::Node& node, const Field& field,

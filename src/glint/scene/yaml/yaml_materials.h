@@ -33,9 +33,10 @@ public:
     // The material of objects[object_index]: `entry` is its "material" key, null when absent.
     std::uint32_t resolve(const MapEntry* entry, std::size_t object_index);
 
-private:
+    // Appends a material that no name refers to (a mesh file's own) and returns its index.
     std::uint32_t add(Material material);
 
+private:
     const YamlSource& source_;
     std::vector<Material>& materials_;
     std::map<std::string, std::uint32_t, std::less<>> named_;

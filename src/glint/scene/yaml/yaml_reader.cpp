@@ -15,7 +15,6 @@ namespace glint {
 namespace {
 
 // Scalars quoted in messages are cut short so that a pasted blob cannot flood the terminal.
-constexpr std::size_t kMaxQuoted = 40;
 
 bool is_plain(const YAML::Node& node) { return node.Tag() == "?"; }
 
@@ -99,26 +98,6 @@ std::string format_number(float value) {
     char buffer[64];
     const auto result = std::to_chars(buffer, buffer + sizeof buffer, value);
     return std::string(buffer, result.ptr);
-}
-
-std::string quote(std::string_view text) {
-    std::string out = "\"";
-    for (std::size_t i = 0; i < text.size() && i < kMaxQuoted; ++i) {
-        const auto c = static_cast<unsigned char>(text[i]);
-        if (c == '"' || c == '\\') {
-            out += '\\';
-            out += char(c);
-        } else if (c < 0x20 || c == 0x7f) {
-            const char* hex = "0123456789abcdef";
-            out += "\\x";
-            out += hex[c >> 4];
-            out += hex[c & 15];
-        } else {
-            out += char(c);
-        }
-    }
-    if (text.size() > kMaxQuoted) out += "...";
-    return out + "\"";
 }
 
 std::string describe(const YAML::Node& node) {

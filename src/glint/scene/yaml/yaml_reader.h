@@ -16,6 +16,7 @@
 
 #include "glint/math/color.h"
 #include "glint/math/vector.h"
+#include "glint/scene/quote.h"
 #include "glint/scene/scene_error.h"
 #include "glint/scene/yaml/yaml_source.h"
 
@@ -59,7 +60,6 @@ std::string describe(const YAML::Node& node);
 // A number as a message shows it, in the shortest form that reads back the same.
 std::string format_number(double value);
 std::string format_number(float value);
-std::string quote(std::string_view text);
 // "a, b, c"
 std::string join(std::span<const std::string_view> names);
 

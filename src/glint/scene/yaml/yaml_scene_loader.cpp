@@ -34,13 +34,23 @@ std::string indexed(std::string_view key, std::size_t i) {
     return std::string(key) + "[" + std::to_string(i) + "]";
 }
 
-SceneObject read_object(ShapeReader& shapes, const YAML::Node& node, const Field& field,
-                        MaterialTable& materials, std::size_t index) {
-    ShapeReader::Result r = shapes.read(node, field, {"material", "casts_shadow"});
-    SceneObject result{std::move(r.shape)};
-    result.material = materials.resolve(r.map.find("material"), index);
-    result.casts_shadow = r.map.boolean("casts_shadow", true);
-    return result;
+// An object: one SceneObject, or one per part of a mesh file. A mesh without a `material` key
+// keeps its file's materials.
+void read_object(ShapeReader& shapes, const YAML::Node& node, const Field& field,
+                 MaterialTable& materials, std::size_t index, std::vector<SceneObject>& out) {
+    ShapeReader::ObjectResult r = shapes.read_object(node, field, {"material", "casts_shadow"});
+    const MapEntry* material = r.map.find("material");
+    const bool casts_shadow = r.map.boolean("casts_shadow", true);
+    std::vector<std::uint32_t> file_materials;
+    if (r.model && !material) {
+        for (const Material& m : r.model->materials) file_materials.push_back(materials.add(m));
+    }
+    const std::uint32_t shared = file_materials.empty() ? materials.resolve(material, index) : 0;
+    for (std::size_t i = 0; i < r.shapes.size(); ++i) {
+        const std::uint32_t m =
+            file_materials.empty() ? shared : file_materials[r.model->parts[i].material];
+        out.push_back({std::move(r.shapes[i]), m, casts_shadow});
+    }
 }
 
 Scene read_scene(const YamlSource& source, const YAML::Node& root) {
@@ -73,10 +83,11 @@ Scene read_scene(const YamlSource& source, const YAML::Node& root) {
         const auto items =
             read_sequence(source, objects->value, scene.field("objects"), "a list of objects");
         for (std::size_t i = 0; i < items.size(); ++i) {
-            result.objects.push_back(
-                read_object(shapes, items[i], {"", indexed("objects", i)}, materials, i));
+            read_object(shapes, items[i], {"", indexed("objects", i)}, materials, i,
+                        result.objects);
         }
     }
+    result.warnings = shapes.warnings();
     return result;
 }
 

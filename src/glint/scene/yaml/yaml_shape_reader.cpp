@@ -2,6 +2,7 @@
 #include "glint/scene/yaml/yaml_shape_reader.h"
 
 #include <algorithm>
+#include <filesystem>
 
 #include "glint/scene/yaml/yaml_shapes.h"
 #include "glint/scene/yaml/yaml_transform.h"
@@ -32,6 +33,18 @@ void ShapeReader::read_definitions(const YAML::Node& section, const Field& field
 
 ShapeReader::Result ShapeReader::read(const YAML::Node& node, const Field& field,
                                       std::vector<std::string_view> extra_keys) {
+    ObjectResult r = read_shapes(node, field, std::move(extra_keys), false);
+    return {std::move(r.shapes.front()), std::move(r.map)};
+}
+
+ShapeReader::ObjectResult ShapeReader::read_object(const YAML::Node& node, const Field& field,
+                                                   std::vector<std::string_view> extra_keys) {
+    return read_shapes(node, field, std::move(extra_keys), true);
+}
+
+ShapeReader::ObjectResult ShapeReader::read_shapes(const YAML::Node& node, const Field& field,
+                                                   std::vector<std::string_view> extra_keys,
+                                                   bool all_mesh_parts) {
     auto entries = read_map(source_, node, field);
     const std::vector<std::string_view> names = shape_type_names();
     const std::string name = read_type(source_, node, entries, "object", names);
@@ -43,16 +56,23 @@ ShapeReader::Result ShapeReader::read(const YAML::Node& node, const Field& field
     keys.insert(keys.end(), extra_keys.begin(), extra_keys.end());
     MapReader map(source_, node, std::move(entries), name, std::move(keys));
 
-    Shape shape = type.parse(map, *this);
-    if (const MapEntry* transform = map.find("transform")) {
-        shape = place(std::move(shape),
-                      read_transform(source_, transform->value, map.field("transform")));
+    std::vector<Shape> shapes;
+    std::shared_ptr<const Model> mesh_model;
+    if (all_mesh_parts && name == "mesh") {
+        mesh_model = model(map);
+        for (const ModelPart& part : mesh_model->parts) shapes.push_back(TriangleMesh{part.mesh});
+    } else {
+        shapes.push_back(type.parse(map, *this));
     }
-    if (csg_depth(shape) > kMaxCsgDepth) {
+    if (const MapEntry* transform = map.find("transform")) {
+        const Transform t = read_transform(source_, transform->value, map.field("transform"));
+        for (Shape& shape : shapes) shape = place(std::move(shape), t);
+    }
+    if (csg_depth(shapes.front()) > kMaxCsgDepth) {
         throw source_.error_at(node,
                                "CSG nests deeper than " + std::to_string(kMaxCsgDepth) + " levels");
     }
-    return {std::move(shape), std::move(map)};
+    return {std::move(shapes), std::move(mesh_model), std::move(map)};
 }
 
 std::shared_ptr<const Shape> ShapeReader::read_operand(const YAML::Node& node, const Field& field) {
@@ -64,8 +84,9 @@ std::shared_ptr<const Shape> ShapeReader::read_operand(const YAML::Node& node, c
     if (!is_solid(r.shape)) {
         throw source_.error_at(
             node, r.map.what() + " is not a closed solid, so it cannot be a CSG operand",
-            {"CSG operands are solids: spheres, boxes, planes (half-spaces), CSG shapes, and "
-             "transforms and instances of these"});
+            {"CSG operands are solids: spheres, boxes, capped cylinders and cones, tori, implicit "
+             "surfaces, fractals, closed meshes, planes (half-spaces), CSG shapes, and transforms "
+             "and instances of these"});
     }
     return std::make_shared<const Shape>(std::move(r.shape));
 }
@@ -83,6 +104,34 @@ std::shared_ptr<const Shape> ShapeReader::definition(const MapReader& map,
                                 "after its use)"});
     }
     throw unknown_name(source_, entry.value, "definition", "definitions", name, names);
+}
+
+std::shared_ptr<const Model> ShapeReader::model(const MapReader& map) {
+    const MapEntry& entry = map.require("file");
+    const std::string name = read_string(source_, entry.value, map.field("file"));
+    const std::filesystem::path file =
+        std::filesystem::path(source_.file_name()).parent_path() / name;
+    ModelOptions options;
+    if (map.has("crease_angle"))
+        options.crease_angle_degrees = map.number("crease_angle", {0, 180});
+    const auto key =
+        std::pair{file.lexically_normal().string(), options.crease_angle_degrees.value_or(-1)};
+    if (const auto it = models_.find(key); it != models_.end()) return it->second;
+    if (!std::filesystem::is_regular_file(file)) {
+        throw source_.error_at(entry.value, "mesh file not found: " + file.string());
+    }
+    try {
+        auto model = std::make_shared<const Model>(load_model(file, options));
+        for (const std::string& warning : model->warnings)
+            warnings_.push_back(name + ": " + warning);
+        return models_.emplace(key, std::move(model)).first->second;
+    } catch (const SceneError& e) {
+        const YAML::Mark m = entry.value.Mark();
+        std::vector<std::string> notes = e.notes();
+        notes.push_back("the mesh is loaded by " + source_.file_name() + ":" +
+                        std::to_string(m.line + 1) + ":" + std::to_string(m.column + 1));
+        throw SceneError(e.location(), e.message(), std::move(notes), e.source_line(), e.span());
+    }
 }
 
 }  // namespace glint

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "glint/geometry/shape.h"
+#include "glint/scene/mesh/model_loader.h"
 #include "glint/scene/yaml/yaml_map_reader.h"
 
 namespace glint {
@@ -31,14 +32,35 @@ public:
     Result read(const YAML::Node& node, const Field& field,
                 std::vector<std::string_view> extra_keys = {});
 
+    struct ObjectResult {
+        std::vector<Shape> shapes;           // one, or one per part of a mesh file
+        std::shared_ptr<const Model> model;  // the mesh file's, for its parts' materials
+        MapReader map;
+    };
+    // An object of the scene: like read(), but a mesh file gives all its parts.
+    ObjectResult read_object(const YAML::Node& node, const Field& field,
+                             std::vector<std::string_view> extra_keys);
+
     // A CSG operand: a shape map that must describe a closed solid.
     std::shared_ptr<const Shape> read_operand(const YAML::Node& node, const Field& field);
 
     // The shape defined under the name that `key` of the map gives (an instance's `of`).
     std::shared_ptr<const Shape> definition(const MapReader& map, std::string_view key) const;
 
+    // The model file a mesh map names (`file`, relative to the scene file, and `crease_angle`),
+    // loaded once however often it is used. Errors in the model file say where the scene
+    // loads it.
+    std::shared_ptr<const Model> model(const MapReader& map);
+    // Warnings from the models loaded, for the scene.
+    const std::vector<std::string>& warnings() const { return warnings_; }
+
 private:
+    ObjectResult read_shapes(const YAML::Node& node, const Field& field,
+                             std::vector<std::string_view> extra_keys, bool all_mesh_parts);
+
     const YamlSource& source_;
+    std::map<std::pair<std::string, float>, std::shared_ptr<const Model>> models_;
+    std::vector<std::string> warnings_;
     std::map<std::string, std::shared_ptr<const Shape>, std::less<>> definitions_;
 };
 

@@ -1,0 +1,248 @@
+// Line-by-line OBJ and MTL checks with file:line:col errors; see obj_validator.h.
+#include "glint/scene/mesh/obj_validator.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+
+#include "glint/scene/mesh/mesh_limits.h"
+#include "glint/scene/mesh/text_lines.h"
+
+namespace glint {
+
+namespace {
+
+struct Counts {
+    long long v = 0, vt = 0, vn = 0;
+};
+
+// Built by appending: GCC 12's -Wrestrict misfires on "\"" + std::string (GCC bug 105651).
+std::string in_quotes(std::string_view s) {
+    std::string out;
+    out.reserve(s.size() + 2);
+    out += '"';
+    out += s;
+    out += '"';
+    return out;
+}
+
+// Checks that tokens [first, first + count) are finite numbers; `what` names the line's kind.
+void check_numbers(const TextLines& lines, std::size_t line, const std::vector<Token>& tokens,
+                   std::size_t first, std::size_t count, std::string_view what) {
+    if (tokens.size() < first + count) {
+        const Token& last = tokens.back();
+        throw lines.error_at(line, last.column, int(last.text.size()),
+                             std::string(what) + " needs " + std::to_string(count) +
+                                 " numbers, got " + std::to_string(tokens.size() - first));
+    }
+    for (std::size_t i = first; i < tokens.size(); ++i) {
+        const Token& t = tokens[i];
+        const auto value = parse_float(t.text);
+        if (!value) {
+            // Extra words after the numbers are tolerated only past the required ones, as
+            // writers append comments without '#'; a word in a required place is an error.
+            if (i >= first + count) break;
+            throw lines.error_at(line, t.column, int(t.text.size()),
+                                 "expected a number, got " + in_quotes(t.text));
+        }
+        if (!std::isfinite(*value)) {
+            throw lines.error_at(
+                line, t.column, int(t.text.size()),
+                std::string(what) + " has a number that is not finite: " + in_quotes(t.text));
+        }
+    }
+}
+
+// One index of a face corner ("12", "-1"); kind is "vertex", "texture coordinate" or "normal".
+void check_index(const TextLines& lines, std::size_t line, std::string_view text, int column,
+                 const char* kind, long long preceding, long long total) {
+    const auto index = parse_integer(text);
+    const int span = std::max(1, int(text.size()));
+    if (!index) {
+        throw lines.error_at(line, column, span,
+                             "expected a " + std::string(kind) + " index, got " + in_quotes(text));
+    }
+    if (*index == 0) {
+        throw lines.error_at(line, column, span,
+                             std::string(kind) + " index 0 is invalid: OBJ indices start at 1");
+    }
+    if (*index > total) {
+        throw lines.error_at(line, column, span,
+                             "face refers to " + std::string(kind) + " " + std::to_string(*index) +
+                                 ", but the file has " + std::to_string(total));
+    }
+    if (*index < 0 && -*index > preceding) {
+        throw lines.error_at(line, column, span,
+                             "face refers to " + std::string(kind) + " " + std::to_string(*index) +
+                                 " (counted back), but only " + std::to_string(preceding) +
+                                 " come before it");
+    }
+}
+
+void check_face(const TextLines& lines, std::size_t line, const std::vector<Token>& tokens,
+                const Counts& before, const Counts& total) {
+    if (tokens.size() < 4) {
+        const Token& last = tokens.back();
+        throw lines.error_at(
+            line, tokens.front().column,
+            last.column + int(last.text.size()) - tokens.front().column,
+            "face has " + std::to_string(tokens.size() - 1) + " vertices; a face needs at least 3");
+    }
+    for (std::size_t i = 1; i < tokens.size(); ++i) {
+        const Token& t = tokens[i];
+        // v, v/vt, v//vn or v/vt/vn.
+        std::size_t start = 0;
+        for (int part = 0; part < 3 && start <= t.text.size(); ++part) {
+            std::size_t slash = t.text.find('/', start);
+            if (slash == std::string_view::npos) slash = t.text.size();
+            const std::string_view index = t.text.substr(start, slash - start);
+            const int column = t.column + int(start);
+            if (part == 0 || !index.empty()) {
+                static const char* kinds[] = {"vertex", "texture coordinate", "normal"};
+                const long long preceding[] = {before.v, before.vt, before.vn};
+                const long long totals[] = {total.v, total.vt, total.vn};
+                check_index(lines, line, index, column, kinds[part], preceding[part], totals[part]);
+            }
+            if (slash == t.text.size()) break;
+            start = slash + 1;
+            if (part == 2) {
+                throw lines.error_at(line, t.column, int(t.text.size()),
+                                     "face corner " + in_quotes(t.text) + " has more than 3 parts");
+            }
+        }
+    }
+}
+
+// The file a statement names: the rest of the line, or with options ("-s 1 1 1 name") the last
+// token.
+std::pair<std::string, Token> named_file(const std::vector<Token>& tokens, std::string_view line) {
+    const Token& first = tokens[1];
+    const bool options = first.text.starts_with("-");
+    if (options) return {std::string(tokens.back().text), tokens.back()};
+    std::string_view rest = line.substr(std::size_t(first.column - 1));
+    while (!rest.empty() && (rest.back() == ' ' || rest.back() == '\t')) rest.remove_suffix(1);
+    return {std::string(rest), Token{rest, first.column}};
+}
+
+bool is_file(const std::filesystem::path& p) {
+    std::error_code ec;
+    return std::filesystem::is_regular_file(p, ec);
+}
+
+}  // namespace
+
+std::vector<std::string> validate_mtl(const std::filesystem::path& file, std::string_view text) {
+    const TextLines lines(text, file.string());
+    std::vector<std::string> names;
+    for (std::size_t i = 0; i < lines.size(); ++i) {
+        const std::string_view line = lines.line(i);
+        const auto tokens = split_tokens(line);
+        if (tokens.empty()) continue;
+        const std::string_view key = tokens[0].text;
+        const std::size_t n = i + 1;
+        if (key == "newmtl" && tokens.size() > 1) {
+            names.emplace_back(named_file(tokens, line).first);
+        } else if (key == "Kd" || key == "Ka" || key == "Ks" || key == "Ke" || key == "Tf") {
+            if (tokens.size() > 1 && (tokens[1].text == "spectral" || tokens[1].text == "xyz")) {
+                continue;  // forms Assimp ignores
+            }
+            check_numbers(lines, n, tokens, 1, 1, key);
+        } else if (key == "Ns" || key == "Ni" || key == "d" || key == "Tr") {
+            check_numbers(lines, n, tokens, 1, 1, key);
+        } else if (key == "map_Kd" || key == "map_kd") {
+            if (tokens.size() < 2) {
+                throw lines.error_at(n, tokens[0].column, 6, "map_Kd names no texture file");
+            }
+            const auto [name, token] = named_file(tokens, line);
+            const std::filesystem::path texture = file.parent_path() / name;
+            if (!is_file(texture)) {
+                throw lines.error_at(n, token.column, int(token.text.size()),
+                                     "texture file " + in_quotes(name) + " not found",
+                                     {"looked for " + texture.string()});
+            }
+        }
+    }
+    return names;
+}
+
+ObjCheck validate_obj(const std::filesystem::path& file, std::string_view text) {
+    const TextLines lines(text, file.string());
+    // Positive indices may point forwards (Assimp resolves them after reading), so the totals
+    // come first.
+    Counts total;
+    for (std::size_t i = 0; i < lines.size(); ++i) {
+        const std::string_view line = lines.line(i);
+        if (line.starts_with("v ") || line.starts_with("v\t")) ++total.v;
+        if (line.starts_with("vt ") || line.starts_with("vt\t")) ++total.vt;
+        if (line.starts_with("vn ") || line.starts_with("vn\t")) ++total.vn;
+    }
+
+    ObjCheck result;
+    std::vector<std::string> materials;
+    long long faces = 0;
+    Counts before;
+    for (std::size_t i = 0; i < lines.size(); ++i) {
+        const std::string_view line = lines.line(i);
+        const auto tokens = split_tokens(line);
+        if (tokens.empty()) continue;
+        const std::string_view key = tokens[0].text;
+        const std::size_t n = i + 1;
+        if (key == "v") {
+            check_numbers(lines, n, tokens, 1, 3, "vertex");
+            ++before.v;
+        } else if (key == "vt") {
+            check_numbers(lines, n, tokens, 1, 1, "texture coordinate");
+            ++before.vt;
+        } else if (key == "vn") {
+            check_numbers(lines, n, tokens, 1, 3, "normal");
+            ++before.vn;
+        } else if (key == "f" || key == "fo") {
+            check_face(lines, n, tokens, before, total);
+            ++faces;
+        } else if (key == "mtllib") {
+            if (tokens.size() < 2) {
+                throw lines.error_at(n, tokens[0].column, 6, "mtllib names no file");
+            }
+            // Assimp takes the rest of the line as one name; several names are also accepted.
+            const auto [name, token] = named_file(tokens, line);
+            std::vector<std::pair<std::string, Token>> libraries;
+            if (is_file(file.parent_path() / name) || tokens.size() == 2) {
+                libraries.push_back({name, token});
+            } else {
+                for (std::size_t k = 1; k < tokens.size(); ++k) {
+                    libraries.push_back({std::string(tokens[k].text), tokens[k]});
+                }
+            }
+            for (const auto& [library, at] : libraries) {
+                const std::filesystem::path path = file.parent_path() / library;
+                if (!is_file(path)) {
+                    throw lines.error_at(n, at.column, int(at.text.size()),
+                                         "material library " + in_quotes(library) + " not found",
+                                         {"looked for " + path.string()});
+                }
+                const std::string mtl = read_text_file(path.string(), kMaxMeshFileBytes);
+                const auto names = validate_mtl(path, mtl);
+                result.material_libraries.push_back(path);
+                materials.insert(materials.end(), names.begin(), names.end());
+            }
+        } else if (key == "usemtl" && tokens.size() > 1) {
+            const std::string name = named_file(tokens, line).first;
+            auto& unknown = result.undefined_materials;
+            if (std::find(materials.begin(), materials.end(), name) == materials.end() &&
+                std::find(unknown.begin(), unknown.end(), name) == unknown.end()) {
+                unknown.push_back(name);
+                result.warnings.push_back(
+                    file.string() + ":" + std::to_string(n) + ": usemtl " + in_quotes(name) +
+                    " names a material no mtllib defines; it gets glint's default "
+                    "material");
+            }
+        }
+    }
+    if (faces == 0) {
+        throw SceneError({file.string(), 0, 0}, "the file has no faces (no f lines)",
+                         {"points and lines are not surfaces; glint renders triangles"});
+    }
+    return result;
+}
+
+}  // namespace glint

@@ -1,0 +1,30 @@
+// A light check of Wavefront OBJ files (and the MTL files they name) before Assimp reads them,
+// so that a bad line is reported at file:line:col instead of as Assimp's unlocated message.
+#pragma once
+
+#include <filesystem>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace glint {
+
+// Scans v, vt, vn and f lines and mtllib/usemtl, and the MTL files' colour, number and map_Kd
+// lines. Throws SceneError at the first bad one: a non-numeric or non-finite coordinate, a face
+// with fewer than 3 vertices, a face index that is 0 or out of range (positive indices against
+// the file's total, negative ones against the elements before the face, as Assimp resolves
+// them), a missing MTL file, a missing texture. Returns what the loader needs besides: warnings
+// (e.g. usemtl of an unknown material), the MTL files and the undefined material names. Everything
+// else (groups, lines, points, smoothing groups) passes unchecked.
+struct ObjCheck {
+    std::vector<std::string> warnings;
+    std::vector<std::filesystem::path> material_libraries;  // the MTL files, as found
+    std::vector<std::string> undefined_materials;           // usemtl names that no MTL defines
+};
+ObjCheck validate_obj(const std::filesystem::path& file, std::string_view text);
+
+// The same for an MTL file on its own; `text` is its contents. Returns the material names it
+// defines.
+std::vector<std::string> validate_mtl(const std::filesystem::path& file, std::string_view text);
+
+}  // namespace glint

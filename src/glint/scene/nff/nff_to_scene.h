@@ -1,0 +1,19 @@
+// Turns an NFF description into a glint Scene, rendered as the Standard Procedural Databases
+// prescribe: the file's view and resolution, a ray tree of depth 5 without adaptive cut-off, and
+// the light and material conventions documented in docs/nff.md.
+#pragma once
+
+#include <filesystem>
+
+#include "glint/scene/nff/nff_scene.h"
+#include "glint/scene/scene.h"
+
+namespace glint {
+
+// Throws SceneError when the file has no view.
+Scene nff_to_scene(const NffScene& nff);
+
+// load_nff (plain or gzip-compressed) then nff_to_scene. Throws SceneError only.
+Scene load_nff_scene(const std::filesystem::path& file);
+
+}  // namespace glint

@@ -1,0 +1,25 @@
+#include "glint/scene/quote.h"
+
+namespace glint {
+
+std::string quote(std::string_view text) {
+    std::string out = "\"";
+    for (std::size_t i = 0; i < text.size() && i < kMaxQuoted; ++i) {
+        const auto c = static_cast<unsigned char>(text[i]);
+        if (c == '"' || c == '\\') {
+            out += '\\';
+            out += char(c);
+        } else if (c < 0x20 || c == 0x7f) {
+            const char* hex = "0123456789abcdef";
+            out += "\\x";
+            out += hex[c >> 4];
+            out += hex[c & 15];
+        } else {
+            out += char(c);
+        }
+    }
+    if (text.size() > kMaxQuoted) out += "...";
+    return out + "\"";
+}
+
+}  // namespace glint
