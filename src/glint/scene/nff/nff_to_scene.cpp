@@ -132,7 +132,8 @@ Scene nff_to_scene(const NffScene& nff) {
     const float n = static_cast<float>(std::max<std::size_t>(1, nff.lights.size()));
     const float intensity = std::sqrt(n) / (2 * n);
     for (const NffLight& l : nff.lights) {
-        scene.lights.push_back(PointLight{l.position, l.color.value_or(Color::gray(1)) * intensity});
+        scene.lights.push_back(
+            PointLight{l.position, l.color.value_or(Color::gray(1)) * intensity});
     }
     scene.ambient = Color::gray(intensity);
 

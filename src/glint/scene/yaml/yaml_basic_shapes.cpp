@@ -71,8 +71,8 @@ constexpr std::string_view kInsideTests[] = {"angle_sum", "even_odd"};
 Shape parse_polygon(const MapReader& object, ShapeReader&) {
     const YamlSource& source = object.source();
     const MapEntry& entry = object.require("vertices");
-    const auto items = read_sequence(source, entry.value, object.field("vertices"),
-                                     "a list of at least 3 points");
+    const auto items =
+        read_sequence(source, entry.value, object.field("vertices"), "a list of at least 3 points");
     std::vector<Point3> vertices;
     vertices.reserve(items.size());
     for (std::size_t i = 0; i < items.size(); ++i) {
@@ -83,11 +83,10 @@ Shape parse_polygon(const MapReader& object, ShapeReader&) {
         const bool at_vertex = problem->vertex && *problem->vertex < items.size();
         throw source.error_at(at_vertex ? items[*problem->vertex] : entry.value, problem->message);
     }
-    const InsideTest test =
-        object.choice("inside_test", kInsideTests, "inside test", "inside tests", "even_odd") ==
-                "angle_sum"
-            ? InsideTest::angle_sum
-            : InsideTest::even_odd;
+    const InsideTest test = object.choice("inside_test", kInsideTests, "inside test",
+                                          "inside tests", "even_odd") == "angle_sum"
+                                ? InsideTest::angle_sum
+                                : InsideTest::even_odd;
     return std::get<Polygon>(make_polygon(std::move(vertices), test));
 }
 

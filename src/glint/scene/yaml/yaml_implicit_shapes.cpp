@@ -26,8 +26,8 @@ ExpressionConstants read_constants(const MapReader& object) {
     const MapEntry* entry = object.find("constants");
     if (!entry) return constants;
     for (const MapEntry& c : read_map(object.source(), entry->value, object.field("constants"))) {
-        constants.emplace(c.key, read_number(object.source(), c.value,
-                                             {"constants", c.key, c.key_node}));
+        constants.emplace(c.key,
+                          read_number(object.source(), c.value, {"constants", c.key, c.key_node}));
     }
     return constants;
 }
@@ -68,11 +68,11 @@ Shape parse_implicit(const MapReader& object, ShapeReader&) {
 Shape parse_julia(const MapReader& object, ShapeReader&) {
     JuliaSet julia;
     const MapEntry& c = object.require("c");
-    const auto items = read_sequence(object.source(), c.value, object.field("c"),
-                                     "a quaternion [r, i, j, k]", 4);
+    const auto items =
+        read_sequence(object.source(), c.value, object.field("c"), "a quaternion [r, i, j, k]", 4);
     for (std::size_t i = 0; i < 4; ++i) {
-        julia.c[i] = read_number(object.source(), items[i],
-                                 {object.what(), "c[" + std::to_string(i) + "]"});
+        julia.c[i] =
+            read_number(object.source(), items[i], {object.what(), "c[" + std::to_string(i) + "]"});
     }
     julia.slice_w = object.number("slice_w", kAnyNumber, 0);
     julia.center = object.point("center", Point3{0, 0, 0});

@@ -34,7 +34,8 @@ Texture read_image_texture(const YamlSource& source, const MapReader& map) {
     try {
         texture.image = std::make_shared<const Image>(load_texture_image(path));
     } catch (const ImageError& e) {
-        throw source.error_at(file.value, std::string("cannot read the texture: ") + e.what());
+        throw source.error_at(file.value, "cannot read texture " + quote(name) + ": " + e.detail,
+                              {"looked for " + path.string()});
     }
     texture.scale = map.color("scale", texture.scale);
     texture.wrap = map.choice("wrap", kWraps, "wrap mode", "wrap modes", "repeat") == "clamp"

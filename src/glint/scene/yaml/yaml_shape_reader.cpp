@@ -118,7 +118,8 @@ std::shared_ptr<const Model> ShapeReader::model(const MapReader& map) {
         std::pair{file.lexically_normal().string(), options.crease_angle_degrees.value_or(-1)};
     if (const auto it = models_.find(key); it != models_.end()) return it->second;
     if (!std::filesystem::is_regular_file(file)) {
-        throw source_.error_at(entry.value, "mesh file not found: " + file.string());
+        throw source_.error_at(entry.value, "mesh file " + quote(name) + " not found",
+                               {"looked for " + file.string()});
     }
     try {
         auto model = std::make_shared<const Model>(load_model(file, options));
