@@ -159,6 +159,26 @@ TEST_F(Cli, MissingSceneAndUnknownFormatsExitWithTwo) {
     EXPECT_FALSE(fs::exists(dir_ / "out.gif"));
 }
 
+TEST_F(Cli, RendersNffAndModelFilesDirectly) {
+    const std::string data = std::string("'") + GLINT_SOURCE_DIR + "/tests/data/";
+    for (const char* file :
+         {"spd/jacks.nff'", "spd/jacks.nff.gz'", "meshes/quad.gltf'", "meshes/cube_binary.ply'",
+          "meshes/tetra_ascii.stl'", "meshes/spot.obj'"}) {
+        const Outcome r = run_glint("render " + data + file + " --width 32 -q -o a.png");
+        EXPECT_EQ(r.exit_code, 0) << file << ": " << r.err;
+        EXPECT_EQ(read_image(dir_ / "a.png").width, 32) << file;
+    }
+}
+
+TEST_F(Cli, BadNffExitsWithTwoAtTheOffendingToken) {
+    write_scene("bad.nff",
+                "v\nfrom 0 0 -5\nat 0 0 0\nup 0 1 0\nangle 45\nhither 1\n"
+                "resolution 8 8\nf 1 0 0 1 0 0 0 0\ns 0 0 0 radius\n");
+    const Outcome r = run_glint("render bad.nff");
+    EXPECT_EQ(r.exit_code, 2);
+    EXPECT_NE(r.err.find("bad.nff:9:9: error:"), std::string::npos) << r.err;
+}
+
 TEST_F(Cli, NonSquareSampleCountIsRejected) {
     const Outcome r = run_glint("render " + scene("showcase.yaml") + " --spp 5");
     EXPECT_EQ(r.exit_code, 2);

@@ -105,6 +105,25 @@ TEST(Csg, NestedOperationsToSeveralLevels) {
     EXPECT_EQ(csg_depth(*nested.shape), 3);
 }
 
+// A closed mesh is a solid: an octahedron |x| + |y| + |z| < r of 8 triangles, wound outwards.
+Solid octahedron(float r) {
+    MeshData arrays;
+    arrays.positions = {{r, 0, 0}, {-r, 0, 0}, {0, r, 0}, {0, -r, 0}, {0, 0, r}, {0, 0, -r}};
+    arrays.triangles = {{0, 2, 4}, {2, 1, 4}, {1, 3, 4}, {3, 0, 4},
+                        {2, 0, 5}, {1, 2, 5}, {3, 1, 5}, {0, 3, 5}};
+    const MeshBuild built = build_mesh(std::move(arrays));
+    EXPECT_TRUE(built.mesh && built.mesh->closed) << built.error;
+    return {std::make_shared<const Shape>(TriangleMesh{built.mesh}),
+            [=](Point3 p) { return std::abs(p.x) + std::abs(p.y) + std::abs(p.z) < r; }};
+}
+
+TEST(Csg, ClosedMeshesAreOperandsToo) {
+    const Solid octa = octahedron(1.5f);
+    EXPECT_TRUE(is_solid(*octa.shape));
+    expect_matches_membership(combine(CsgOperation::intersection, octa, kCube));
+    expect_matches_membership(combine(CsgOperation::difference, kBall, octa));
+}
+
 TEST(Csg, UnionKeepsInternalSurfaces) {
     // POV-Ray's union: the first surface of either operand, inside the other or not.
     const Solid u = combine(CsgOperation::union_of, kBall, kCube);

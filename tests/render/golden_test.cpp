@@ -56,23 +56,22 @@ TEST_P(GoldenImage, MatchesTheReference) {
                     << "\n  expected: " << golden;
 }
 
-INSTANTIATE_TEST_SUITE_P(Scenes, GoldenImage,
-                         ::testing::Values("showcase.yaml", "whitted-basics.yaml",
-                                           "features/highlights.yaml", "features/shadows.yaml",
-                                           "features/transparent-shadows.yaml",
-                                           "features/reflection.yaml", "features/refraction.yaml",
-                                           "features/textures.yaml", "features/attenuation.yaml",
-                                           "features/orthographic.yaml",
-                                           "features/supersampling.yaml", "features/csg.yaml",
-                                           "features/quadrics.yaml", "features/polygons.yaml",
-                                           "features/implicit.yaml", "features/fractals.yaml",
-                                           "features/meshes.yaml", "features/instancing.yaml"),
-                         [](const ::testing::TestParamInfo<std::string>& param) {
-                             std::string id = fs::path(param.param).stem().string();
-                             for (char& c : id)
-                                 if (c == '-') c = '_';
-                             return id;
-                         });
+INSTANTIATE_TEST_SUITE_P(
+    Scenes, GoldenImage,
+    ::testing::Values("showcase.yaml", "whitted-basics.yaml", "features/highlights.yaml",
+                      "features/shadows.yaml", "features/transparent-shadows.yaml",
+                      "features/reflection.yaml", "features/refraction.yaml",
+                      "features/textures.yaml", "features/attenuation.yaml",
+                      "features/orthographic.yaml", "features/supersampling.yaml",
+                      "features/csg.yaml", "features/quadrics.yaml", "features/polygons.yaml",
+                      "features/implicit.yaml", "features/fractals.yaml", "features/meshes.yaml",
+                      "features/model-formats.yaml", "features/instancing.yaml"),
+    [](const ::testing::TestParamInfo<std::string>& param) {
+        std::string id = fs::path(param.param).stem().string();
+        for (char& c : id)
+            if (c == '-') c = '_';
+        return id;
+    });
 
 }  // namespace
 }  // namespace glint

@@ -123,8 +123,8 @@ std::shared_ptr<const Model> ShapeReader::model(const MapReader& map) {
     }
     try {
         auto model = std::make_shared<const Model>(load_model(file, options));
-        for (const std::string& warning : model->warnings)
-            warnings_.push_back(name + ": " + warning);
+        // The model's warnings name its file already.
+        warnings_.insert(warnings_.end(), model->warnings.begin(), model->warnings.end());
         return models_.emplace(key, std::move(model)).first->second;
     } catch (const SceneError& e) {
         const YAML::Mark m = entry.value.Mark();
