@@ -15,6 +15,8 @@
 #include <string>
 #include <vector>
 
+#include "bad_file_checks.h"
+
 namespace glint {
 namespace {
 
@@ -323,66 +325,13 @@ TEST(NffParser, MangledInputGivesSceneErrorsOnly) {
 // renderer would: load_nff, then require_view.
 const std::filesystem::path kBadDir = kSource / "tests/scene/bad_nff";
 
-struct Expectation {
-    int line = -1, column = -1;
-    std::string message;
-    std::vector<std::string> notes;
-};
-
-std::optional<Expectation> read_expectation(const std::filesystem::path& file) {
-    std::ifstream in(file, std::ios::binary);
-    std::string line;
-    Expectation e;
-    const std::string prefix = "# error: ";
-    if (!std::getline(in, line) || !line.starts_with(prefix)) return std::nullopt;
-    std::istringstream header(line.substr(prefix.size()));
-    char colon1 = 0, colon2 = 0;
-    if (!(header >> e.line >> colon1 >> e.column >> colon2) || colon1 != ':' || colon2 != ':') {
-        return std::nullopt;
-    }
-    std::getline(header >> std::ws, e.message);
-    while (std::getline(in, line) && line.starts_with("# note: "))
-        e.notes.push_back(line.substr(8));
-    return e;
+TEST(BadNffFiles, ThereAreAtLeast15) {
+    EXPECT_GE(testing::files_with_extension(kBadDir, ".nff").size(), 15u);
 }
-
-std::vector<std::filesystem::path> bad_files() {
-    std::vector<std::filesystem::path> files;
-    for (const auto& entry : std::filesystem::directory_iterator(kBadDir)) {
-        if (entry.path().extension() == ".nff") files.push_back(entry.path());
-    }
-    std::sort(files.begin(), files.end());
-    return files;
-}
-
-TEST(BadNffFiles, ThereAreAtLeast15) { EXPECT_GE(bad_files().size(), 15u); }
 
 TEST(BadNffFiles, EachGivesItsStatedError) {
-    for (const auto& file : bad_files()) {
-        SCOPED_TRACE(file.filename().string());
-        const auto expected = read_expectation(file);
-        ASSERT_TRUE(expected) << "first line must be '# error: LINE:COL: MESSAGE'";
-        try {
-            require_view(load_nff(file));
-            ADD_FAILURE() << "loaded without error";
-        } catch (const SceneError& e) {
-            const std::string shown = format_scene_error(e);
-            EXPECT_EQ(e.location().file, file.string());
-            EXPECT_EQ(e.location().line, expected->line) << shown;
-            EXPECT_EQ(e.location().column, expected->column) << shown;
-            EXPECT_EQ(e.message(), expected->message) << shown;
-            for (const std::string& note : expected->notes) {
-                const bool found =
-                    std::any_of(e.notes().begin(), e.notes().end(),
-                                [&](const auto& n) { return n.find(note) != std::string::npos; });
-                EXPECT_TRUE(found) << "no note contains: " << note << "\n" << shown;
-            }
-            if (e.location().line > 0) {
-                EXPECT_FALSE(e.source_line().empty()) << shown;
-            }
-        } catch (const std::exception& e) {
-            ADD_FAILURE() << "threw something other than a SceneError: " << e.what();
-        }
+    for (const auto& file : testing::files_with_extension(kBadDir, ".nff")) {
+        testing::expect_stated_error(file, [&] { require_view(load_nff(file)); });
     }
 }
 

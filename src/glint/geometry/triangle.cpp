@@ -8,14 +8,15 @@ Bounds3 Triangle::bounds() const {
     return merge(Bounds3::of(vertices[0], vertices[1]), vertices[2]);
 }
 
-std::optional<ShapeHit> Triangle::intersect(const Ray& ray, Interval t_range) const {
-    const Vector3 e1 = vertices[1] - vertices[0];
-    const Vector3 e2 = vertices[2] - vertices[0];
+std::optional<ShapeHit> intersect_triangle(Point3 v0, Point3 v1, Point3 v2, const Ray& ray,
+                                           Interval t_range) {
+    const Vector3 e1 = v1 - v0;
+    const Vector3 e2 = v2 - v0;
     const Vector3 p = cross(ray.direction, e2);
     const float det = dot(e1, p);
     if (det == 0 || !std::isfinite(det)) return std::nullopt;  // parallel or degenerate
     const float inv_det = 1 / det;
-    const Vector3 s = ray.origin - vertices[0];
+    const Vector3 s = ray.origin - v0;
     const float b1 = dot(s, p) * inv_det;
     if (b1 < 0 || b1 > 1) return std::nullopt;
     const Vector3 q = cross(s, e1);
@@ -24,6 +25,10 @@ std::optional<ShapeHit> Triangle::intersect(const Ray& ray, Interval t_range) co
     const float t = dot(e2, q) * inv_det;
     if (!t_range.contains(t)) return std::nullopt;
     return ShapeHit{t, b1, b2};
+}
+
+std::optional<ShapeHit> Triangle::intersect(const Ray& ray, Interval t_range) const {
+    return intersect_triangle(vertices[0], vertices[1], vertices[2], ray, t_range);
 }
 
 SurfacePoint Triangle::surface_at(const Ray&, const ShapeHit& hit) const {

@@ -23,6 +23,11 @@ struct Triangle {
     SurfacePoint surface_at(const Ray& ray, const ShapeHit& hit) const;
 };
 
+// Moeller and Trumbore (1997) on the triangle (v0, v1, v2): t, and the barycentric weights of
+// v1 and v2 as u and v. Two-sided; nothing for rays parallel to the plane. Meshes share it.
+std::optional<ShapeHit> intersect_triangle(Point3 v0, Point3 v1, Point3 v2, const Ray& ray,
+                                           Interval t_range);
+
 // Twice the area; zero for collinear vertices, which no ray can hit.
 float double_area(const Triangle& triangle);
 

@@ -5,6 +5,8 @@
 #include <map>
 #include <string>
 
+#include "glint/geometry/triangle.h"
+
 namespace glint {
 
 namespace {
@@ -138,22 +140,10 @@ bool is_closed_surface(const MeshData& mesh) {
 std::optional<ShapeHit> intersect_triangle(const MeshData& mesh, std::uint32_t index,
                                            const Ray& ray, Interval t_range) {
     const auto& tri = mesh.triangles[index];
-    const Point3 v0 = mesh.positions[tri[0]];
-    const Vector3 e1 = mesh.positions[tri[1]] - v0;
-    const Vector3 e2 = mesh.positions[tri[2]] - v0;
-    const Vector3 p = cross(ray.direction, e2);
-    const float det = dot(e1, p);
-    if (det == 0 || !std::isfinite(det)) return std::nullopt;  // parallel to the plane
-    const float inv_det = 1 / det;
-    const Vector3 s = ray.origin - v0;
-    const float b1 = dot(s, p) * inv_det;
-    if (b1 < 0 || b1 > 1) return std::nullopt;
-    const Vector3 q = cross(s, e1);
-    const float b2 = dot(ray.direction, q) * inv_det;
-    if (b2 < 0 || b1 + b2 > 1) return std::nullopt;
-    const float t = dot(e2, q) * inv_det;
-    if (!t_range.contains(t)) return std::nullopt;
-    return ShapeHit{t, b1, b2, index};
+    auto hit = intersect_triangle(mesh.positions[tri[0]], mesh.positions[tri[1]],
+                                  mesh.positions[tri[2]], ray, t_range);
+    if (hit) hit->part = index;
+    return hit;
 }
 
 std::optional<ShapeHit> TriangleMesh::intersect(const Ray& ray, Interval t_range) const {
