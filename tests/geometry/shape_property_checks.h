@@ -49,6 +49,9 @@ struct PropertyOptions {
     bool convex = false;
     float leave_offset = 1e-4f;  // how far the leaving ray starts off the surface
     float min_rehit_distance = 1e-3f;
+    // Whether distance_to_surface is smooth and grows outwards, so that its gradient (by central
+    // differences) must point along the normal.
+    bool normal_matches_gradient = false;
 };
 
 // distance_to_surface(Point3) is zero on the surface (a signed distance or any implicit
@@ -70,6 +73,13 @@ void expect_shape_properties(const S& shape, Distance distance_to_surface, Rando
         ASSERT_NEAR(length(to_vector(sp.normal)), 1, 1e-5f) << "ray " << i;
         ASSERT_NEAR(length(to_vector(sp.shading_normal)), 1, 1e-5f) << "ray " << i;
         ASSERT_GT(dot(sp.normal, sp.shading_normal), 0) << "ray " << i;
+        if (options.normal_matches_gradient) {
+            constexpr float h = 1e-3f;
+            const auto f = [&](Vector3 d) { return distance_to_surface(sp.p + d); };
+            const Vector3 gradient{f({h, 0, 0}) - f({-h, 0, 0}), f({0, h, 0}) - f({0, -h, 0}),
+                                   f({0, 0, h}) - f({0, 0, -h})};
+            ASSERT_GT(dot(normalize(gradient), sp.normal), 0.99f) << "ray " << i;
+        }
 
         // Leave on the side the ray came from, in a random direction of that hemisphere.
         const Normal3 n = face_forward(sp.normal, -ray.direction);
