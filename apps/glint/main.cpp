@@ -3,6 +3,7 @@
 #include <cstdio>
 #include <limits>
 
+#include "glint/accel/make_aggregate.h"
 #include "glint/scene/scene.h"
 #include "render_command.h"
 
@@ -36,6 +37,11 @@ void add_render_command(CLI::App& app, glint::cli::RenderCommand& c) {
     render->add_option("--max-depth", c.max_depth, "Deepest level of the ray tree (eye rays are 1)")
         ->check(CLI::Range(1, glint::kMaxDepth));
     render->add_option("--seed", c.seed, "Seed of the random numbers (same seed, same image)");
+    std::vector<std::string> accels;
+    for (const std::string_view name : glint::accel_names()) accels.emplace_back(name);
+    render
+        ->add_option("--accel", c.accel, "Acceleration structure (the image does not depend on it)")
+        ->check(CLI::IsMember(accels));
     render->add_option("--stats", c.stats_file, "Also write the render's figures as JSON here");
     render->add_flag("--ppm-ascii", c.ppm_ascii,
                      "Write .ppm images as ASCII (P3), not binary (P6)");

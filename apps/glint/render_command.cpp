@@ -117,7 +117,9 @@ int run_render(const RenderCommand& command) {
         for (const std::string& warning : scene.warnings)
             std::fprintf(stderr, "glint: warning: %s\n", warning.c_str());
         apply_overrides(command, scene.settings);
-        const World world(scene);
+        const auto accel = accel_from_name(command.accel);
+        if (!accel) throw UsageError{"unknown acceleration structure \"" + command.accel + "\""};
+        const World world(scene, *accel);
 
         RenderOptions options;
         options.threads = command.threads;

@@ -11,7 +11,8 @@ struct RenderCommand {
     std::string scene;
     std::string output;  // empty: the scene's name with .png, in the current directory
     std::optional<int> width, height, spp, max_depth;
-    int threads = 0;  // 0: all cores
+    int threads = 0;            // 0: all cores
+    std::string accel = "bvh";  // an acceleration structure's name (accel_names())
     std::uint64_t seed = 0;
     bool quiet = false;
     bool ppm_ascii = false;

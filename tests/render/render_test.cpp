@@ -33,6 +33,16 @@ TEST(Render, ImageIsIdenticalForOneAndManyThreadsAndAnyTileSize) {
     }
 }
 
+TEST(Render, EveryAccelerationStructureGivesTheSameImage) {
+    const Scene scene = showcase(64, 48);
+    const RenderResult reference = render(World(scene, AccelKind::list), {});
+    for (const std::string_view name : accel_names()) {
+        const RenderResult r = render(World(scene, *accel_from_name(name)), {});
+        EXPECT_TRUE(r.image.pixels == reference.image.pixels) << name;
+        EXPECT_EQ(r.rays, reference.rays) << name;
+    }
+}
+
 TEST(Render, CountsOnePrimaryRayPerSample) {
     Scene scene = showcase(20, 10);
     scene.settings.samples_per_pixel = 4;

@@ -2,6 +2,7 @@
 // set of primitives. Queries never allocate and never throw.
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
 #include <optional>
 
@@ -18,6 +19,13 @@ struct Hit {
     std::uint32_t primitive;  // index into the primitives the aggregate was built over
 };
 
+// The order of closest hits that every aggregate follows, so that all return exactly the same
+// hit: the smaller t, and at equal t the lower primitive index.
+constexpr bool nearer(const Hit& a, const Hit& b) {
+    return a.shape_hit.t < b.shape_hit.t ||
+           (a.shape_hit.t == b.shape_hit.t && a.primitive < b.primitive);
+}
+
 // Built over a primitive array that the caller keeps alive and unchanged.
 class Aggregate {
 public:
@@ -25,11 +33,13 @@ public:
 
     // Bounds of the bounded primitives; unbounded ones (planes) are not included.
     virtual Bounds3 bounds() const = 0;
-    // The nearest hit with t in t_range among primitives visible to ray_mask.
+    // The nearest hit with t in t_range among primitives visible to ray_mask (see nearer()).
     virtual std::optional<Hit> intersect(const Ray& ray, Interval t_range,
                                          std::uint32_t ray_mask) const = 0;
     // Whether any primitive visible to ray_mask is hit with t in t_range (shadow feelers).
     virtual bool occluded(const Ray& ray, Interval t_range, std::uint32_t ray_mask) const = 0;
+    // Memory the structure takes beyond the primitives themselves, in bytes.
+    virtual std::size_t memory_bytes() const = 0;
 };
 
 }  // namespace glint

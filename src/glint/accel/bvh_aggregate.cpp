@@ -24,8 +24,9 @@ std::optional<Hit> BvhAggregate::intersect(const Ray& ray, Interval t_range,
         if ((p.visibility & ray_mask) == 0) return std::nullopt;
         const auto hit = glint::intersect(p.shape, ray, range);
         if (!hit) return std::nullopt;
-        closest = Hit{*hit, index};
-        return hit->t;
+        const Hit candidate{*hit, index};
+        if (!closest || nearer(candidate, *closest)) closest = candidate;
+        return closest->shape_hit.t;
     };
     for (const std::uint32_t index : unbounded_) {
         if (const auto t = try_primitive(index, t_range)) t_range.max = *t;
@@ -46,6 +47,12 @@ bool BvhAggregate::occluded(const Ray& ray, Interval t_range, std::uint32_t ray_
     }
     return bvh_any_hit(bvh_, ray, t_range,
                        [&](std::uint32_t i, Interval range) { return hits(bounded_[i], range); });
+}
+
+std::size_t BvhAggregate::memory_bytes() const {
+    return sizeof(*this) + bvh_.nodes.capacity() * sizeof(BvhNode) +
+           bvh_.primitive_indices.capacity() * sizeof(std::uint32_t) +
+           (bounded_.capacity() + unbounded_.capacity()) * sizeof(std::uint32_t);
 }
 
 }  // namespace glint

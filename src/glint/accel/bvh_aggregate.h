@@ -19,6 +19,7 @@ public:
     std::optional<Hit> intersect(const Ray& ray, Interval t_range,
                                  std::uint32_t ray_mask) const override;
     bool occluded(const Ray& ray, Interval t_range, std::uint32_t ray_mask) const override;
+    std::size_t memory_bytes() const override;
 
 private:
     std::span<const Primitive> primitives_;

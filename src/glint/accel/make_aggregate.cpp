@@ -15,4 +15,31 @@ std::unique_ptr<Aggregate> make_aggregate(AccelKind kind, std::span<const Primit
     return nullptr;
 }
 
+namespace {
+// One row per structure: a new one adds its row here and its case above.
+struct Named {
+    std::string_view name;
+    AccelKind kind;
+};
+constexpr Named kStructures[] = {{"bvh", AccelKind::bvh}, {"list", AccelKind::list}};
+}  // namespace
+
+std::string_view accel_name(AccelKind kind) {
+    for (const Named& s : kStructures)
+        if (s.kind == kind) return s.name;
+    return "unknown";
+}
+
+std::optional<AccelKind> accel_from_name(std::string_view name) {
+    for (const Named& s : kStructures)
+        if (s.name == name) return s.kind;
+    return std::nullopt;
+}
+
+std::vector<std::string_view> accel_names() {
+    std::vector<std::string_view> names;
+    for (const Named& s : kStructures) names.push_back(s.name);
+    return names;
+}
+
 }  // namespace glint

@@ -15,6 +15,8 @@ std::optional<Hit> PrimitiveList::intersect(const Ray& ray, Interval t_range,
     for (std::uint32_t i = 0; i < primitives_.size(); ++i) {
         if ((primitives_[i].visibility & ray_mask) == 0) continue;
         if (const auto hit = glint::intersect(primitives_[i].shape, ray, t_range)) {
+            // In index order, a hit at an equal t is never nearer (see nearer()).
+            if (closest && hit->t == closest->shape_hit.t) continue;
             closest = Hit{*hit, i};
             t_range.max = hit->t;  // only nearer hits from now on
         }
