@@ -42,6 +42,10 @@ void add_render_command(CLI::App& app, glint::cli::RenderCommand& c) {
     render
         ->add_option("--accel", c.accel, "Acceleration structure (the image does not depend on it)")
         ->check(CLI::IsMember(accels));
+    render
+        ->add_option("--shadow-accel", c.shadow_accel,
+                     "Shadow feelers: none, light-buffer (the default), or light-buffer+cache")
+        ->check(CLI::IsMember({"none", "light-buffer", "light-buffer+cache"}));
     render->add_option("--stats", c.stats_file, "Also write the render's figures as JSON here");
     render->add_flag("--ppm-ascii", c.ppm_ascii,
                      "Write .ppm images as ASCII (P3), not binary (P6)");

@@ -119,7 +119,10 @@ int run_render(const RenderCommand& command) {
         apply_overrides(command, scene.settings);
         const auto accel = accel_from_name(command.accel);
         if (!accel) throw UsageError{"unknown acceleration structure \"" + command.accel + "\""};
-        const World world(scene, *accel);
+        ShadowAcceleration shadows;
+        shadows.light_buffer = command.shadow_accel != "none";
+        shadows.occluder_cache = command.shadow_accel == "light-buffer+cache";
+        const World world(scene, *accel, shadows);
 
         RenderOptions options;
         options.threads = command.threads;

@@ -13,6 +13,8 @@ struct RenderCommand {
     std::optional<int> width, height, spp, max_depth;
     int threads = 0;            // 0: all cores
     std::string accel = "bvh";  // an acceleration structure's name (accel_names())
+    // Shadow feelers: "none", "light-buffer", or "light-buffer+cache".
+    std::string shadow_accel = "light-buffer";
     std::uint64_t seed = 0;
     bool quiet = false;
     bool ppm_ascii = false;

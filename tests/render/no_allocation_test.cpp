@@ -31,7 +31,7 @@ TEST(PerRayPath, TracingAllocatesNothing) {
     scene.settings.width = 64;
     scene.settings.height = 48;
     const World world(scene);
-    const WhittedIntegrator integrator(world);
+    WhittedIntegrator integrator(world);
     RayStats stats;
     const long before = g_allocations;
     for (int y = 0; y < 48; ++y)

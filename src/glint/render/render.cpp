@@ -22,9 +22,10 @@ struct TileTotals {
     BadSamples bad;
 };
 
-void render_tile(const Tile& tile, const World& world, const WhittedIntegrator& integrator,
-                 const PixelSampler& sampler, Film& film, TileTotals& totals) {
+void render_tile(const Tile& tile, const World& world, const PixelSampler& sampler, Film& film,
+                 TileTotals& totals) {
     const Camera& camera = world.camera();
+    WhittedIntegrator integrator(world);  // one per tile: it holds per-thread caches
     for (int y = tile.y0; y < tile.y1; ++y)
         for (int x = tile.x0; x < tile.x1; ++x)
             for (int s = 0; s < sampler.samples_per_pixel(); ++s) {
@@ -44,7 +45,6 @@ RenderResult render(const World& world, const RenderOptions& options, RenderProg
 
     Film film(settings.width, settings.height);
     const PixelSampler sampler(settings.sampler, settings.samples_per_pixel, options.seed);
-    const WhittedIntegrator integrator(world);
 
     RenderResult result;
     std::mutex totals_mutex;
@@ -66,7 +66,7 @@ RenderResult render(const World& world, const RenderOptions& options, RenderProg
                         continue;
                     }
                     TileTotals totals;
-                    render_tile(tiles[i], world, integrator, sampler, film, totals);
+                    render_tile(tiles[i], world, sampler, film, totals);
                     {
                         const std::lock_guard lock(totals_mutex);
                         result.rays += totals.rays;

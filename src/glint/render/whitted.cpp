@@ -5,12 +5,12 @@
 
 namespace glint {
 
-Color WhittedIntegrator::trace_eye_ray(const Ray& ray, RayStats& stats) const {
+Color WhittedIntegrator::trace_eye_ray(const Ray& ray, RayStats& stats) {
     ++stats.primary;
     return trace(ray, 1, 1, stats);
 }
 
-Color WhittedIntegrator::trace(const Ray& ray, int depth, float weight, RayStats& stats) const {
+Color WhittedIntegrator::trace(const Ray& ray, int depth, float weight, RayStats& stats) {
     const RenderSettings& settings = world_.settings();
     const auto hit = world_.intersect(ray, {0, kInfinity}, kVisibleToCameraRays);
     if (!hit) return settings.background;
@@ -28,11 +28,12 @@ Color WhittedIntegrator::trace(const Ray& ray, int depth, float weight, RayStats
     const Vector3 to_viewer = -ray.direction;
 
     Color color = m.emission + ambient_term(m, surface_color, world_.ambient());
-    for (const Light& light : world_.lights()) {
-        const LightSample ls = sample_light(light, sp.p);
+    const auto lights = world_.lights();
+    for (std::size_t light = 0; light < lights.size(); ++light) {
+        const LightSample ls = sample_light(lights[light], sp.p);
         // A light behind the surface adds nothing, so it needs no feeler.
         if (dot(n, ls.to_light) <= 0) continue;
-        const float shadow = shadow_factor(sp, ng, ls.to_light, ls.distance, stats);
+        const float shadow = shadow_factor(light, sp, ng, ls.to_light, ls.distance, stats);
         if (shadow == 0) continue;
         color += shadow * light_term(m, surface_color, n, ls.to_light, to_viewer, ls.intensity);
     }
@@ -63,14 +64,15 @@ Color WhittedIntegrator::trace(const Ray& ray, int depth, float weight, RayStats
     return color;
 }
 
-float WhittedIntegrator::shadow_factor(const SurfacePoint& sp, Normal3 n, Vector3 to_light,
-                                       float light_distance, RayStats& stats) const {
+float WhittedIntegrator::shadow_factor(std::size_t light, const SurfacePoint& sp, Normal3 n,
+                                       Vector3 to_light, float light_distance, RayStats& stats) {
     Ray feeler = world_.spawn_ray(sp.p, n, to_light, sp.error);
     // The offset origin is slightly nearer to or farther from the light; stop just short of it.
     float remaining = light_distance - distance(sp.p, feeler.origin);
     if (!world_.settings().transparent_shadows) {
         ++stats.shadow;
-        return world_.occluded(feeler, {0, remaining}, kVisibleToShadowRays) ? 0.0f : 1.0f;
+        return world_.occluded_towards(light, feeler, {0, remaining}, last_occluder_[light]) ? 0.0f
+                                                                                             : 1.0f;
     }
     float factor = 1;
     for (int crossing = 0; crossing < kMaxShadowCrossings; ++crossing) {

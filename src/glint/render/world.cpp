@@ -22,7 +22,7 @@ float scene_scale(const Bounds3& bounds, Point3 eye) {
 
 }  // namespace
 
-World::World(const Scene& scene, AccelKind accel)
+World::World(const Scene& scene, AccelKind accel, ShadowAcceleration shadows)
     : settings_(scene.settings),
       camera_(scene.camera, scene.settings.width, scene.settings.height),
       ambient_(scene.ambient),
@@ -38,6 +38,24 @@ World::World(const Scene& scene, AccelKind accel)
     }
     aggregate_ = make_aggregate(accel, primitives_);
     scene_scale_ = scene_scale(aggregate_->bounds(), camera_.eye());
+    shadows_ = shadows;
+    for (const Light& light : lights_) {
+        const auto* point = std::get_if<PointLight>(&light);
+        light_buffers_.push_back(point && shadows.light_buffer
+                                     ? std::make_unique<LightBuffer>(point->position, primitives_)
+                                     : nullptr);
+    }
+}
+
+bool World::occluded_towards(std::size_t light, const Ray& ray, Interval t_range,
+                             std::uint32_t& last_occluder) const {
+    if (!shadows_.occluder_cache) last_occluder = LightBuffer::kNoPrimitive;
+    if (const LightBuffer* buffer = light_buffers_[light].get()) {
+        if (const auto answer = buffer->occluded(ray, t_range, last_occluder)) return *answer;
+    }
+    // Directional lights, point lights without a buffer and crowded cells ask the aggregate,
+    // which says whether, not what: there is nothing to cache.
+    return aggregate_->occluded(ray, t_range, kVisibleToShadowRays);
 }
 
 float World::ray_epsilon(Point3 p) const {
