@@ -63,8 +63,9 @@ Bounds3 relative(const Bounds3& b, Point3 origin) {
 LightBuffer::LightBuffer(Point3 light, std::span<const Primitive> primitives, int resolution)
     : light_(light), primitives_(primitives) {
     // About one primitive a cell on average, between 8 and 256 cells along an edge.
-    resolution_ = resolution > 0 ? resolution
-                                 : std::clamp(int(std::sqrt(double(primitives.size()) / 6)), 8, 256);
+    resolution_ = resolution > 0
+                      ? resolution
+                      : std::clamp(int(std::sqrt(double(primitives.size()) / 6)), 8, 256);
     const std::size_t cells = 6 * std::size_t(resolution_) * resolution_;
     std::vector<std::uint32_t> count(cells + 1, 0);
 
@@ -97,7 +98,8 @@ LightBuffer::LightBuffer(Point3 light, std::span<const Primitive> primitives, in
     for (std::size_t c = 0; c < cells; ++c) count[c + 1] += count[c];
     cell_start_ = count;
     entries_.resize(count[cells]);
-    for (const std::uint32_t i : bounded) for_each_cell(i, [&](std::size_t c) { entries_[count[c]++] = i; });
+    for (const std::uint32_t i : bounded)
+        for_each_cell(i, [&](std::size_t c) { entries_[count[c]++] = i; });
 }
 
 std::uint32_t LightBuffer::cell_of(Vector3 d) const {
