@@ -1,13 +1,15 @@
 #!/usr/bin/env bash
 # Installs the Debian 12 packages glint builds against, skipping those already present.
+# With --bench, also POV-Ray, the reference renderer of bench/spd_vs_povray.
 set -euo pipefail
 
 packages=(
     build-essential cmake pkg-config clang-format
     libyaml-cpp-dev libtbb-dev libpng-dev zlib1g-dev libopenexr-dev libstb-dev
-    libassimp-dev
+    libassimp-dev libembree-dev
     libcli11-dev libgtest-dev libgmock-dev libbenchmark-dev
 )
+[ "${1:-}" = "--bench" ] && packages+=(povray)
 
 missing=()
 for p in "${packages[@]}"; do

@@ -26,6 +26,12 @@ constexpr bool nearer(const Hit& a, const Hit& b) {
            (a.shape_hit.t == b.shape_hit.t && a.primitive < b.primitive);
 }
 
+// Whether a ray can hit anything: a NaN or infinite origin or direction hits nothing, in every
+// aggregate alike (slab and shape tests would each treat the NaN their own way).
+inline bool is_traceable(const Ray& ray) {
+    return is_finite(ray.origin) && is_finite(ray.direction);
+}
+
 // Built over a primitive array that the caller keeps alive and unchanged.
 class Aggregate {
 public:
@@ -34,12 +40,22 @@ public:
     // Bounds of the bounded primitives; unbounded ones (planes) are not included.
     virtual Bounds3 bounds() const = 0;
     // The nearest hit with t in t_range among primitives visible to ray_mask (see nearer()).
-    virtual std::optional<Hit> intersect(const Ray& ray, Interval t_range,
-                                         std::uint32_t ray_mask) const = 0;
+    std::optional<Hit> intersect(const Ray& ray, Interval t_range, std::uint32_t ray_mask) const {
+        if (!is_traceable(ray)) return std::nullopt;
+        return closest_hit(ray, t_range, ray_mask);
+    }
     // Whether any primitive visible to ray_mask is hit with t in t_range (shadow feelers).
-    virtual bool occluded(const Ray& ray, Interval t_range, std::uint32_t ray_mask) const = 0;
+    bool occluded(const Ray& ray, Interval t_range, std::uint32_t ray_mask) const {
+        return is_traceable(ray) && any_hit(ray, t_range, ray_mask);
+    }
     // Memory the structure takes beyond the primitives themselves, in bytes.
     virtual std::size_t memory_bytes() const = 0;
+
+protected:
+    // intersect() and occluded() for a traceable ray.
+    virtual std::optional<Hit> closest_hit(const Ray& ray, Interval t_range,
+                                           std::uint32_t ray_mask) const = 0;
+    virtual bool any_hit(const Ray& ray, Interval t_range, std::uint32_t ray_mask) const = 0;
 };
 
 }  // namespace glint

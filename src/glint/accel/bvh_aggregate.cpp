@@ -1,5 +1,7 @@
 #include "glint/accel/bvh_aggregate.h"
 
+#include "glint/accel/rounding_margin.h"
+
 namespace glint {
 
 BvhAggregate::BvhAggregate(std::span<const Primitive> primitives) : primitives_(primitives) {
@@ -9,15 +11,21 @@ BvhAggregate::BvhAggregate(std::span<const Primitive> primitives) : primitives_(
         if (b.is_finite()) {
             bounded_.push_back(i);
             bounds.push_back(b);
+            bounds_ = merge(bounds_, b);
         } else {
             unbounded_.push_back(i);
         }
     }
+    // Grown boxes: a hit on a box's face (a flat mesh, a shared edge) is never culled by the
+    // rounding of the slab test, so ties at equal t resolve as in the list.
+    const float margin = rounding_margin(bounds_);
+    const Vector3 grow{margin, margin, margin};
+    for (Bounds3& b : bounds) b = {b.min - grow, b.max + grow};
     bvh_ = build_bvh(bounds);
 }
 
-std::optional<Hit> BvhAggregate::intersect(const Ray& ray, Interval t_range,
-                                           std::uint32_t ray_mask) const {
+std::optional<Hit> BvhAggregate::closest_hit(const Ray& ray, Interval t_range,
+                                             std::uint32_t ray_mask) const {
     std::optional<Hit> closest;
     const auto try_primitive = [&](std::uint32_t index, Interval range) -> std::optional<float> {
         const Primitive& p = primitives_[index];
@@ -37,7 +45,7 @@ std::optional<Hit> BvhAggregate::intersect(const Ray& ray, Interval t_range,
     return closest;
 }
 
-bool BvhAggregate::occluded(const Ray& ray, Interval t_range, std::uint32_t ray_mask) const {
+bool BvhAggregate::any_hit(const Ray& ray, Interval t_range, std::uint32_t ray_mask) const {
     const auto hits = [&](std::uint32_t index, Interval range) {
         const Primitive& p = primitives_[index];
         return (p.visibility & ray_mask) != 0 && glint::intersect(p.shape, ray, range).has_value();

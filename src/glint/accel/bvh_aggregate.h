@@ -15,17 +15,19 @@ class BvhAggregate final : public Aggregate {
 public:
     explicit BvhAggregate(std::span<const Primitive> primitives);
 
-    Bounds3 bounds() const override { return bvh_.bounds(); }
-    std::optional<Hit> intersect(const Ray& ray, Interval t_range,
-                                 std::uint32_t ray_mask) const override;
-    bool occluded(const Ray& ray, Interval t_range, std::uint32_t ray_mask) const override;
+    Bounds3 bounds() const override { return bounds_; }
     std::size_t memory_bytes() const override;
 
 private:
+    std::optional<Hit> closest_hit(const Ray& ray, Interval t_range,
+                                   std::uint32_t ray_mask) const override;
+    bool any_hit(const Ray& ray, Interval t_range, std::uint32_t ray_mask) const override;
+
     std::span<const Primitive> primitives_;
     Bvh bvh_;                               // over bounded_
     std::vector<std::uint32_t> bounded_;    // BVH primitive index -> primitive
     std::vector<std::uint32_t> unbounded_;  // primitives with infinite bounds
+    Bounds3 bounds_;                        // of the bounded primitives, not grown
 };
 
 }  // namespace glint

@@ -1,7 +1,13 @@
 #include "glint/accel/make_aggregate.h"
 
 #include "glint/accel/bvh_aggregate.h"
+#include "glint/accel/grid_aggregate.h"
+#include "glint/accel/kdtree_aggregate.h"
 #include "glint/accel/primitive_list.h"
+
+#ifdef GLINT_HAVE_EMBREE
+#include "glint/accel/embree_aggregate.h"
+#endif
 
 namespace glint {
 
@@ -11,6 +17,14 @@ std::unique_ptr<Aggregate> make_aggregate(AccelKind kind, std::span<const Primit
             return std::make_unique<PrimitiveList>(primitives);
         case AccelKind::bvh:
             return std::make_unique<BvhAggregate>(primitives);
+        case AccelKind::grid:
+            return std::make_unique<GridAggregate>(primitives);
+        case AccelKind::kdtree:
+            return std::make_unique<KdTreeAggregate>(primitives);
+#ifdef GLINT_HAVE_EMBREE
+        case AccelKind::embree:
+            return std::make_unique<EmbreeAggregate>(primitives);
+#endif
     }
     return nullptr;
 }
@@ -21,7 +35,13 @@ struct Named {
     std::string_view name;
     AccelKind kind;
 };
-constexpr Named kStructures[] = {{"bvh", AccelKind::bvh}, {"list", AccelKind::list}};
+constexpr Named kStructures[] = {
+    {"bvh", AccelKind::bvh},       {"grid", AccelKind::grid},
+    {"kdtree", AccelKind::kdtree}, {"list", AccelKind::list},
+#ifdef GLINT_HAVE_EMBREE
+    {"embree", AccelKind::embree},
+#endif
+};
 }  // namespace
 
 std::string_view accel_name(AccelKind kind) {

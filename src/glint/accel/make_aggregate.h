@@ -1,5 +1,5 @@
-// Chooses an acceleration structure by kind or by name: the brute-force list (the reference)
-// and the BVH (the default).
+// Chooses an acceleration structure by kind or by name: the brute-force list (the reference),
+// the BVH (the default), the uniform grid and the kd-tree.
 #pragma once
 
 #include <memory>
@@ -12,7 +12,15 @@
 
 namespace glint {
 
-enum class AccelKind { list, bvh };
+enum class AccelKind {
+    list,
+    bvh,
+    grid,    // uniform grid with a 3D-DDA (see grid_aggregate.h)
+    kdtree,  // SAH kd-tree (see kdtree_aggregate.h)
+#ifdef GLINT_HAVE_EMBREE
+    embree,  // Intel Embree 3 (optional; see embree_aggregate.h)
+#endif
+};
 
 std::unique_ptr<Aggregate> make_aggregate(AccelKind kind, std::span<const Primitive> primitives);
 

@@ -9,8 +9,8 @@ PrimitiveList::PrimitiveList(std::span<const Primitive> primitives) : primitives
     }
 }
 
-std::optional<Hit> PrimitiveList::intersect(const Ray& ray, Interval t_range,
-                                            std::uint32_t ray_mask) const {
+std::optional<Hit> PrimitiveList::closest_hit(const Ray& ray, Interval t_range,
+                                              std::uint32_t ray_mask) const {
     std::optional<Hit> closest;
     for (std::uint32_t i = 0; i < primitives_.size(); ++i) {
         if ((primitives_[i].visibility & ray_mask) == 0) continue;
@@ -24,7 +24,7 @@ std::optional<Hit> PrimitiveList::intersect(const Ray& ray, Interval t_range,
     return closest;
 }
 
-bool PrimitiveList::occluded(const Ray& ray, Interval t_range, std::uint32_t ray_mask) const {
+bool PrimitiveList::any_hit(const Ray& ray, Interval t_range, std::uint32_t ray_mask) const {
     for (const Primitive& p : primitives_)
         if ((p.visibility & ray_mask) != 0 && glint::intersect(p.shape, ray, t_range)) return true;
     return false;

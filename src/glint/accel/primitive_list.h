@@ -13,12 +13,13 @@ public:
     explicit PrimitiveList(std::span<const Primitive> primitives);
 
     Bounds3 bounds() const override { return bounds_; }
-    std::optional<Hit> intersect(const Ray& ray, Interval t_range,
-                                 std::uint32_t ray_mask) const override;
-    bool occluded(const Ray& ray, Interval t_range, std::uint32_t ray_mask) const override;
     std::size_t memory_bytes() const override { return sizeof(*this); }
 
 private:
+    std::optional<Hit> closest_hit(const Ray& ray, Interval t_range,
+                                   std::uint32_t ray_mask) const override;
+    bool any_hit(const Ray& ray, Interval t_range, std::uint32_t ray_mask) const override;
+
     std::span<const Primitive> primitives_;
     Bounds3 bounds_;
 };

@@ -22,8 +22,9 @@ std::optional<ShapeHit> Box::intersect(const Ray& ray, Interval t_range) const {
         if (t_max_side < t_far) t_far = t_max_side, far_face = leave;
         if (t_near > t_far) return std::nullopt;
     }
-    if (t_range.contains(t_near)) return ShapeHit{t_near, 0, 0, near_face};
-    if (t_range.contains(t_far)) return ShapeHit{t_far, 0, 0, far_face};
+    // An infinite t (a NaN or zero direction) is no hit.
+    if (t_range.contains(t_near) && t_near < kInfinity) return ShapeHit{t_near, 0, 0, near_face};
+    if (t_range.contains(t_far) && t_far < kInfinity) return ShapeHit{t_far, 0, 0, far_face};
     return std::nullopt;
 }
 

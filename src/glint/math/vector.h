@@ -77,6 +77,9 @@ constexpr Normal3 face_forward(Normal3 n, Vector3 v) { return dot(n, v) < 0 ? -n
 constexpr Vector3 min(Vector3 a, Vector3 b) {
     return {std::min(a.x, b.x), std::min(a.y, b.y), std::min(a.z, b.z)};
 }
+constexpr Vector3 max(Vector3 a, Vector3 b) {
+    return {std::max(a.x, b.x), std::max(a.y, b.y), std::max(a.z, b.z)};
+}
 constexpr Point3 min(Point3 a, Point3 b) {
     return {std::min(a.x, b.x), std::min(a.y, b.y), std::min(a.z, b.z)};
 }

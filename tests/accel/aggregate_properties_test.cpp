@@ -1,0 +1,322 @@
+// Every acceleration structure that accel_names() lists returns exactly the brute-force list's
+// closest hits (same t, same primitive) and occlusion answers, on random and adversarial input.
+// Embree is the exception: its own triangle test differs in the last bits, so
+// embree_aggregate_test.cpp compares it with a tolerance instead.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+#include <memory>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "glint/accel/make_aggregate.h"
+#include "glint/accel/primitive_list.h"
+
+namespace glint {
+namespace {
+
+constexpr std::uint32_t kMasks[] = {kVisibleToCameraRays, kVisibleToShadowRays};
+
+// Every structure built over one scene, checked ray by ray against the list.
+class Agreement {
+public:
+    explicit Agreement(std::span<const Primitive> primitives) : list_(primitives) {
+        for (const std::string_view name : accel_names()) {
+            if (name == "embree") continue;
+            auto aggregate = make_aggregate(*accel_from_name(name), primitives);
+            EXPECT_TRUE(aggregate) << name;
+            if (aggregate) structures_.push_back({std::string(name), std::move(aggregate)});
+        }
+    }
+
+    // Compares closest hits and occlusion for both ray masks over `range`; counts the list's
+    // hits. `what` names the ray in failure messages.
+    void check(const Ray& ray, Interval range, const std::string& what) {
+        for (const std::uint32_t mask : kMasks) {
+            const std::optional<Hit> expected = list_.intersect(ray, range, mask);
+            const bool expected_occluded = list_.occluded(ray, range, mask);
+            hits_ += expected.has_value();
+            for (const auto& [name, aggregate] : structures_) {
+                const std::optional<Hit> got = aggregate->intersect(ray, range, mask);
+                ASSERT_EQ(got.has_value(), expected.has_value()) << name << ", " << what;
+                if (got) {
+                    ASSERT_EQ(got->shape_hit.t, expected->shape_hit.t) << name << ", " << what;
+                    ASSERT_EQ(got->primitive, expected->primitive) << name << ", " << what;
+                }
+                ASSERT_EQ(aggregate->occluded(ray, range, mask), expected_occluded)
+                    << name << ", " << what;
+            }
+        }
+    }
+
+    int hits() const { return hits_; }
+    std::size_t structure_count() const { return structures_.size(); }
+    const PrimitiveList& list() const { return list_; }
+
+private:
+    struct Named {
+        std::string name;
+        std::unique_ptr<Aggregate> aggregate;
+    };
+    PrimitiveList list_;
+    std::vector<Named> structures_;
+    int hits_ = 0;
+};
+
+std::string ray_text(const Ray& r, int i) {
+    return "ray " + std::to_string(i) + " o=(" + std::to_string(r.origin.x) + ", " +
+           std::to_string(r.origin.y) + ", " + std::to_string(r.origin.z) + ") d=(" +
+           std::to_string(r.direction.x) + ", " + std::to_string(r.direction.y) + ", " +
+           std::to_string(r.direction.z) + ")";
+}
+
+Vector3 random_direction(std::mt19937& rng) {
+    std::normal_distribution<float> g;
+    for (;;) {
+        const Vector3 d{g(rng), g(rng), g(rng)};
+        if (length_squared(d) > 1e-6f) return normalize(d);
+    }
+}
+
+// Spheres, boxes, triangles (a few degenerate: collinear or all in one point) and planes, of
+// sizes from tiny to a tenth of the scene and a few large ones; some cast no shadows.
+std::vector<Primitive> random_mix(int n, unsigned seed) {
+    std::mt19937 rng(seed);
+    std::uniform_real_distribution<float> pos(-10, 10), unit(0, 1);
+    std::vector<Primitive> prims;
+    for (int i = 0; i < n; ++i) {
+        const Point3 c{pos(rng), pos(rng), pos(rng)};
+        const float s = i % 97 == 0 ? 6.0f : 0.02f + 1.5f * unit(rng) * unit(rng);
+        Primitive p;
+        switch (i % 4) {
+            case 0:
+                p.shape = Sphere{c, s};
+                break;
+            case 1:
+                p.shape = Box{c, c + Vector3{s, s * (0.1f + unit(rng)), s * 2}};
+                break;
+            case 2:
+                p.shape =
+                    Triangle{{c, c + s * random_direction(rng), c + s * random_direction(rng)}};
+                break;
+            default:
+                if (i % 40 == 3) {
+                    p.shape = Triangle{{c, c + Vector3{s, s, 0}, c + Vector3{2 * s, 2 * s, 0}}};
+                } else if (i % 40 == 7) {
+                    p.shape = Triangle{{c, c, c}};
+                } else {
+                    p.shape = Triangle{{c, c + Vector3{s, 0, 0}, c + Vector3{0, s, s}}};
+                }
+        }
+        if (unit(rng) < 0.2f)
+            p.visibility = unit(rng) < 0.5f ? kVisibleToCameraRays : kVisibleToShadowRays;
+        prims.push_back(p);
+    }
+    prims.push_back({Plane{{0, -11, 0}, {0, 1, 0}}});
+    prims.push_back({Plane{{12, 0, 0}, normalize(Normal3{-1, 0.2f, 0.1f})}, kVisibleToCameraRays});
+    return prims;
+}
+
+TEST(AggregateProperties, EveryStructureIsListed) {
+    const auto names = accel_names();
+    for (const char* name : {"bvh", "grid", "kdtree", "list"})
+        EXPECT_NE(std::find(names.begin(), names.end(), name), names.end()) << name;
+}
+
+TEST(AggregateProperties, RandomRaysOverRandomScenes) {
+    for (const unsigned seed : {1u, 2u}) {
+        const auto prims = random_mix(3000, seed);
+        Agreement agree(prims);
+        std::mt19937 rng(seed + 100);
+        std::uniform_real_distribution<float> u(-1, 1), unit(0, 1);
+        for (int i = 0; i < 1500; ++i) {
+            // Origins inside the scene and up to a few scene sizes away.
+            const float reach = i % 3 == 0 ? 40.0f : 12.0f;
+            const Ray ray{{u(rng) * reach, u(rng) * reach, u(rng) * reach}, random_direction(rng)};
+            agree.check(ray, {}, ray_text(ray, i));
+            // An interval that ends, or starts and ends, inside the scene.
+            agree.check(ray, {0, 15 * unit(rng)}, ray_text(ray, i) + " short");
+            const float start = 10 * unit(rng);
+            agree.check(ray, {start, start + 3 * unit(rng)}, ray_text(ray, i) + " segment");
+            if (HasFatalFailure()) return;
+        }
+        EXPECT_GT(agree.hits(), 1500);
+    }
+}
+
+TEST(AggregateProperties, AxisParallelRays) {
+    const auto prims = random_mix(2000, 3);
+    Agreement agree(prims);
+    std::mt19937 rng(4);
+    std::uniform_real_distribution<float> u(-1, 1);
+    std::uniform_int_distribution<int> pick(0, 5);
+    for (int i = 0; i < 2000; ++i) {
+        const int k = pick(rng);
+        const float sign = k % 2 ? 1.0f : -1.0f;
+        Vector3 d{0, 0, 0};
+        (k / 2 == 0 ? d.x : k / 2 == 1 ? d.y : d.z) = sign;
+        // Integer and half-integer origins too: they line up with bounds and cell planes.
+        Point3 o{u(rng) * 12, u(rng) * 12, u(rng) * 12};
+        if (i % 4 == 0) o = {std::round(o.x), std::round(o.y), std::round(o.z)};
+        if (i % 4 == 1) o = {std::round(2 * o.x) / 2, std::round(2 * o.y) / 2, o.z};
+        const Ray ray{o, d};
+        agree.check(ray, {}, ray_text(ray, i));
+        if (i % 2) agree.check({o, -d}, {0, 6}, ray_text(ray, i) + " reversed, short");
+        if (HasFatalFailure()) return;
+    }
+    EXPECT_GT(agree.hits(), 500);
+}
+
+TEST(AggregateProperties, RaysStartingOnFacesAndInsidePrimitives) {
+    const auto prims = random_mix(1500, 5);
+    Agreement agree(prims);
+    std::mt19937 rng(6);
+    std::uniform_real_distribution<float> unit(0, 1);
+    int i = 0;
+    for (const Primitive& p : prims) {
+        Point3 starts[3];
+        int count = 0;
+        if (const Box* box = std::get_if<Box>(&p.shape)) {
+            const Vector3 e = box->max - box->min;
+            starts[count++] = {box->min.x, box->min.y + unit(rng) * e.y,
+                               box->min.z + unit(rng) * e.z};
+            starts[count++] = {box->min.x + unit(rng) * e.x, box->max.y,
+                               box->min.z + unit(rng) * e.z};
+            starts[count++] = box->min + e * 0.5f;  // inside
+        } else if (const Sphere* sphere = std::get_if<Sphere>(&p.shape)) {
+            starts[count++] = sphere->center;
+            starts[count++] = sphere->center + random_direction(rng) * sphere->radius;
+        } else if (const Triangle* tri = std::get_if<Triangle>(&p.shape)) {
+            const auto& v = tri->vertices;
+            const float a = unit(rng), b = unit(rng) * (1 - a);
+            starts[count++] = v[0] + (v[1] - v[0]) * a + (v[2] - v[0]) * b;
+            starts[count++] = v[1];  // a vertex
+        }
+        for (int k = 0; k < count; ++k) {
+            const Ray ray{starts[k], random_direction(rng)};
+            agree.check(ray, {}, ray_text(ray, i));
+            agree.check(ray, {1e-4f, kInfinity}, ray_text(ray, i) + " offset");
+            ++i;
+        }
+        if (HasFatalFailure()) return;
+    }
+    EXPECT_GT(agree.hits(), 500);
+}
+
+// A (flat or tilted) mesh of n x n quads, two triangles each, sharing edges and vertices, with
+// a degenerate triangle along some edges; all in one plane, a flat scene for the grid.
+std::vector<Primitive> triangle_grid(int n, bool tilted) {
+    const auto vertex = [&](float i, float j) {
+        return Point3{i, tilted ? 0.37f * i + 0.21f * j : 0.0f, j};
+    };
+    std::vector<Primitive> prims;
+    for (int i = 0; i < n; ++i) {
+        for (int j = 0; j < n; ++j) {
+            const Point3 a = vertex(float(i), float(j)), b = vertex(float(i + 1), float(j));
+            const Point3 c = vertex(float(i + 1), float(j + 1)), d = vertex(float(i), float(j + 1));
+            prims.push_back({Triangle{{a, b, c}}});
+            prims.push_back({Triangle{{a, c, d}}});
+            if ((i + j) % 7 == 0) prims.push_back({Triangle{{a, b, b}}});  // zero area
+        }
+    }
+    return prims;
+}
+
+TEST(AggregateProperties, RaysThroughSharedEdgesAndVerticesOfATriangleGrid) {
+    for (const bool tilted : {false, true}) {
+        const int n = 20;
+        const auto prims = triangle_grid(n, tilted);
+        Agreement agree(prims);
+        std::mt19937 rng(7);
+        std::uniform_real_distribution<float> u(-1, 1);
+        std::uniform_int_distribution<int> cell(0, n);
+        for (int i = 0; i < 3000; ++i) {
+            // Aim at a vertex, an edge's midpoint or a diagonal's midpoint.
+            float x = float(cell(rng)), z = float(cell(rng));
+            if (i % 3 == 1) x += 0.5f;
+            if (i % 3 == 2) x += 0.5f, z += 0.5f;
+            const Point3 target{x, tilted ? 0.37f * x + 0.21f * z : 0.0f, z};
+            const Point3 origin = target + Vector3{u(rng) * 10, 8 * u(rng), u(rng) * 10};
+            if (length_squared(target - origin) < 1e-6f) continue;
+            const Ray ray{origin, normalize(target - origin)};
+            agree.check(ray, {}, ray_text(ray, i) + (tilted ? " tilted" : " flat"));
+            if (HasFatalFailure()) return;
+        }
+        // Rays in the flat mesh's plane, along its edges and diagonals, through its vertices.
+        for (int k = 0; !tilted && k <= n; ++k) {
+            const float x = float(k);
+            agree.check({{x, 0, -1}, {0, 0, 1}}, {}, "in-plane ray along z " + std::to_string(k));
+            agree.check({{-1, 0, x}, {1, 0, 0}}, {}, "in-plane ray along x " + std::to_string(k));
+            agree.check({{x - 1, 0, -1}, normalize(Vector3{1, 0, 1})}, {},
+                        "in-plane diagonal ray " + std::to_string(k));
+        }
+        EXPECT_GT(agree.hits(), 1000);
+    }
+}
+
+TEST(AggregateProperties, NanAndZeroLengthDirectionsHitNothingOrAgree) {
+    const auto prims = random_mix(500, 8);
+    Agreement agree(prims);
+    const float nan = std::numeric_limits<float>::quiet_NaN();
+    const Point3 origins[] = {{0, 0, 0}, {30, 30, 30}, {3, -2, 1}};
+    for (const Point3 o : origins) {
+        for (const Vector3 d : {Vector3{nan, nan, nan}, Vector3{nan, 0, 1}, Vector3{0, 0, 0},
+                                Vector3{-0.0f, 0.0f, -0.0f}}) {
+            const Ray ray{o, d};
+            agree.check(ray, {}, ray_text(ray, 0));
+            agree.check(ray, {0, 5}, ray_text(ray, 0) + " short");
+            const bool is_nan = std::isnan(d.x) || std::isnan(d.y);
+            for (const std::string_view name : accel_names()) {
+                if (name == "embree" && !is_nan) continue;
+                const auto aggregate = make_aggregate(*accel_from_name(name), prims);
+                // NaN hits nothing; a zero direction from outside every primitive neither.
+                // (From inside a sphere or box the shapes themselves report a hit at some
+                // t > 0 for a zero direction; the list does too, and the check above holds.)
+                if (is_nan || o.x == 30) {
+                    EXPECT_FALSE(aggregate->intersect(ray, {}, ~0u)) << name;
+                }
+            }
+        }
+    }
+    // A NaN origin, and a NaN interval.
+    agree.check({{nan, 0, 0}, {0, 0, 1}}, {}, "NaN origin");
+    agree.check({{0, 0, -20}, {0, 0, 1}}, {nan, 10}, "NaN interval");
+}
+
+TEST(AggregateProperties, BuildsOverNoneOneAndOnlyUnboundedPrimitives) {
+    const Ray down{{0.5f, 5, 0.25f}, {0, -1, 0}};
+    const std::vector<std::vector<Primitive>> scenes{
+        {},
+        {{Sphere{{0, 0, 0}, 1}}},
+        {{Triangle{{Point3{0, 0, 0}, Point3{1, 0, 0}, Point3{0, 0, 1}}}}},
+        {{Plane{}}, {Plane{{0, 1, 0}, {0, 1, 0}}, kVisibleToShadowRays}},
+    };
+    for (const auto& prims : scenes) {
+        Agreement agree(prims);
+        agree.check(down, {}, "down");
+        agree.check({{0, 0, -5}, {0, 0, 1}}, {}, "along z");
+        agree.check({{0, -3, 0}, {0, 1, 0}}, {0, 2.5f}, "up, short");
+    }
+    for (const std::string_view name : accel_names()) {
+        const std::vector<Primitive> none;
+        EXPECT_TRUE(make_aggregate(*accel_from_name(name), none)->bounds().is_empty()) << name;
+    }
+}
+
+TEST(AggregateProperties, TwoHundredThousandCoincidentSpheres) {
+    const std::vector<Primitive> prims(200000, Primitive{Sphere{{1, 2, 3}, 0.5f}});
+    Agreement agree(prims);
+    const Ray rays[] = {{{1, 2, -10}, {0, 0, 1}},
+                        {{1, 2, 3}, {0, 1, 0}},
+                        {{-5, -5, -5}, normalize(Vector3{6, 7, 8})},
+                        {{1.5f, 2, -10}, {0, 0, 1}},  // grazing
+                        {{5, 5, 5}, {1, 0, 0}}};      // away
+    for (const Ray& ray : rays) agree.check(ray, {}, ray_text(ray, 0));
+    EXPECT_EQ(agree.list().intersect(rays[0], {}, ~0u)->primitive, 0u);
+    EXPECT_GE(agree.hits(), 6);
+}
+
+}  // namespace
+}  // namespace glint
