@@ -1,8 +1,10 @@
-// The glint command-line tool: `glint render SCENE`, with --help and --version.
+// The glint command-line tool: `glint render SCENE` and `glint bench SCENE`, with --help and
+// --version.
 #include <CLI/CLI.hpp>
 #include <cstdio>
 #include <limits>
 
+#include "bench_command.h"
 #include "glint/accel/make_aggregate.h"
 #include "glint/scene/scene.h"
 #include "render_command.h"
@@ -18,6 +20,7 @@ Examples:
   glint render scenes/showcase.yaml                     writes showcase.png
   glint render scenes/showcase.yaml -o big.exr --width 1920 --spp 16
   glint render scene.yaml --threads 1 --stats stats.json --quiet
+  glint bench scene.nff --json --rays 100000           build time, Mrays/s per structure
 )";
 
 void add_render_command(CLI::App& app, glint::cli::RenderCommand& c) {
@@ -63,11 +66,14 @@ int main(int argc, char** argv) {
     app.require_subcommand(1);
     glint::cli::RenderCommand render;
     add_render_command(app, render);
+    glint::cli::BenchCommand bench;
+    const CLI::App* bench_app = glint::cli::add_bench_command(app, bench);
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {
         // --help and --version end parsing with a success code; all else is bad usage.
         return app.exit(e) == 0 ? 0 : 2;
     }
+    if (bench_app->parsed()) return glint::cli::run_bench(bench);
     return glint::cli::run_render(render);
 }

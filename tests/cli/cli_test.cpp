@@ -5,6 +5,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <sstream>
 #include <string>
 
@@ -168,6 +169,50 @@ TEST_F(Cli, RendersNffAndModelFilesDirectly) {
         EXPECT_EQ(r.exit_code, 0) << file << ": " << r.err;
         EXPECT_EQ(read_image(dir_ / "a.png").width, 32) << file;
     }
+}
+
+// One JSON object a line per structure, ray set and thread count, with the documented keys,
+// and the same hit counts for every exact structure.
+TEST_F(Cli, BenchPrintsOneJsonLinePerStructureRaySetAndThreadCount) {
+    const std::string jacks = std::string("'") + GLINT_SOURCE_DIR + "/tests/data/spd/jacks.nff'";
+    const Outcome r =
+        run_glint("bench " + jacks + " --json --rays 2000 --threads 2 --accel bvh,grid,kdtree");
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    std::istringstream lines(r.out);
+    std::string line;
+    int count = 0;
+    std::map<std::string, std::string> hits_by_set;
+    while (std::getline(lines, line)) {
+        ++count;
+        for (const char* key : {"\"accel\": ", "\"scene\": ", "\"rays\": ", "\"threads\": ",
+                                "\"build_s\": ", "\"mrays_per_s\": ", "\"bytes_per_prim\": "})
+            EXPECT_NE(line.find(key), std::string::npos) << key << " in " << line;
+        const auto field = [&](const std::string& key) {
+            const std::size_t at = line.find("\"" + key + "\": ") + key.size() + 4;
+            return line.substr(at, line.find_first_of(",}", at) - at);
+        };
+        const std::string set = field("rays"), hits = field("hits");
+        EXPECT_TRUE(set == "\"primary\"" || set == "\"incoherent\"" || set == "\"shadow\"") << set;
+        const auto [it, added] = hits_by_set.try_emplace(set, hits);
+        EXPECT_EQ(it->second, hits) << line;  // every structure finds the same hits
+    }
+    EXPECT_EQ(count, 3 * 3 * 2);  // structures x ray sets x {1, 2} threads
+    EXPECT_EQ(r.err, "");
+}
+
+TEST_F(Cli, BenchTableAndBadInput) {
+    const std::string jacks = std::string("'") + GLINT_SOURCE_DIR + "/tests/data/spd/jacks.nff'";
+    const Outcome table = run_glint("bench " + jacks + " --rays 500 --threads 1 --accel list");
+    EXPECT_EQ(table.exit_code, 0) << table.err;
+    EXPECT_NE(table.out.find("list     primary"), std::string::npos) << table.out;
+    EXPECT_NE(table.out.find("hit counts agree"), std::string::npos) << table.out;
+
+    EXPECT_EQ(run_glint("bench " + jacks + " --accel octree").exit_code, 2);
+    EXPECT_EQ(run_glint("bench " + jacks + " --rays 0").exit_code, 2);
+    write_scene("bad.nff", "v\nfrom 0 0 -5\nat 0 0 0\nup 0 1 0\nangle x\n");
+    const Outcome bad = run_glint("bench bad.nff");
+    EXPECT_EQ(bad.exit_code, 2);
+    EXPECT_NE(bad.err.find("bad.nff:5:7: error:"), std::string::npos) << bad.err;
 }
 
 TEST_F(Cli, BadNffExitsWithTwoAtTheOffendingToken) {

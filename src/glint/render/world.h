@@ -35,6 +35,8 @@ public:
     const Camera& camera() const { return camera_; }
     Color ambient() const { return ambient_; }
     std::span<const Light> lights() const { return lights_; }
+    // What the acceleration structure is built over, in scene order (to build others beside it).
+    std::span<const Primitive> primitives() const { return primitives_; }
 
     std::optional<Hit> intersect(const Ray& ray, Interval t_range, std::uint32_t mask) const {
         return aggregate_->intersect(ray, t_range, mask);
