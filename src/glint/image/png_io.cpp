@@ -54,6 +54,10 @@ bool encode_png(png_structp png, png_infop info, std::FILE* file, png_uint_32 wi
     png_set_IHDR(png, info, width, height, 8, PNG_COLOR_TYPE_RGB, PNG_INTERLACE_NONE,
                  PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
     png_set_sRGB_gAMA_and_cHRM(png, info, PNG_sRGB_INTENT_PERCEPTUAL);
+    // Dithered renders compress poorly at any level: zlib's fastest level makes files about 10%
+    // larger and writes them several times faster (at the default level, writing a 512x512
+    // image took longer than rendering a small scene).
+    png_set_compression_level(png, 1);
     png_write_info(png, info);
     png_write_image(png, rows);
     png_write_end(png, info);
