@@ -112,7 +112,7 @@ Solid octahedron(float r) {
     arrays.triangles = {{0, 2, 4}, {2, 1, 4}, {1, 3, 4}, {3, 0, 4},
                         {2, 0, 5}, {1, 2, 5}, {3, 1, 5}, {0, 3, 5}};
     const MeshBuild built = build_mesh(std::move(arrays));
-    EXPECT_TRUE(built.mesh && built.mesh->closed) << built.error;
+    EXPECT_TRUE(built.mesh && is_closed_surface(*built.mesh)) << built.error;
     return {std::make_shared<const Shape>(TriangleMesh{built.mesh}),
             [=](Point3 p) { return std::abs(p.x) + std::abs(p.y) + std::abs(p.z) < r; }};
 }

@@ -223,12 +223,12 @@ TEST(TriangleMesh, PropertiesOfAClosedMesh) {
 }
 
 TEST(TriangleMesh, ClosedMeshesAreSolidsAndOpenOnesAreNot) {
-    EXPECT_TRUE(build(sphere_mesh(2)).data->closed);
-    EXPECT_FALSE(build(quad_arrays()).data->closed);
+    EXPECT_TRUE(is_closed_surface(*build(sphere_mesh(2)).data));
+    EXPECT_FALSE(is_closed_surface(*build(quad_arrays()).data));
     // A closed mesh with one triangle turned over is not consistently oriented.
     MeshData flipped = sphere_mesh(2);
     std::swap(flipped.triangles[0][1], flipped.triangles[0][2]);
-    EXPECT_FALSE(build(flipped).data->closed);
+    EXPECT_FALSE(is_closed_surface(*build(flipped).data));
     // A closed mesh whose vertices are split (as files do for normals) is still closed.
     MeshData split = sphere_mesh(2);
     const auto first = split.triangles[0];
@@ -236,7 +236,7 @@ TEST(TriangleMesh, ClosedMeshesAreSolidsAndOpenOnesAreNot) {
         split.positions.push_back(split.positions[first[k]]);
         split.triangles[0][k] = std::uint32_t(split.positions.size() - 1);
     }
-    EXPECT_TRUE(build(split).data->closed);
+    EXPECT_TRUE(is_closed_surface(*build(split).data));
 }
 
 TEST(TriangleMesh, PropertiesOfANonConvexMesh) {

@@ -20,10 +20,12 @@ struct Hit {
 };
 
 // The order of closest hits that every aggregate follows, so that all return exactly the same
-// hit: the smaller t, and at equal t the lower primitive index.
+// hit: the smaller t; at equal t the lower primitive index, then (two triangles of one mesh) the
+// lower part.
 constexpr bool nearer(const Hit& a, const Hit& b) {
-    return a.shape_hit.t < b.shape_hit.t ||
-           (a.shape_hit.t == b.shape_hit.t && a.primitive < b.primitive);
+    if (a.shape_hit.t != b.shape_hit.t) return a.shape_hit.t < b.shape_hit.t;
+    if (a.primitive != b.primitive) return a.primitive < b.primitive;
+    return a.shape_hit.part < b.shape_hit.part;
 }
 
 // Whether a ray can hit anything: a NaN or infinite origin or direction hits nothing, in every

@@ -7,7 +7,8 @@
 #include <vector>
 
 #include "glint/accel/aggregate.h"
-#include "glint/geometry/bvh.h"
+#include "glint/accel/primitive_refs.h"
+#include "glint/geometry/bvh4_traversal.h"
 
 namespace glint {
 
@@ -23,9 +24,8 @@ private:
                                    std::uint32_t ray_mask) const override;
     bool any_hit(const Ray& ray, Interval t_range, std::uint32_t ray_mask) const override;
 
-    std::span<const Primitive> primitives_;
-    Bvh bvh_;                               // over bounded_
-    std::vector<std::uint32_t> bounded_;    // BVH primitive index -> primitive
+    PrimitiveRefs refs_;  // primitives, and the triangles of meshes placed directly
+    Bvh4 bvh_;            // over the bounded references; its leaves hold reference indices
     std::vector<std::uint32_t> unbounded_;  // primitives with infinite bounds
     Bounds3 bounds_;                        // of the bounded primitives, not grown
 };

@@ -100,12 +100,12 @@ std::array<int, 3> grid_resolution(Vector3 extent, std::size_t primitive_count, 
 }
 
 GridAggregate::GridAggregate(std::span<const Primitive> primitives, const GridBuildOptions& options)
-    : primitives_(primitives) {
-    assert(primitives.size() < Mailbox::kEmpty);
+    : refs_(primitives) {
+    assert(refs_.size() < Mailbox::kEmpty);
     std::vector<std::uint32_t> bounded;
     std::vector<Bounds3> boxes;
-    for (std::uint32_t i = 0; i < primitives.size(); ++i) {
-        const Bounds3 b = glint::bounds(primitives[i].shape);
+    for (std::uint32_t i = 0; i < refs_.size(); ++i) {
+        const Bounds3 b = refs_.bounds(i);
         if (b.is_finite()) {
             bounded.push_back(i);
             boxes.push_back(b);
@@ -161,11 +161,10 @@ std::optional<Hit> GridAggregate::closest_hit(const Ray& ray, Interval t_range,
                                               std::uint32_t ray_mask) const {
     std::optional<Hit> closest;
     const auto try_primitive = [&](std::uint32_t index) {
-        const Primitive& p = primitives_[index];
-        if ((p.visibility & ray_mask) == 0) return;
-        const auto hit = glint::intersect(p.shape, ray, t_range);
+        if (!refs_.visible(index, ray_mask)) return;
+        const auto hit = refs_.intersect(index, ray, t_range);
         if (!hit) return;
-        const Hit candidate{*hit, index};
+        const Hit candidate{*hit, refs_[index].primitive};
         if (!closest || nearer(candidate, *closest)) closest = candidate;
         t_range.max = closest->shape_hit.t;  // only nearer hits (or equal ones) from now on
     };
@@ -187,9 +186,7 @@ std::optional<Hit> GridAggregate::closest_hit(const Ray& ray, Interval t_range,
 
 bool GridAggregate::any_hit(const Ray& ray, Interval t_range, std::uint32_t ray_mask) const {
     const auto hits = [&](std::uint32_t index) {
-        const Primitive& p = primitives_[index];
-        return (p.visibility & ray_mask) != 0 &&
-               glint::intersect(p.shape, ray, t_range).has_value();
+        return refs_.visible(index, ray_mask) && refs_.intersect(index, ray, t_range).has_value();
     };
     for (const std::uint32_t index : unbounded_)
         if (hits(index)) return true;
@@ -211,7 +208,7 @@ bool GridAggregate::any_hit(const Ray& ray, Interval t_range, std::uint32_t ray_
 }
 
 std::size_t GridAggregate::memory_bytes() const {
-    return sizeof(*this) +
+    return sizeof(*this) + refs_.memory_bytes() +
            (cell_offsets_.capacity() + cell_primitives_.capacity() + unbounded_.capacity()) *
                sizeof(std::uint32_t);
 }

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "glint/accel/aggregate.h"
+#include "glint/accel/primitive_refs.h"
 
 namespace glint {
 
@@ -148,11 +149,11 @@ private:
                                    std::uint32_t ray_mask) const override;
     bool any_hit(const Ray& ray, Interval t_range, std::uint32_t ray_mask) const override;
 
-    std::span<const Primitive> primitives_;
-    Bounds3 bounds_;  // of the bounded primitives, as given (the layout's are padded)
+    PrimitiveRefs refs_;  // what the cells or leaves list, by index
+    Bounds3 bounds_;      // of the bounded primitives, as given (the layout's are padded)
     GridLayout layout_;
     std::vector<std::uint32_t> cell_offsets_;     // cell_count() + 1 entries; empty: no cells
-    std::vector<std::uint32_t> cell_primitives_;  // primitive indices, cell by cell
+    std::vector<std::uint32_t> cell_primitives_;  // reference indices (refs_), cell by cell
     std::vector<std::uint32_t> unbounded_;        // primitives with infinite bounds (planes)
 };
 

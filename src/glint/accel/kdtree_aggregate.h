@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "glint/accel/aggregate.h"
+#include "glint/accel/primitive_refs.h"
 
 namespace glint {
 
@@ -98,11 +99,11 @@ private:
     template <typename VisitLeaf>
     void walk(const Ray& ray, Interval t_range, VisitLeaf&& visit_leaf) const;
 
-    std::span<const Primitive> primitives_;
+    PrimitiveRefs refs_;   // what the cells or leaves list, by index
     Bounds3 bounds_;       // of the bounded primitives, as given
     Bounds3 tree_bounds_;  // the root's box: the grown bounds
     std::vector<KdNode> nodes_;
-    std::vector<std::uint32_t> leaf_primitives_;  // of leaves with two or more primitives
+    std::vector<std::uint32_t> leaf_primitives_;  // reference indices of leaves with two or more
     std::vector<std::uint32_t> unbounded_;        // primitives with infinite bounds (planes)
     int depth_ = 0;
 };

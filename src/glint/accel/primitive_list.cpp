@@ -2,8 +2,8 @@
 
 namespace glint {
 
-PrimitiveList::PrimitiveList(std::span<const Primitive> primitives) : primitives_(primitives) {
-    for (const Primitive& p : primitives_) {
+PrimitiveList::PrimitiveList(std::span<const Primitive> primitives) : refs_(primitives) {
+    for (const Primitive& p : primitives) {
         const Bounds3 b = glint::bounds(p.shape);
         if (b.is_finite()) bounds_ = merge(bounds_, b);
     }
@@ -12,12 +12,12 @@ PrimitiveList::PrimitiveList(std::span<const Primitive> primitives) : primitives
 std::optional<Hit> PrimitiveList::closest_hit(const Ray& ray, Interval t_range,
                                               std::uint32_t ray_mask) const {
     std::optional<Hit> closest;
-    for (std::uint32_t i = 0; i < primitives_.size(); ++i) {
-        if ((primitives_[i].visibility & ray_mask) == 0) continue;
-        if (const auto hit = glint::intersect(primitives_[i].shape, ray, t_range)) {
-            // In index order, a hit at an equal t is never nearer (see nearer()).
+    for (std::uint32_t i = 0; i < refs_.size(); ++i) {
+        if (!refs_.visible(i, ray_mask)) continue;
+        if (const auto hit = refs_.intersect(i, ray, t_range)) {
+            // In reference order, a hit at an equal t is never nearer (see nearer()).
             if (closest && hit->t == closest->shape_hit.t) continue;
-            closest = Hit{*hit, i};
+            closest = Hit{*hit, refs_[i].primitive};
             t_range.max = hit->t;  // only nearer hits from now on
         }
     }
@@ -25,8 +25,8 @@ std::optional<Hit> PrimitiveList::closest_hit(const Ray& ray, Interval t_range,
 }
 
 bool PrimitiveList::any_hit(const Ray& ray, Interval t_range, std::uint32_t ray_mask) const {
-    for (const Primitive& p : primitives_)
-        if ((p.visibility & ray_mask) != 0 && glint::intersect(p.shape, ray, t_range)) return true;
+    for (std::uint32_t i = 0; i < refs_.size(); ++i)
+        if (refs_.visible(i, ray_mask) && refs_.intersect(i, ray, t_range)) return true;
     return false;
 }
 

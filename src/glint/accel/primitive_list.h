@@ -1,10 +1,12 @@
-// The brute-force aggregate: every ray against every primitive. The reference that every
-// acceleration structure must agree with, and the notes' "simple method".
+// The brute-force aggregate: every ray against every primitive, and every triangle of a mesh
+// (see PrimitiveRefs). The reference that every acceleration structure must agree with, and the
+// notes' "simple method".
 #pragma once
 
 #include <span>
 
 #include "glint/accel/aggregate.h"
+#include "glint/accel/primitive_refs.h"
 
 namespace glint {
 
@@ -13,14 +15,14 @@ public:
     explicit PrimitiveList(std::span<const Primitive> primitives);
 
     Bounds3 bounds() const override { return bounds_; }
-    std::size_t memory_bytes() const override { return sizeof(*this); }
+    std::size_t memory_bytes() const override { return sizeof(*this) + refs_.memory_bytes(); }
 
 private:
     std::optional<Hit> closest_hit(const Ray& ray, Interval t_range,
                                    std::uint32_t ray_mask) const override;
     bool any_hit(const Ray& ray, Interval t_range, std::uint32_t ray_mask) const override;
 
-    std::span<const Primitive> primitives_;
+    PrimitiveRefs refs_;
     Bounds3 bounds_;
 };
 

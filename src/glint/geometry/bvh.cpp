@@ -1,8 +1,15 @@
-// Binned-SAH construction of the BVH, depth first into a flat node array.
+// Parallel binned-SAH construction of the binary BVH, deterministic for any thread count: large
+// nodes are binned and partitioned in blocks of a fixed size and their results combined in block
+// order, and large subtrees are built as tasks into chunks that are laid out in a fixed order.
 #include "glint/geometry/bvh.h"
+
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+#include <tbb/task_group.h>
 
 #include <algorithm>
 #include <cassert>
+#include <memory>
 
 namespace glint {
 
@@ -12,131 +19,333 @@ namespace {
 // at most 32 more levels for 2^32 primitives, so no leaf is deeper than kBvhMaxDepth - 2.
 constexpr int kSahDepthLimit = kBvhMaxDepth - 34;
 constexpr int kMaxBins = 64;
+// Ranges of at least this many primitives are binned and partitioned in parallel, in blocks of
+// kBlock. Both are constants, not functions of the thread count, so the result is not either.
+constexpr std::uint32_t kParallelRange = 1u << 16;
+constexpr std::uint32_t kBlock = 1u << 14;
+// A node this large builds its second subtree as a task, into a chunk of its own.
+constexpr std::uint32_t kParallelSubtree = 1u << 12;
+
+// A box in two SIMD registers (GCC vector extensions; lane 3 unused), so that growing one by
+// another is two instructions. grow() takes min and max exactly as merge(Bounds3, Bounds3) does.
+typedef float Float4 __attribute__((vector_size(16)));
+
+Float4 splat(float x) { return Float4{x, x, x, x}; }
+
+// Trivial, so that arrays of bins cost nothing to declare; empty() is the empty box.
+struct Box {
+    Float4 lo;
+    Float4 hi;
+
+    static Box empty() { return {splat(kInfinity), splat(-kInfinity)}; }
+    static Box of(const Bounds3& b) {
+        Box out;
+        out.lo = Float4{b.min.x, b.min.y, b.min.z, 0};
+        out.hi = Float4{b.max.x, b.max.y, b.max.z, 0};
+        return out;
+    }
+    void grow(const Box& b) {
+        lo = b.lo < lo ? b.lo : lo;
+        hi = b.hi > hi ? b.hi : hi;
+    }
+    void grow(Float4 p) {
+        lo = p < lo ? p : lo;
+        hi = p > hi ? p : hi;
+    }
+    Bounds3 bounds() const { return {{lo[0], lo[1], lo[2]}, {hi[0], hi[1], hi[2]}}; }
+    // Zero for an empty box (and for NaN extents).
+    float area() const {
+        const Float4 d = hi - lo;
+        if (!(d[0] >= 0 && d[1] >= 0 && d[2] >= 0)) return 0;
+        return 2 * (d[0] * d[1] + d[1] * d[2] + d[2] * d[0]);
+    }
+};
 
 struct Bin {
-    Bounds3 bounds;
-    std::uint32_t count = 0;
+    Box bounds;
+    Box centroids;
+    std::uint32_t count;
+
+    static Bin empty() { return {Box::empty(), Box::empty(), 0}; }
 };
+
+// A range of Bvh::primitive_indices with the union of its boxes and of its centroids.
+struct Range {
+    std::uint32_t begin = 0, end = 0;
+    Box bounds = Box::empty(), centroids = Box::empty();
+
+    std::uint32_t size() const { return end - begin; }
+};
+
+// Nodes of one subtree, indexed from 0 here. A node listed in `remote` has its second child in
+// another chunk (built by another task); flatten() lays the chunks out one after another.
+struct Chunk {
+    struct Remote {
+        std::uint32_t node;
+        std::unique_ptr<Chunk> chunk;
+    };
+    std::vector<BvhNode> nodes;
+    std::vector<Remote> remote;
+};
+
+std::uint32_t blocks_of(std::uint32_t n) { return (n + kBlock - 1) / kBlock; }
+
+// f(block_begin, block_end, block_index) over [begin, end) in kBlock pieces, in parallel.
+template <typename F>
+void for_blocks(std::uint32_t begin, std::uint32_t end, F&& f) {
+    tbb::parallel_for(tbb::blocked_range<std::uint32_t>(0, blocks_of(end - begin), 1),
+                      [&](const tbb::blocked_range<std::uint32_t>& r) {
+                          for (std::uint32_t k = r.begin(); k != r.end(); ++k) {
+                              const std::uint32_t b = begin + k * kBlock;
+                              f(b, std::min(end, b + kBlock), k);
+                          }
+                      });
+}
 
 class Builder {
 public:
     Builder(std::span<const Bounds3> bounds, const BvhBuildOptions& options, Bvh& bvh)
-        : bounds_(bounds), bvh_(bvh) {
+        : indices_(bvh.primitive_indices) {
         max_leaf_ = std::uint32_t(std::clamp(options.max_leaf_size, 1, 255));
         bins_ = std::clamp(options.bins, 2, kMaxBins);
         traversal_cost_ = options.traversal_cost;
-        centroids_.reserve(bounds.size());
-        for (const Bounds3& b : bounds) centroids_.push_back(b.center());
+        const auto n = std::uint32_t(bounds.size());
+        boxes_.resize(n);
+        centroids_.resize(n);
+        scratch_.resize(n);
+        for_blocks(0, n, [&](std::uint32_t b, std::uint32_t e, std::uint32_t) {
+            for (std::uint32_t i = b; i < e; ++i) {
+                indices_[i] = i;
+                boxes_[i] = Box::of(bounds[i]);
+                const Point3 c = bounds[i].center();
+                centroids_[i] = Float4{c.x, c.y, c.z, 0};
+            }
+        });
     }
 
-    void build(std::uint32_t begin, std::uint32_t end, int depth) {
-        const std::uint32_t node_index = std::uint32_t(bvh_.nodes.size());
-        bvh_.nodes.emplace_back();
-        Bounds3 node_bounds, centroid_bounds;
-        for (std::uint32_t i = begin; i < end; ++i) {
-            const std::uint32_t p = bvh_.primitive_indices[i];
-            node_bounds = merge(node_bounds, bounds_[p]);
-            centroid_bounds = merge(centroid_bounds, centroids_[p]);
-        }
-        bvh_.nodes[node_index].bounds = node_bounds;
-        const std::uint32_t count = end - begin;
-        if (count <= 1) return make_leaf(node_index, begin, count);
+    Range root() const {
+        Range r{0, std::uint32_t(boxes_.size())};
+        measure(r);
+        return r;
+    }
 
-        std::uint32_t mid = begin;
-        int axis = longest_axis(centroid_bounds);
-        const float extent = centroid_bounds.max[axis] - centroid_bounds.min[axis];
-        if (depth < kSahDepthLimit && extent > 0 && std::isfinite(extent)) {
-            const auto split = sah_split(begin, end, axis, centroid_bounds, node_bounds);
-            if (!split) {
-                if (count <= max_leaf_) return make_leaf(node_index, begin, count);
-            } else {
-                mid = *split;
-            }
-        } else if (count <= max_leaf_) {
-            return make_leaf(node_index, begin, count);
+    // Appends the subtree over r to chunk.nodes, depth first, its root at the end on entry.
+    void build(const Range& r, int depth, Chunk& chunk) {
+        const auto node_index = std::uint32_t(chunk.nodes.size());
+        chunk.nodes.emplace_back();
+        chunk.nodes[node_index].bounds = r.bounds.bounds();
+        Range left, right;
+        int axis = 0;
+        if (!split(r, depth, left, right, axis)) {
+            assert(r.size() >= 1 && r.size() <= 255);
+            chunk.nodes[node_index].offset = r.begin;
+            chunk.nodes[node_index].count = std::uint16_t(r.size());
+            return;
         }
-        if (mid == begin || mid == end) mid = median_split(begin, end, axis);
-
-        bvh_.nodes[node_index].axis = std::uint8_t(axis);
-        build(begin, mid, depth + 1);
-        bvh_.nodes[node_index].offset = std::uint32_t(bvh_.nodes.size());
-        build(mid, end, depth + 1);
+        chunk.nodes[node_index].axis = std::uint8_t(axis);
+        if (r.size() < kParallelSubtree) {
+            build(left, depth + 1, chunk);
+            chunk.nodes[node_index].offset = std::uint32_t(chunk.nodes.size());
+            build(right, depth + 1, chunk);
+            return;
+        }
+        // The second subtree goes to a chunk of its own while this thread builds the first in
+        // place; the chunk's position in the list (and so in the final array) does not depend on
+        // which finishes first.
+        auto other = std::make_unique<Chunk>();
+        Chunk& other_chunk = *other;
+        chunk.remote.push_back({node_index, std::move(other)});
+        tbb::task_group group;
+        group.run([&, right, depth] { build(right, depth + 1, other_chunk); });
+        build(left, depth + 1, chunk);
+        group.wait();
     }
 
 private:
-    static int longest_axis(const Bounds3& b) {
-        const Vector3 d = b.diagonal();
+    // The union of the boxes and of the centroids of r's primitives, into r.
+    void measure(Range& r) const {
+        const auto fold = [&](std::uint32_t b, std::uint32_t e, Box& bounds, Box& cent) {
+            for (std::uint32_t i = b; i < e; ++i) {
+                const std::uint32_t p = indices_[i];
+                bounds.grow(boxes_[p]);
+                cent.grow(centroids_[p]);
+            }
+        };
+        r.bounds = r.centroids = Box::empty();
+        if (r.size() < kParallelRange) return fold(r.begin, r.end, r.bounds, r.centroids);
+        std::vector<Box> bounds(blocks_of(r.size()), Box::empty()), cents(bounds);
+        for_blocks(r.begin, r.end, [&](std::uint32_t b, std::uint32_t e, std::uint32_t k) {
+            fold(b, e, bounds[k], cents[k]);
+        });
+        // In block order: with NaN coordinates, min and max depend on the order they are taken in.
+        for (std::size_t k = 0; k < bounds.size(); ++k) {
+            r.bounds.grow(bounds[k]);
+            r.centroids.grow(cents[k]);
+        }
+    }
+
+    static int longest_axis(const Box& b) {
+        const Float4 d = b.hi - b.lo;
         // Written so that a NaN extent never wins.
         int axis = 0;
-        if (d.y > d[axis]) axis = 1;
-        if (d.z > d[axis]) axis = 2;
+        if (d[1] > d[axis]) axis = 1;
+        if (d[2] > d[axis]) axis = 2;
         return axis;
     }
 
-    void make_leaf(std::uint32_t node_index, std::uint32_t begin, std::uint32_t count) {
-        assert(count >= 1 && count <= 255);
-        bvh_.nodes[node_index].offset = begin;
-        bvh_.nodes[node_index].count = std::uint16_t(count);
+    // Splits r in two, or returns false for a leaf (at most max_leaf_ primitives).
+    bool split(const Range& r, int depth, Range& left, Range& right, int& axis) {
+        const std::uint32_t count = r.size();
+        if (count <= 1) return false;
+        axis = longest_axis(r.centroids);
+        const float extent = r.centroids.hi[axis] - r.centroids.lo[axis];
+        if (depth < kSahDepthLimit && extent > 0 && std::isfinite(extent)) {
+            if (sah_split(r, axis, left, right)) return true;
+        }
+        if (count <= max_leaf_) return false;
+        median_split(r, axis, left, right);
+        return true;
     }
 
-    int bin_of(Point3 centroid, int axis, float lo, float scale) const {
+    static int bin_of(Float4 centroid, int axis, float lo, float scale, int bins) {
         const float f = (centroid[axis] - lo) * scale;
         // NaN and negative go to the first bin, anything past the end to the last; the float is
         // compared before the cast, which would be undefined out of range.
         if (!(f > 0)) return 0;
-        return f < float(bins_ - 1) ? int(f) : bins_ - 1;
+        return f < float(bins - 1) ? int(f) : bins - 1;
     }
 
-    // The index where [begin, end) is partitioned by the cheapest SAH plane, or nothing when a
-    // leaf is cheaper.
-    std::optional<std::uint32_t> sah_split(std::uint32_t begin, std::uint32_t end, int axis,
-                                           const Bounds3& centroid_bounds,
-                                           const Bounds3& node_bounds) {
-        std::array<Bin, kMaxBins> bins{};
-        const float lo = centroid_bounds.min[axis];
-        const float scale = float(bins_) / (centroid_bounds.max[axis] - lo);
-        for (std::uint32_t i = begin; i < end; ++i) {
-            const std::uint32_t p = bvh_.primitive_indices[i];
-            Bin& bin = bins[std::size_t(bin_of(centroids_[p], axis, lo, scale))];
-            bin.bounds = merge(bin.bounds, bounds_[p]);
+    using Bins = std::array<Bin, kMaxBins>;
+
+    void bin_block(std::uint32_t b, std::uint32_t e, int axis, float lo, float scale, int count,
+                   Bins& bins) const {
+        for (std::uint32_t i = b; i < e; ++i) {
+            const std::uint32_t p = indices_[i];
+            Bin& bin = bins[std::size_t(bin_of(centroids_[p], axis, lo, scale, count))];
+            bin.bounds.grow(boxes_[p]);
+            bin.centroids.grow(centroids_[p]);
             ++bin.count;
+        }
+    }
+
+    // Partitions r by the cheapest SAH plane and fills in both halves, or returns false when a
+    // leaf is cheaper.
+    bool sah_split(const Range& r, int axis, Range& left, Range& right) {
+        // Small ranges need fewer candidates: most bins would be empty.
+        const int count = std::min(bins_, std::max(4, 2 * int(r.size())));
+        Bins bins;
+        for (int k = 0; k < count; ++k) bins[std::size_t(k)] = Bin::empty();
+        const float lo = r.centroids.lo[axis];
+        const float scale = float(count) / (r.centroids.hi[axis] - lo);
+        if (r.size() < kParallelRange) {
+            bin_block(r.begin, r.end, axis, lo, scale, count, bins);
+        } else {
+            std::vector<Bins> partial(blocks_of(r.size()));
+            for_blocks(r.begin, r.end, [&](std::uint32_t b, std::uint32_t e, std::uint32_t k) {
+                for (int j = 0; j < count; ++j) partial[k][std::size_t(j)] = Bin::empty();
+                bin_block(b, e, axis, lo, scale, count, partial[k]);
+            });
+            for (const Bins& p : partial) {
+                for (int k = 0; k < count; ++k) {
+                    Bin& bin = bins[std::size_t(k)];
+                    bin.bounds.grow(p[std::size_t(k)].bounds);
+                    bin.centroids.grow(p[std::size_t(k)].centroids);
+                    bin.count += p[std::size_t(k)].count;
+                }
+            }
         }
         // cost(split after bin k) = traversal + (A_left N_left + A_right N_right) / A_node,
         // swept from both ends so that each candidate costs O(1).
-        std::array<float, kMaxBins> right_cost{};
-        Bounds3 acc;
+        std::array<float, kMaxBins> right_cost;
+        Box acc = Box::empty();
         std::uint32_t n = 0;
-        for (int k = bins_ - 1; k > 0; --k) {
-            acc = merge(acc, bins[std::size_t(k)].bounds);
+        for (int k = count - 1; k > 0; --k) {
+            acc.grow(bins[std::size_t(k)].bounds);
             n += bins[std::size_t(k)].count;
-            right_cost[std::size_t(k - 1)] = acc.surface_area() * float(n);
+            right_cost[std::size_t(k - 1)] = acc.area() * float(n);
         }
-        acc = {};
+        acc = Box::empty();
         n = 0;
         float best_cost = kInfinity;
         int best = -1;
-        for (int k = 0; k < bins_ - 1; ++k) {
-            acc = merge(acc, bins[std::size_t(k)].bounds);
+        for (int k = 0; k < count - 1; ++k) {
+            acc.grow(bins[std::size_t(k)].bounds);
             n += bins[std::size_t(k)].count;
-            const float cost = acc.surface_area() * float(n) + right_cost[std::size_t(k)];
+            const float cost = acc.area() * float(n) + right_cost[std::size_t(k)];
             if (cost < best_cost) best_cost = cost, best = k;
         }
-        const float area = node_bounds.surface_area();
-        const float leaf_cost = float(end - begin);
+        const float area = r.bounds.area();
+        const float leaf_cost = float(r.size());
         const float split_cost = traversal_cost_ + (area > 0 ? best_cost / area : 0);
-        if (best < 0 || !(split_cost < leaf_cost)) return std::nullopt;
-        const auto first = bvh_.primitive_indices.begin();
-        const auto it = std::partition(first + begin, first + end, [&](std::uint32_t p) {
-            return bin_of(centroids_[p], axis, lo, scale) <= best;
+        if (best < 0 || !(split_cost < leaf_cost)) return false;
+
+        const std::uint32_t mid = partition(r, [&](std::uint32_t p) {
+            return bin_of(centroids_[p], axis, lo, scale, count) <= best;
         });
-        return std::uint32_t(it - first);
+        left = {r.begin, mid};
+        right = {mid, r.end};
+        for (int k = 0; k < count; ++k) {
+            Range& side = k <= best ? left : right;
+            side.bounds.grow(bins[std::size_t(k)].bounds);
+            side.centroids.grow(bins[std::size_t(k)].centroids);
+        }
+        if (left.size() > 0 && right.size() > 0) return true;
+        // Every centroid in one bin (rounding of the bin index): halve by count instead.
+        median_split(r, axis, left, right);
+        return true;
     }
 
-    // Halves the range by count, ordered along the axis; works whatever the centroids are.
-    std::uint32_t median_split(std::uint32_t begin, std::uint32_t end, int axis) {
-        const std::uint32_t mid = begin + (end - begin) / 2;
-        const auto first = bvh_.primitive_indices.begin();
-        std::nth_element(first + begin, first + mid, first + end,
+    // Stable partition of r by `goes_left`, through scratch_; returns the first index of the
+    // right part. Large ranges count, then scatter, in blocks: the same order as one pass.
+    template <typename Pred>
+    std::uint32_t partition(const Range& r, Pred&& goes_left) {
+        if (r.size() < kParallelRange) {
+            // scratch_ is shared by concurrent tasks; each uses only its own range of it.
+            std::uint32_t l = r.begin, g = r.begin;
+            for (std::uint32_t i = r.begin; i < r.end; ++i) {
+                const std::uint32_t p = indices_[i];
+                if (goes_left(p)) {
+                    indices_[l++] = p;
+                } else {
+                    scratch_[g++] = p;
+                }
+            }
+            std::copy(scratch_.begin() + r.begin, scratch_.begin() + g, indices_.begin() + l);
+            return l;
+        }
+        std::vector<std::uint32_t> lefts(blocks_of(r.size()));
+        for_blocks(r.begin, r.end, [&](std::uint32_t b, std::uint32_t e, std::uint32_t k) {
+            std::uint32_t n = 0;
+            for (std::uint32_t i = b; i < e; ++i) n += goes_left(indices_[i]) ? 1 : 0;
+            lefts[k] = n;
+        });
+        std::vector<std::uint32_t> left_at(lefts.size()), right_at(lefts.size());
+        std::uint32_t total_left = 0;
+        for (std::size_t k = 0; k < lefts.size(); ++k)
+            left_at[k] = total_left, total_left += lefts[k];
+        const std::uint32_t mid = r.begin + total_left;
+        for (std::size_t k = 0; k < lefts.size(); ++k) {
+            right_at[k] = mid + std::uint32_t(k) * kBlock - left_at[k];
+            left_at[k] += r.begin;
+        }
+        for_blocks(r.begin, r.end, [&](std::uint32_t b, std::uint32_t e, std::uint32_t k) {
+            std::uint32_t l = left_at[k], g = right_at[k];
+            for (std::uint32_t i = b; i < e; ++i) {
+                const std::uint32_t p = indices_[i];
+                scratch_[goes_left(p) ? l++ : g++] = p;
+            }
+        });
+        for_blocks(r.begin, r.end, [&](std::uint32_t b, std::uint32_t e, std::uint32_t) {
+            std::copy(scratch_.begin() + b, scratch_.begin() + e, indices_.begin() + b);
+        });
+        return mid;
+    }
+
+    // Halves r by count, ordered along the axis; works whatever the centroids are.
+    void median_split(const Range& r, int axis, Range& left, Range& right) {
+        const std::uint32_t mid = r.begin + r.size() / 2;
+        const auto first = indices_.begin();
+        std::nth_element(first + r.begin, first + mid, first + r.end,
                          [&](std::uint32_t a, std::uint32_t b) {
                              // NaN compares false both ways, which nth_element tolerates only
                              // as "equal"; order it before every number to keep a strict order.
@@ -145,16 +354,40 @@ private:
                                  return std::isnan(ca) && !std::isnan(cb);
                              return ca < cb;
                          });
-        return mid;
+        left = {r.begin, mid};
+        right = {mid, r.end};
+        measure(left);
+        measure(right);
     }
 
-    std::span<const Bounds3> bounds_;
-    Bvh& bvh_;
-    std::vector<Point3> centroids_;
+    std::vector<std::uint32_t>& indices_;
+    std::vector<Box> boxes_;
+    std::vector<Float4> centroids_;
+    std::vector<std::uint32_t> scratch_;
     std::uint32_t max_leaf_ = 4;
     int bins_ = 16;
     float traversal_cost_ = 0.5f;
 };
+
+std::size_t node_count(const Chunk& chunk) {
+    std::size_t n = chunk.nodes.size();
+    for (const Chunk::Remote& remote : chunk.remote) n += node_count(*remote.chunk);
+    return n;
+}
+
+// Appends the chunk's nodes and then, in order, each remote chunk's, with second-child indices
+// moved to their final places.
+void flatten(const Chunk& chunk, std::vector<BvhNode>& out) {
+    const auto base = std::uint32_t(out.size());
+    for (BvhNode node : chunk.nodes) {
+        if (!node.is_leaf()) node.offset += base;
+        out.push_back(node);
+    }
+    for (const Chunk::Remote& remote : chunk.remote) {
+        out[base + remote.node].offset = std::uint32_t(out.size());
+        flatten(*remote.chunk, out);
+    }
+}
 
 }  // namespace
 
@@ -164,10 +397,16 @@ Bvh build_bvh(std::span<const Bounds3> bounds, const BvhBuildOptions& options) {
     assert(bounds.size() <= 0xffffffffu);
     const auto n = std::uint32_t(bounds.size());
     bvh.primitive_indices.resize(n);
-    for (std::uint32_t i = 0; i < n; ++i) bvh.primitive_indices[i] = i;
-    bvh.nodes.reserve(2 * std::size_t(n) - 1);
-    Builder(bounds, options, bvh).build(0, n, 0);
-    bvh.nodes.shrink_to_fit();
+    Builder builder(bounds, options, bvh);
+    Chunk chunk;
+    builder.build(builder.root(), 0, chunk);
+    if (chunk.remote.empty()) {
+        bvh.nodes = std::move(chunk.nodes);
+        bvh.nodes.shrink_to_fit();
+    } else {
+        bvh.nodes.reserve(node_count(chunk));
+        flatten(chunk, bvh.nodes);
+    }
     return bvh;
 }
 

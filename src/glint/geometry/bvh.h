@@ -1,6 +1,7 @@
-// A bounding volume hierarchy over primitive bounds: binned-SAH build into a flat array of 32-byte
-// nodes, and allocation-free traversal templates (closest hit and any hit) that call back per
-// primitive. Meshes use it over triangles; the scene-level structure will use it over objects.
+// A binary bounding volume hierarchy over primitive bounds: a parallel binned-SAH build into a flat
+// array of 32-byte nodes, and allocation-free traversal templates (closest hit and any hit) that
+// call back per primitive. It is the build stage of the wide BVH (bvh4.h), which meshes and the
+// scene-level structure trace, and the reference that the wide one is measured against.
 #pragma once
 
 #include <array>
@@ -53,6 +54,8 @@ struct Bvh {
 // the range is halved by count instead, so every leaf holds at most max_leaf_size primitives and
 // depth stays below kBvhMaxDepth for up to 2^32 primitives. Bounds should be finite; empty or
 // non-finite boxes are kept (they are never hit by the slab test) but placed arbitrarily.
+// Runs on the calling thread's oneTBB arena (subtrees as tasks, large nodes binned and
+// partitioned in fixed blocks); the tree is the same, node for node, for any number of threads.
 Bvh build_bvh(std::span<const Bounds3> bounds, const BvhBuildOptions& options = {});
 
 // A ray prepared for slab tests against many boxes: the reciprocal direction is computed once.
@@ -69,17 +72,19 @@ struct BvhRay {
           negative{inv_direction.x < 0, inv_direction.y < 0, inv_direction.z < 0} {}
 };
 
+// The factor 1 + 2 gamma(3) (pbrt-v4, 6.1.2) by which slab tests widen t_far so that rounding
+// never culls a box whose contents the exact test would hit.
+inline constexpr float kSlabFarWiden = 1 + 2 * (3 * 5.96046448e-8f) / (1 - 3 * 5.96046448e-8f);
+
 // Whether the ray enters the box within [t_min, t_max]. A zero direction component gives an
 // infinite reciprocal; a NaN (origin on the slab plane, ray parallel to it) leaves the bound as it
-// was, so boundaries count as inside. t_far is widened by 1 + 2 gamma(3) (pbrt-v4, 6.1.2) so that
-// rounding never culls a box whose contents the exact test would hit.
+// was, so boundaries count as inside. t_far is widened by kSlabFarWiden.
 inline bool slab_hit(const Bounds3& b, const BvhRay& r, float t_min, float t_max) {
-    constexpr float kWiden = 1 + 2 * (3 * 5.96046448e-8f) / (1 - 3 * 5.96046448e-8f);
     for (int axis = 0; axis < 3; ++axis) {
         const float lo = r.negative[axis] ? b.max[axis] : b.min[axis];
         const float hi = r.negative[axis] ? b.min[axis] : b.max[axis];
         const float t_near = (lo - r.origin[axis]) * r.inv_direction[axis];
-        const float t_far = (hi - r.origin[axis]) * r.inv_direction[axis] * kWiden;
+        const float t_far = (hi - r.origin[axis]) * r.inv_direction[axis] * kSlabFarWiden;
         t_min = t_near > t_min ? t_near : t_min;
         t_max = t_far < t_max ? t_far : t_max;
     }

@@ -35,7 +35,7 @@ struct IsSolid {
     bool operator()(const Torus&) const { return true; }
     bool operator()(const Quadric&) const { return false; }  // clipped open by its box
     bool operator()(const Polygon&) const { return false; }
-    bool operator()(const TriangleMesh& m) const { return m.data->closed; }
+    bool operator()(const TriangleMesh& m) const { return is_closed_surface(*m.data); }
     // Inside is f < 0; the region must enclose the surface for the solid to be closed.
     bool operator()(const ImplicitSurface&) const { return true; }
     bool operator()(const JuliaSet&) const { return true; }

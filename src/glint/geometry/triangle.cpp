@@ -1,6 +1,9 @@
+// A single triangle: bounds, the watertight intersection test, and its surface point.
 #include "glint/geometry/triangle.h"
 
 #include <cmath>
+
+#include "glint/geometry/watertight_triangle.h"
 
 namespace glint {
 
@@ -10,21 +13,7 @@ Bounds3 Triangle::bounds() const {
 
 std::optional<ShapeHit> intersect_triangle(Point3 v0, Point3 v1, Point3 v2, const Ray& ray,
                                            Interval t_range) {
-    const Vector3 e1 = v1 - v0;
-    const Vector3 e2 = v2 - v0;
-    const Vector3 p = cross(ray.direction, e2);
-    const float det = dot(e1, p);
-    if (det == 0 || !std::isfinite(det)) return std::nullopt;  // parallel or degenerate
-    const float inv_det = 1 / det;
-    const Vector3 s = ray.origin - v0;
-    const float b1 = dot(s, p) * inv_det;
-    if (b1 < 0 || b1 > 1) return std::nullopt;
-    const Vector3 q = cross(s, e1);
-    const float b2 = dot(ray.direction, q) * inv_det;
-    if (b2 < 0 || b1 + b2 > 1) return std::nullopt;
-    const float t = dot(e2, q) * inv_det;
-    if (!t_range.contains(t)) return std::nullopt;
-    return ShapeHit{t, b1, b2};
+    return intersect_watertight(v0, v1, v2, ray, t_range);
 }
 
 std::optional<ShapeHit> Triangle::intersect(const Ray& ray, Interval t_range) const {

@@ -16,19 +16,21 @@ struct Triangle {
     std::array<Point2, 3> uvs{{{0, 0}, {1, 0}, {0, 1}}};
 
     Bounds3 bounds() const;
-    // Moeller and Trumbore (1997). Two-sided; hit.u and hit.v are the barycentric weights of
-    // vertices 1 and 2.
+    // Watertight (Woop, Benthin and Wald 2013). Two-sided; hit.u and hit.v are the barycentric
+    // weights of vertices 1 and 2.
     std::optional<ShapeHit> intersect(const Ray& ray, Interval t_range) const;
     // The normal is normalize((v1 - v0) x (v2 - v0)); uv interpolates the vertex uvs.
     SurfacePoint surface_at(const Ray& ray, const ShapeHit& hit) const;
 };
 
-// Moeller and Trumbore (1997) on the triangle (v0, v1, v2): t, and the barycentric weights of
-// v1 and v2 as u and v. Two-sided; nothing for rays parallel to the plane. Meshes share it.
+// The watertight test (watertight_triangle.h) on the triangle (v0, v1, v2): t, and the
+// barycentric weights of v1 and v2 as u and v. Two-sided; nothing for rays in or parallel to the
+// plane. Meshes share it, so a ray through an edge of a closed mesh cannot pass between the two
+// triangles. Shears the ray anew on each call; see intersect_watertight to do that once a ray.
 std::optional<ShapeHit> intersect_triangle(Point3 v0, Point3 v1, Point3 v2, const Ray& ray,
                                            Interval t_range);
 
-// Twice the area; zero for collinear vertices, which no ray can hit.
+// Twice the area; zero for collinear or coincident vertices, which no ray hits.
 float double_area(const Triangle& triangle);
 
 }  // namespace glint

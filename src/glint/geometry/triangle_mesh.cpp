@@ -2,7 +2,7 @@
 #include "glint/geometry/triangle_mesh.h"
 
 #include <cmath>
-#include <map>
+#include <numeric>
 #include <string>
 
 #include "glint/geometry/triangle.h"
@@ -111,29 +111,42 @@ MeshBuild build_mesh(MeshData arrays) {
         bounds[i] = merge(Bounds3::of(arrays.positions[t[0]], arrays.positions[t[1]]),
                           arrays.positions[t[2]]);
     }
-    arrays.bvh = build_bvh(bounds);
-    arrays.closed = is_closed_surface(arrays);
+    arrays.bvh = build_bvh4(bounds);
     result.mesh = std::make_shared<const MeshData>(std::move(arrays));
     return result;
 }
 
 bool is_closed_surface(const MeshData& mesh) {
     // Vertices that share a position are one vertex: files split them for normals and uvs.
-    std::map<std::array<float, 3>, std::uint32_t> id_of;
-    std::vector<std::uint32_t> id(mesh.positions.size());
-    for (std::size_t i = 0; i < mesh.positions.size(); ++i) {
+    // Sorting (not a map) keeps this a small part of loading a million-triangle mesh.
+    const auto key = [&](std::uint32_t i) {
         const Point3 p = mesh.positions[i];
-        id[i] = id_of.try_emplace({p.x, p.y, p.z}, std::uint32_t(id_of.size())).first->second;
+        return std::array<float, 3>{p.x, p.y, p.z};
+    };
+    std::vector<std::uint32_t> by_position(mesh.positions.size());
+    std::iota(by_position.begin(), by_position.end(), 0u);
+    std::sort(by_position.begin(), by_position.end(),
+              [&](std::uint32_t a, std::uint32_t b) { return key(a) < key(b); });
+    std::vector<std::uint32_t> id(mesh.positions.size());
+    std::uint32_t next_id = 0;
+    for (std::size_t k = 0; k < by_position.size(); ++k) {
+        if (k > 0 && key(by_position[k]) != key(by_position[k - 1])) ++next_id;
+        id[by_position[k]] = next_id;
     }
     // Closed and oriented: each directed edge occurs once, and so does its reverse.
-    std::vector<std::pair<std::uint32_t, std::uint32_t>> edges;
+    const auto edge = [](std::uint32_t from, std::uint32_t to) {
+        return (std::uint64_t(from) << 32) | to;
+    };
+    std::vector<std::uint64_t> edges;
     edges.reserve(3 * mesh.triangles.size());
     for (const auto& t : mesh.triangles)
-        for (int k = 0; k < 3; ++k) edges.emplace_back(id[t[k]], id[t[(k + 1) % 3]]);
+        for (int k = 0; k < 3; ++k) edges.push_back(edge(id[t[k]], id[t[(k + 1) % 3]]));
     std::sort(edges.begin(), edges.end());
     if (std::adjacent_find(edges.begin(), edges.end()) != edges.end()) return false;
-    for (const auto& [a, b] : edges)
-        if (!std::binary_search(edges.begin(), edges.end(), std::pair{b, a})) return false;
+    for (const std::uint64_t e : edges)
+        if (!std::binary_search(edges.begin(), edges.end(),
+                                edge(std::uint32_t(e), std::uint32_t(e >> 32))))
+            return false;
     return true;
 }
 

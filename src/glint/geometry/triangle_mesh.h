@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-#include "glint/geometry/bvh.h"
+#include "glint/geometry/bvh4_traversal.h"
 #include "glint/geometry/surface_point.h"
 #include "glint/math/bounds.h"
 #include "glint/math/interval.h"
@@ -25,13 +25,12 @@ struct MeshData {
     std::vector<Normal3> normals;  // unit, one per position; or empty for flat shading
     std::vector<Point2> uvs;       // one per position; or empty
     std::vector<std::array<std::uint32_t, 3>> triangles;
-    Bvh bvh;  // over triangles; made by build_mesh
-    // Every edge joins exactly two triangles that run along it in opposite directions (vertices
-    // matched by position): the mesh bounds a solid, usable as a CSG operand. Set by build_mesh.
-    bool closed = false;
+    Bvh4 bvh;  // over triangles; made by build_mesh
 };
 
-// Whether the triangles form a closed, consistently oriented surface (see MeshData::closed).
+// Whether every edge joins exactly two triangles that run along it in opposite directions
+// (vertices matched by position): the mesh bounds a solid, usable as a CSG operand. O(N log N);
+// asked only of CSG operands, not of every mesh loaded.
 bool is_closed_surface(const MeshData& mesh);
 
 // Coordinates beyond this magnitude are refused: products of such edges overflow a float.

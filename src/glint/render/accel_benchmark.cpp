@@ -96,9 +96,7 @@ std::size_t mesh_bvh_bytes(std::span<const Primitive> primitives) {
     for (const Primitive& p : primitives) {
         const auto* mesh = std::get_if<TriangleMesh>(&p.shape);
         if (!mesh || !seen.insert(mesh->data.get()).second) continue;
-        const Bvh& bvh = mesh->data->bvh;
-        bytes += bvh.nodes.capacity() * sizeof(BvhNode) +
-                 bvh.primitive_indices.capacity() * sizeof(std::uint32_t);
+        bytes += mesh->data->bvh.memory_bytes();
     }
     return bytes;
 }

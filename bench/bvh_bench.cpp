@@ -1,0 +1,295 @@
+// The wide BVH (Bvh4) against the binary BVH it is collapsed from, on the same rays: the ray sets
+// of `glint bench` (primary, incoherent, shadow) of SPD databases and meshes, traced through the
+// triangles of the scene's largest mesh (the bottom level) and over the scene's primitives (the
+// top level); and build times, single thread and all threads, against Embree's where it is built
+// in. Scenes come from ../shared/data (skipped when absent). Ratios are in bench/README.md.
+#include <benchmark/benchmark.h>
+#include <tbb/global_control.h>
+#include <tbb/info.h>
+#include <tbb/task_arena.h>
+
+#include <chrono>
+#include <filesystem>
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "glint/accel/make_aggregate.h"
+#include "glint/accel/rounding_margin.h"
+#include "glint/geometry/bvh.h"
+#include "glint/geometry/bvh4.h"
+#include "glint/geometry/bvh4_traversal.h"
+#include "glint/geometry/simd_path.h"
+#include "glint/render/ray_sets.h"
+#include "glint/render/world.h"
+#include "glint/scene/mesh/model_scene.h"
+#include "glint/scene/nff/nff_to_scene.h"
+
+namespace glint {
+namespace {
+
+const std::filesystem::path kData = std::filesystem::path(GLINT_SOURCE_DIR) / "../shared/data";
+constexpr std::size_t kRaysPerSet = std::size_t(1) << 17;
+
+// Everything one scene's benchmarks share, made once.
+struct Subject {
+    Scene scene;
+    std::unique_ptr<World> world;
+    RaySets sets;
+    // Bottom level: the largest mesh, its triangle boxes and both trees over them.
+    const MeshData* mesh = nullptr;
+    std::vector<Bounds3> triangle_bounds;
+    Bvh mesh_binary;
+    // Top level: the bounded primitives' boxes, grown as BvhAggregate grows them.
+    std::vector<std::uint32_t> bounded;
+    std::vector<Bounds3> primitive_bounds;
+    Bvh top_binary;
+    Bvh4 top_wide;
+};
+
+std::vector<Bounds3> triangle_boxes(const MeshData& mesh) {
+    std::vector<Bounds3> out;
+    out.reserve(mesh.triangles.size());
+    for (const auto& t : mesh.triangles)
+        out.push_back(
+            merge(Bounds3::of(mesh.positions[t[0]], mesh.positions[t[1]]), mesh.positions[t[2]]));
+    return out;
+}
+
+Subject* subject(const std::string& file) {
+    static std::map<std::string, std::unique_ptr<Subject>> cache;
+    auto& slot = cache[file];
+    if (slot) return slot.get();
+    const std::filesystem::path path = kData / file;
+    if (!std::filesystem::exists(path)) return nullptr;
+    auto s = std::make_unique<Subject>();
+    s->scene = is_model_file(path) ? load_model_scene(path) : load_nff_scene(path);
+    s->world = std::make_unique<World>(s->scene);
+    s->sets = make_ray_sets(*s->world, kRaysPerSet);
+    Bounds3 all;
+    for (std::uint32_t i = 0; i < s->world->primitives().size(); ++i) {
+        const Primitive& p = s->world->primitives()[i];
+        if (const auto* m = std::get_if<TriangleMesh>(&p.shape)) {
+            if (!s->mesh || m->data->triangles.size() > s->mesh->triangles.size())
+                s->mesh = m->data.get();
+        }
+        const Bounds3 b = bounds(p.shape);
+        if (!b.is_finite()) continue;
+        s->bounded.push_back(i);
+        s->primitive_bounds.push_back(b);
+        all = merge(all, b);
+    }
+    const float margin = rounding_margin(all);
+    for (Bounds3& b : s->primitive_bounds)
+        b = {b.min - Vector3{margin, margin, margin}, b.max + Vector3{margin, margin, margin}};
+    s->top_binary = build_bvh(s->primitive_bounds);
+    s->top_wide = build_bvh4(s->primitive_bounds);
+    if (s->mesh) {
+        s->triangle_bounds = triangle_boxes(*s->mesh);
+        s->mesh_binary = build_bvh(s->triangle_bounds);
+    }
+    slot = std::move(s);
+    return slot.get();
+}
+
+enum class Tree { binary, wide };
+
+// Traces one set through one tree; returns the hits (to check that the trees agree).
+template <typename BvhType>
+std::size_t trace_mesh(const BvhType& bvh, const MeshData& mesh, const RaySet& set) {
+    std::size_t hits = 0;
+    for (std::size_t i = 0; i < set.rays.size(); ++i) {
+        const Ray& ray = set.rays[i];
+        if (set.query == RayQuery::occluded) {
+            hits += bvh_any_hit(bvh, ray, set.range(i), [&](std::uint32_t k, Interval r) {
+                return intersect_triangle(mesh, k, ray, r).has_value();
+            });
+        } else {
+            hits += bvh_closest_hit(bvh, ray, set.range(i),
+                                    [&](std::uint32_t k, Interval r) -> std::optional<float> {
+                                        const auto hit = intersect_triangle(mesh, k, ray, r);
+                                        if (!hit) return std::nullopt;
+                                        return hit->t;
+                                    })
+                        .has_value();
+        }
+    }
+    return hits;
+}
+
+template <typename BvhType>
+std::size_t trace_top(const BvhType& bvh, const Subject& s, const RaySet& set) {
+    const std::span<const Primitive> prims = s.world->primitives();
+    std::size_t hits = 0;
+    for (std::size_t i = 0; i < set.rays.size(); ++i) {
+        const Ray& ray = set.rays[i];
+        if (set.query == RayQuery::occluded) {
+            hits += bvh_any_hit(bvh, ray, set.range(i), [&](std::uint32_t k, Interval r) {
+                const Primitive& p = prims[s.bounded[k]];
+                return (p.visibility & set.mask) != 0 && intersect(p.shape, ray, r).has_value();
+            });
+        } else {
+            hits += bvh_closest_hit(bvh, ray, set.range(i),
+                                    [&](std::uint32_t k, Interval r) -> std::optional<float> {
+                                        const Primitive& p = prims[s.bounded[k]];
+                                        if ((p.visibility & set.mask) == 0) return std::nullopt;
+                                        const auto hit = intersect(p.shape, ray, r);
+                                        if (!hit) return std::nullopt;
+                                        return hit->t;
+                                    })
+                        .has_value();
+        }
+    }
+    return hits;
+}
+
+void traverse(benchmark::State& state, const std::string& file, bool mesh_level,
+              std::size_t set_index, Tree tree, SimdPath path) {
+    Subject* s = subject(file);
+    if (!s || (mesh_level && !s->mesh) || set_index >= s->sets.sets.size()) {
+        state.SkipWithError("scene or mesh not available");
+        return;
+    }
+    if (!set_simd_path(path)) {
+        state.SkipWithError("SIMD path not supported here");
+        return;
+    }
+    const RaySet& set = s->sets.sets[set_index];
+    std::size_t hits = 0;
+    for (auto _ : state) {
+        if (mesh_level) {
+            hits = tree == Tree::binary ? trace_mesh(s->mesh_binary, *s->mesh, set)
+                                        : trace_mesh(s->mesh->bvh, *s->mesh, set);
+        } else {
+            hits = tree == Tree::binary ? trace_top(s->top_binary, *s, set)
+                                        : trace_top(s->top_wide, *s, set);
+        }
+        benchmark::DoNotOptimize(hits);
+    }
+    set_simd_path(best_simd_path());
+    state.SetItemsProcessed(std::int64_t(state.iterations() * set.rays.size()));
+    state.counters["hits"] = double(hits);
+    if (mesh_level) {
+        const MeshData& m = *s->mesh;
+        const double tris = double(m.triangles.size());
+        const std::size_t binary_bytes = s->mesh_binary.nodes.size() * sizeof(BvhNode) +
+                                         s->mesh_binary.primitive_indices.size() * 4;
+        state.counters["tree_bytes_per_tri"] =
+            double(tree == Tree::binary ? binary_bytes : m.bvh.memory_bytes()) / tris;
+        // Everything the mesh takes: positions, normals, uvs, indices and the tree.
+        const std::size_t arrays = m.positions.size() * sizeof(Point3) +
+                                   m.normals.size() * sizeof(Normal3) +
+                                   m.uvs.size() * sizeof(Point2) + m.triangles.size() * 12;
+        state.counters["all_bytes_per_tri"] = double(arrays + m.bvh.memory_bytes()) / tris;
+    }
+}
+
+template <typename F>
+double seconds_on(int threads, F&& f) {
+    tbb::global_control allow(tbb::global_control::max_allowed_parallelism, std::size_t(threads));
+    tbb::task_arena arena(threads);
+    double seconds = 0;
+    arena.execute([&] {
+        const auto start = std::chrono::steady_clock::now();
+        f();
+        seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    });
+    return seconds;
+}
+
+enum class Build { binary, wide, scene_wide, scene_embree };
+
+// Builds over the scene's largest mesh (binary, wide), or the whole scene as the renderer needs
+// it (scene_wide: every mesh's wide BVH and the top level; scene_embree: Embree's one BVH over
+// all triangles and the other primitives). Manual time: the build alone, on `threads`.
+void build(benchmark::State& state, const std::string& file, Build what, int threads) {
+    Subject* s = subject(file);
+    if (!s || ((what == Build::binary || what == Build::wide) && !s->mesh)) {
+        state.SkipWithError("scene or mesh not available");
+        return;
+    }
+    const std::span<const Primitive> prims = s->world->primitives();
+    std::vector<std::vector<Bounds3>> mesh_bounds;
+    for (const Primitive& p : prims)
+        if (const auto* m = std::get_if<TriangleMesh>(&p.shape))
+            mesh_bounds.push_back(triangle_boxes(*m->data));
+    for (auto _ : state) {
+        const double seconds = seconds_on(threads, [&] {
+            switch (what) {
+                case Build::binary:
+                    benchmark::DoNotOptimize(build_bvh(s->triangle_bounds).nodes.data());
+                    break;
+                case Build::wide:
+                    benchmark::DoNotOptimize(build_bvh4(s->triangle_bounds).nodes.data());
+                    break;
+                case Build::scene_wide:
+                    for (const auto& b : mesh_bounds)
+                        benchmark::DoNotOptimize(build_bvh4(b).nodes.data());
+                    benchmark::DoNotOptimize(make_aggregate(AccelKind::bvh, prims).get());
+                    break;
+                case Build::scene_embree:
+                    benchmark::DoNotOptimize(make_aggregate(AccelKind::embree, prims).get());
+                    break;
+            }
+        });
+        state.SetIterationTime(seconds);
+    }
+    state.counters["triangles"] = double(s->mesh ? s->mesh->triangles.size() : 0);
+}
+
+void register_all() {
+    const char* const scenes[] = {"spd/teapot-s30.nff.gz", "spd/tetra-s9.nff.gz", "spd/balls.nff",
+                                  "meshes/stanford-bunny.obj", "meshes/fandisk.obj"};
+    const char* const set_names[] = {"primary", "incoherent", "shadow"};
+    for (const char* file : scenes) {
+        const std::string name = std::filesystem::path(file).filename().string();
+        // Meshes at the bottom level; the SPD balls (spheres) at the top.
+        const bool mesh_level = name != "balls.nff";
+        for (std::size_t set = 0; set < 3; ++set) {
+            const std::string prefix =
+                std::string(mesh_level ? "Mesh/" : "Top/") + name + "/" + set_names[set] + "/";
+            benchmark::RegisterBenchmark((prefix + "binary").c_str(), traverse, file, mesh_level,
+                                         set, Tree::binary, SimdPath::scalar);
+            for (const SimdPath path : {SimdPath::scalar, SimdPath::sse, SimdPath::avx2})
+                benchmark::RegisterBenchmark(
+                    (prefix + "bvh4_" + std::string(simd_path_name(path))).c_str(), traverse, file,
+                    mesh_level, set, Tree::wide, path);
+        }
+        const int all = tbb::info::default_concurrency();
+        for (const int threads : {1, all}) {
+            if (threads == all && all == 1) continue;
+            const std::string suffix = "/threads:" + std::to_string(threads);
+            if (mesh_level) {
+                benchmark::RegisterBenchmark(("Build/" + name + "/mesh_binary" + suffix).c_str(),
+                                             build, file, Build::binary, threads)
+                    ->UseManualTime()
+                    ->Unit(benchmark::kMillisecond);
+                benchmark::RegisterBenchmark(("Build/" + name + "/mesh_bvh4" + suffix).c_str(),
+                                             build, file, Build::wide, threads)
+                    ->UseManualTime()
+                    ->Unit(benchmark::kMillisecond);
+            }
+            benchmark::RegisterBenchmark(("Build/" + name + "/scene_bvh4" + suffix).c_str(), build,
+                                         file, Build::scene_wide, threads)
+                ->UseManualTime()
+                ->Unit(benchmark::kMillisecond);
+#ifdef GLINT_HAVE_EMBREE
+            benchmark::RegisterBenchmark(("Build/" + name + "/scene_embree" + suffix).c_str(),
+                                         build, file, Build::scene_embree, threads)
+                ->UseManualTime()
+                ->Unit(benchmark::kMillisecond);
+#endif
+        }
+    }
+}
+
+}  // namespace
+}  // namespace glint
+
+int main(int argc, char** argv) {
+    glint::register_all();
+    benchmark::Initialize(&argc, argv);
+    benchmark::RunSpecifiedBenchmarks();
+    return 0;
+}

@@ -1,0 +1,42 @@
+#include "glint/accel/primitive_refs.h"
+
+namespace glint {
+
+PrimitiveRefs::PrimitiveRefs(std::span<const Primitive> primitives) : primitives_(primitives) {
+    std::size_t count = 0;
+    for (const Primitive& p : primitives) {
+        const auto* mesh = std::get_if<TriangleMesh>(&p.shape);
+        count += mesh ? mesh->data->triangles.size() : 1;
+    }
+    refs_.reserve(count);
+    for (std::uint32_t i = 0; i < primitives.size(); ++i) {
+        const auto* mesh = std::get_if<TriangleMesh>(&primitives[i].shape);
+        if (!mesh) {
+            refs_.push_back({i, kWholePrimitive});
+            continue;
+        }
+        const auto triangles = std::uint32_t(mesh->data->triangles.size());
+        for (std::uint32_t t = 0; t < triangles; ++t) refs_.push_back({i, t});
+    }
+}
+
+Bounds3 PrimitiveRefs::bounds(std::uint32_t i) const {
+    const PrimitiveRef r = refs_[i];
+    const Shape& shape = primitives_[r.primitive].shape;
+    if (r.triangle == kWholePrimitive) return glint::bounds(shape);
+    const MeshData& mesh = *std::get<TriangleMesh>(shape).data;
+    const auto& corners = mesh.triangles[r.triangle];
+    Bounds3 b;
+    for (const std::uint32_t v : corners) b = merge(b, mesh.positions[v]);
+    return b;
+}
+
+std::optional<ShapeHit> PrimitiveRefs::intersect(std::uint32_t i, const Ray& ray,
+                                                 Interval t_range) const {
+    const PrimitiveRef r = refs_[i];
+    const Shape& shape = primitives_[r.primitive].shape;
+    if (r.triangle == kWholePrimitive) return glint::intersect(shape, ray, t_range);
+    return intersect_triangle(*std::get<TriangleMesh>(shape).data, r.triangle, ray, t_range);
+}
+
+}  // namespace glint

@@ -1,0 +1,37 @@
+// Which instructions the wide BVH's node test runs on: the best the CPU has, picked once at start
+// up, and switchable so that tests and benchmarks can run every path on one machine.
+#pragma once
+
+#include <atomic>
+#include <cstdint>
+#include <string_view>
+
+namespace glint {
+
+// Every path gives bit-identical results; they differ only in speed.
+enum class SimdPath : std::uint8_t {
+    scalar,  // portable C++, one box at a time; the only path off x86-64
+    sse,     // four boxes at once in 128-bit registers (every x86-64 CPU has SSE2)
+    avx2,    // the same kernel in VEX-encoded AVX2 code, for CPUs that report AVX2
+};
+
+std::string_view simd_path_name(SimdPath path);
+
+// Whether this build and this CPU can run the path (the OS must save AVX registers for avx2).
+bool simd_path_supported(SimdPath path);
+// The fastest supported path.
+SimdPath best_simd_path();
+
+namespace detail {
+// Starts as best_simd_path(); scalar (zero) during static initialisation, which is still exact.
+extern std::atomic<SimdPath> simd_path_in_use;
+}  // namespace detail
+
+// The path that traversals use now. Read once per ray.
+inline SimdPath simd_path() { return detail::simd_path_in_use.load(std::memory_order_relaxed); }
+
+// Chooses the path for traversals that start from now on; false (and no change) when the path is
+// not supported. Meant for tests and benchmarks, not for switching while rays are in flight.
+bool set_simd_path(SimdPath path);
+
+}  // namespace glint
