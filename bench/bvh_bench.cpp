@@ -1,6 +1,6 @@
-// The wide BVH (Bvh4) against the binary BVH it is collapsed from, on the same rays: the ray sets
-// of `glint bench` (primary, incoherent, shadow) of SPD databases and meshes, traced through the
-// triangles of the scene's largest mesh (the bottom level) and over the scene's primitives (the
+// The wide BVH (WideBvh) against the binary BVH it is collapsed from, on the same rays: the ray
+// sets of `glint bench` (primary, incoherent, shadow) of SPD databases and meshes, traced through
+// the triangles of the scene's largest mesh (the bottom level) and over the scene's primitives (the
 // top level); and build times, single thread and all threads, against Embree's where it is built
 // in. Scenes come from ../shared/data (skipped when absent). Ratios are in bench/README.md.
 #include <benchmark/benchmark.h>
@@ -18,9 +18,9 @@
 #include "glint/accel/make_aggregate.h"
 #include "glint/accel/rounding_margin.h"
 #include "glint/geometry/bvh.h"
-#include "glint/geometry/bvh4.h"
-#include "glint/geometry/bvh4_traversal.h"
 #include "glint/geometry/simd_path.h"
+#include "glint/geometry/wide_bvh.h"
+#include "glint/geometry/wide_bvh_traversal.h"
 #include "glint/render/ray_sets.h"
 #include "glint/render/world.h"
 #include "glint/scene/mesh/model_scene.h"
@@ -38,14 +38,14 @@ struct Subject {
     std::unique_ptr<World> world;
     RaySets sets;
     // Bottom level: the largest mesh, its triangle boxes and both trees over them.
-    const MeshData* mesh = nullptr;
+    std::shared_ptr<const MeshData> mesh;
     std::vector<Bounds3> triangle_bounds;
     Bvh mesh_binary;
     // Top level: the bounded primitives' boxes, grown as BvhAggregate grows them.
     std::vector<std::uint32_t> bounded;
     std::vector<Bounds3> primitive_bounds;
     Bvh top_binary;
-    Bvh4 top_wide;
+    WideBvh top_wide;
 };
 
 std::vector<Bounds3> triangle_boxes(const MeshData& mesh) {
@@ -72,7 +72,7 @@ Subject* subject(const std::string& file) {
         const Primitive& p = s->world->primitives()[i];
         if (const auto* m = std::get_if<TriangleMesh>(&p.shape)) {
             if (!s->mesh || m->data->triangles.size() > s->mesh->triangles.size())
-                s->mesh = m->data.get();
+                s->mesh = m->data;
         }
         const Bounds3 b = bounds(p.shape);
         if (!b.is_finite()) continue;
@@ -84,7 +84,7 @@ Subject* subject(const std::string& file) {
     for (Bounds3& b : s->primitive_bounds)
         b = {b.min - Vector3{margin, margin, margin}, b.max + Vector3{margin, margin, margin}};
     s->top_binary = build_bvh(s->primitive_bounds);
-    s->top_wide = build_bvh4(s->primitive_bounds);
+    s->top_wide = build_wide_bvh(s->primitive_bounds);
     if (s->mesh) {
         s->triangle_bounds = triangle_boxes(*s->mesh);
         s->mesh_binary = build_bvh(s->triangle_bounds);
@@ -95,9 +95,9 @@ Subject* subject(const std::string& file) {
 
 enum class Tree { binary, wide };
 
-// Traces one set through one tree; returns the hits (to check that the trees agree).
-template <typename BvhType>
-std::size_t trace_mesh(const BvhType& bvh, const MeshData& mesh, const RaySet& set) {
+// Traces one set through the binary tree, one triangle at a time; returns the hits (to check
+// that the trees agree).
+std::size_t trace_mesh(const Bvh& bvh, const MeshData& mesh, const RaySet& set) {
     std::size_t hits = 0;
     for (std::size_t i = 0; i < set.rays.size(); ++i) {
         const Ray& ray = set.rays[i];
@@ -114,6 +114,17 @@ std::size_t trace_mesh(const BvhType& bvh, const MeshData& mesh, const RaySet& s
                                     })
                         .has_value();
         }
+    }
+    return hits;
+}
+
+// The same through the mesh's own wide tree, whose leaves test four triangles at a time.
+std::size_t trace_mesh(const TriangleMesh& mesh, const RaySet& set) {
+    std::size_t hits = 0;
+    for (std::size_t i = 0; i < set.rays.size(); ++i) {
+        hits += set.query == RayQuery::occluded
+                    ? mesh.occluded(set.rays[i], set.range(i))
+                    : mesh.intersect(set.rays[i], set.range(i)).has_value();
     }
     return hits;
 }
@@ -160,7 +171,7 @@ void traverse(benchmark::State& state, const std::string& file, bool mesh_level,
     for (auto _ : state) {
         if (mesh_level) {
             hits = tree == Tree::binary ? trace_mesh(s->mesh_binary, *s->mesh, set)
-                                        : trace_mesh(s->mesh->bvh, *s->mesh, set);
+                                        : trace_mesh(TriangleMesh{s->mesh}, set);
         } else {
             hits = tree == Tree::binary ? trace_top(s->top_binary, *s, set)
                                         : trace_top(s->top_wide, *s, set);
@@ -176,12 +187,12 @@ void traverse(benchmark::State& state, const std::string& file, bool mesh_level,
         const std::size_t binary_bytes = s->mesh_binary.nodes.size() * sizeof(BvhNode) +
                                          s->mesh_binary.primitive_indices.size() * 4;
         state.counters["tree_bytes_per_tri"] =
-            double(tree == Tree::binary ? binary_bytes : m.bvh.memory_bytes()) / tris;
+            double(tree == Tree::binary ? binary_bytes : m.bvh().memory_bytes()) / tris;
         // Everything the mesh takes: positions, normals, uvs, indices and the tree.
         const std::size_t arrays = m.positions.size() * sizeof(Point3) +
                                    m.normals.size() * sizeof(Normal3) +
                                    m.uvs.size() * sizeof(Point2) + m.triangles.size() * 12;
-        state.counters["all_bytes_per_tri"] = double(arrays + m.bvh.memory_bytes()) / tris;
+        state.counters["all_bytes_per_tri"] = double(arrays + m.bvh().memory_bytes()) / tris;
     }
 }
 
@@ -200,9 +211,10 @@ double seconds_on(int threads, F&& f) {
 
 enum class Build { binary, wide, scene_wide, scene_embree };
 
-// Builds over the scene's largest mesh (binary, wide), or the whole scene as the renderer needs
-// it (scene_wide: every mesh's wide BVH and the top level; scene_embree: Embree's one BVH over
-// all triangles and the other primitives). Manual time: the build alone, on `threads`.
+// Builds over the scene's largest mesh (binary; wide: the mesh's own tree of triangle blocks), or
+// the whole scene as the renderer needs it (scene_wide: the scene-level tree over all primitives
+// and triangles; scene_embree: Embree's one BVH over the same). Manual time: the build alone, on
+// `threads`.
 void build(benchmark::State& state, const std::string& file, Build what, int threads) {
     Subject* s = subject(file);
     if (!s || ((what == Build::binary || what == Build::wide) && !s->mesh)) {
@@ -210,22 +222,18 @@ void build(benchmark::State& state, const std::string& file, Build what, int thr
         return;
     }
     const std::span<const Primitive> prims = s->world->primitives();
-    std::vector<std::vector<Bounds3>> mesh_bounds;
-    for (const Primitive& p : prims)
-        if (const auto* m = std::get_if<TriangleMesh>(&p.shape))
-            mesh_bounds.push_back(triangle_boxes(*m->data));
     for (auto _ : state) {
+        MeshData unbuilt;  // a copy starts without its tree
+        if (what == Build::wide) unbuilt = *s->mesh;
         const double seconds = seconds_on(threads, [&] {
             switch (what) {
                 case Build::binary:
                     benchmark::DoNotOptimize(build_bvh(s->triangle_bounds).nodes.data());
                     break;
                 case Build::wide:
-                    benchmark::DoNotOptimize(build_bvh4(s->triangle_bounds).nodes.data());
+                    benchmark::DoNotOptimize(unbuilt.bvh().nodes.data());
                     break;
                 case Build::scene_wide:
-                    for (const auto& b : mesh_bounds)
-                        benchmark::DoNotOptimize(build_bvh4(b).nodes.data());
                     benchmark::DoNotOptimize(make_aggregate(AccelKind::bvh, prims).get());
                     break;
                 case Build::scene_embree:
@@ -253,7 +261,7 @@ void register_all() {
                                          set, Tree::binary, SimdPath::scalar);
             for (const SimdPath path : {SimdPath::scalar, SimdPath::sse, SimdPath::avx2})
                 benchmark::RegisterBenchmark(
-                    (prefix + "bvh4_" + std::string(simd_path_name(path))).c_str(), traverse, file,
+                    (prefix + "wide_" + std::string(simd_path_name(path))).c_str(), traverse, file,
                     mesh_level, set, Tree::wide, path);
         }
         const int all = tbb::info::default_concurrency();
@@ -265,12 +273,12 @@ void register_all() {
                                              build, file, Build::binary, threads)
                     ->UseManualTime()
                     ->Unit(benchmark::kMillisecond);
-                benchmark::RegisterBenchmark(("Build/" + name + "/mesh_bvh4" + suffix).c_str(),
+                benchmark::RegisterBenchmark(("Build/" + name + "/mesh_wide" + suffix).c_str(),
                                              build, file, Build::wide, threads)
                     ->UseManualTime()
                     ->Unit(benchmark::kMillisecond);
             }
-            benchmark::RegisterBenchmark(("Build/" + name + "/scene_bvh4" + suffix).c_str(), build,
+            benchmark::RegisterBenchmark(("Build/" + name + "/scene_wide" + suffix).c_str(), build,
                                          file, Build::scene_wide, threads)
                 ->UseManualTime()
                 ->Unit(benchmark::kMillisecond);

@@ -1,19 +1,22 @@
-// The scene-level bounding volume hierarchy: a BVH over the bounded primitives, and the
-// unbounded ones (planes) tested one by one beside it.
+// The scene-level bounding volume hierarchy: one wide BVH over the bounded primitives and the
+// single triangles of meshes placed directly, and the unbounded primitives (planes) tested one by
+// one beside it. Triangles sit in leaves of blocks of four, tested in one SIMD pass; every other
+// shape in leaves of its own.
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <span>
 #include <vector>
 
 #include "glint/accel/aggregate.h"
-#include "glint/accel/primitive_refs.h"
-#include "glint/geometry/bvh4_traversal.h"
+#include "glint/geometry/wide_bvh_traversal.h"
 
 namespace glint {
 
 class BvhAggregate final : public Aggregate {
 public:
+    // Fewer than 2^30 primitives and triangles in all (std::length_error otherwise).
     explicit BvhAggregate(std::span<const Primitive> primitives);
 
     Bounds3 bounds() const override { return bounds_; }
@@ -24,10 +27,25 @@ private:
                                    std::uint32_t ray_mask) const override;
     bool any_hit(const Ray& ray, Interval t_range, std::uint32_t ray_mask) const override;
 
-    PrimitiveRefs refs_;  // primitives, and the triangles of meshes placed directly
-    Bvh4 bvh_;            // over the bounded references; its leaves hold reference indices
-    std::vector<std::uint32_t> unbounded_;  // primitives with infinite bounds
-    Bounds3 bounds_;                        // of the bounded primitives, not grown
+    // A reference numbers every triangle of a mesh primitive and every other primitive, in
+    // primitive order: the lanes of the tree's blocks name references.
+    struct Reference {
+        std::uint32_t primitive;
+        std::uint32_t triangle;  // of a mesh; 0 for a lone Triangle
+    };
+    Reference reference(std::uint32_t ref) const;
+    bool visible(std::uint32_t primitive, std::uint32_t ray_mask) const {
+        return (primitives_[primitive].visibility & ray_mask) != 0;
+    }
+
+    std::span<const Primitive> primitives_;
+    // Leaves of blocks (lanes: references) and of whole primitives (primitive indices).
+    WideBvh bvh_;
+    std::vector<std::uint32_t> first_reference_;  // of each primitive, and the total at the end
+    std::vector<std::uint32_t> unbounded_;        // primitives with infinite bounds
+    Bounds3 bounds_;                              // of the bounded primitives, not grown
+    // The visibility every primitive has, when they all have the same: lanes need no check.
+    std::optional<std::uint32_t> common_visibility_;
 };
 
 }  // namespace glint

@@ -65,8 +65,9 @@ struct Bin {
     Box bounds;
     Box centroids;
     std::uint32_t count;
+    std::uint32_t blocked;  // of them, of kind 1
 
-    static Bin empty() { return {Box::empty(), Box::empty(), 0}; }
+    static Bin empty() { return {Box::empty(), Box::empty(), 0, 0}; }
 };
 
 // A range of Bvh::primitive_indices with the union of its boxes and of its centroids.
@@ -104,11 +105,13 @@ void for_blocks(std::uint32_t begin, std::uint32_t end, F&& f) {
 
 class Builder {
 public:
-    Builder(std::span<const Bounds3> bounds, const BvhBuildOptions& options, Bvh& bvh)
-        : indices_(bvh.primitive_indices) {
+    Builder(std::span<const Bounds3> bounds, const BvhBuildOptions& options,
+            std::span<const std::uint8_t> kinds, Bvh& bvh)
+        : indices_(bvh.primitive_indices), kinds_(kinds) {
         max_leaf_ = std::uint32_t(std::clamp(options.max_leaf_size, 1, 255));
         bins_ = std::clamp(options.bins, 2, kMaxBins);
         traversal_cost_ = options.traversal_cost;
+        block_size_ = std::uint32_t(std::clamp(options.block_size, 1, 16));
         const auto n = std::uint32_t(bounds.size());
         boxes_.resize(n);
         centroids_.resize(n);
@@ -193,7 +196,7 @@ private:
         return axis;
     }
 
-    // Splits r in two, or returns false for a leaf (at most max_leaf_ primitives).
+    // Splits r in two, or returns false for a leaf (at most max_leaf_ primitives, of one kind).
     bool split(const Range& r, int depth, Range& left, Range& right, int& axis) {
         const std::uint32_t count = r.size();
         if (count <= 1) return false;
@@ -202,9 +205,39 @@ private:
         if (depth < kSahDepthLimit && extent > 0 && std::isfinite(extent)) {
             if (sah_split(r, axis, left, right)) return true;
         }
-        if (count <= max_leaf_) return false;
-        median_split(r, axis, left, right);
+        if (count > max_leaf_) {
+            median_split(r, axis, left, right);
+            return true;
+        }
+        return split_by_kind(r, left, right);
+    }
+
+    // Splits a range that would be a leaf of mixed kinds: the lowest kind to the left. Ranges
+    // this small are leaves, so this happens at most once on a path for two kinds; with k kinds
+    // at most k - 1 times, and kBvhMaxDepth leaves room for a few.
+    bool split_by_kind(const Range& r, Range& left, Range& right) {
+        if (kinds_.empty()) return false;
+        std::uint8_t lowest = 255, highest = 0;
+        for (std::uint32_t i = r.begin; i < r.end; ++i) {
+            lowest = std::min(lowest, kinds_[indices_[i]]);
+            highest = std::max(highest, kinds_[indices_[i]]);
+        }
+        if (lowest == highest) return false;
+        const std::uint32_t mid =
+            partition(r, [&](std::uint32_t p) { return kinds_[p] == lowest; });
+        left = {r.begin, mid};
+        right = {mid, r.end};
+        measure(left);
+        measure(right);
         return true;
+    }
+
+    std::uint32_t blocked(std::uint32_t p) const {
+        return kinds_.empty() || kinds_[p] == 1 ? 1 : 0;
+    }
+    // Leaf tests for n primitives of which `blocked` are of kind 1.
+    float tests(std::uint32_t n, std::uint32_t blocked) const {
+        return float(n - blocked + (blocked + block_size_ - 1) / block_size_);
     }
 
     static int bin_of(Float4 centroid, int axis, float lo, float scale, int bins) {
@@ -225,6 +258,7 @@ private:
             bin.bounds.grow(boxes_[p]);
             bin.centroids.grow(centroids_[p]);
             ++bin.count;
+            bin.blocked += blocked(p);
         }
     }
 
@@ -251,31 +285,36 @@ private:
                     bin.bounds.grow(p[std::size_t(k)].bounds);
                     bin.centroids.grow(p[std::size_t(k)].centroids);
                     bin.count += p[std::size_t(k)].count;
+                    bin.blocked += p[std::size_t(k)].blocked;
                 }
             }
         }
-        // cost(split after bin k) = traversal + (A_left N_left + A_right N_right) / A_node,
-        // swept from both ends so that each candidate costs O(1).
+        // cost(split after bin k) = traversal + (A_left T_left + A_right T_right) / A_node, T the
+        // leaf tests of a side, swept from both ends so that each candidate costs O(1).
         std::array<float, kMaxBins> right_cost;
         Box acc = Box::empty();
-        std::uint32_t n = 0;
+        std::uint32_t n = 0, nb = 0;
         for (int k = count - 1; k > 0; --k) {
             acc.grow(bins[std::size_t(k)].bounds);
             n += bins[std::size_t(k)].count;
-            right_cost[std::size_t(k - 1)] = acc.area() * float(n);
+            nb += bins[std::size_t(k)].blocked;
+            right_cost[std::size_t(k - 1)] = acc.area() * tests(n, nb);
         }
         acc = Box::empty();
-        n = 0;
+        n = nb = 0;
         float best_cost = kInfinity;
         int best = -1;
         for (int k = 0; k < count - 1; ++k) {
             acc.grow(bins[std::size_t(k)].bounds);
             n += bins[std::size_t(k)].count;
-            const float cost = acc.area() * float(n) + right_cost[std::size_t(k)];
+            nb += bins[std::size_t(k)].blocked;
+            const float cost = acc.area() * tests(n, nb) + right_cost[std::size_t(k)];
             if (cost < best_cost) best_cost = cost, best = k;
         }
         const float area = r.bounds.area();
-        const float leaf_cost = float(r.size());
+        std::uint32_t range_blocked = 0;
+        for (int k = 0; k < count; ++k) range_blocked += bins[std::size_t(k)].blocked;
+        const float leaf_cost = tests(r.size(), range_blocked);
         const float split_cost = traversal_cost_ + (area > 0 ? best_cost / area : 0);
         if (best < 0 || !(split_cost < leaf_cost)) return false;
 
@@ -361,12 +400,14 @@ private:
     }
 
     std::vector<std::uint32_t>& indices_;
+    std::span<const std::uint8_t> kinds_;
     std::vector<Box> boxes_;
     std::vector<Float4> centroids_;
     std::vector<std::uint32_t> scratch_;
     std::uint32_t max_leaf_ = 4;
     int bins_ = 16;
     float traversal_cost_ = 0.5f;
+    std::uint32_t block_size_ = 1;
 };
 
 std::size_t node_count(const Chunk& chunk) {
@@ -391,13 +432,15 @@ void flatten(const Chunk& chunk, std::vector<BvhNode>& out) {
 
 }  // namespace
 
-Bvh build_bvh(std::span<const Bounds3> bounds, const BvhBuildOptions& options) {
+Bvh build_bvh(std::span<const Bounds3> bounds, const BvhBuildOptions& options,
+              std::span<const std::uint8_t> kinds) {
     Bvh bvh;
     if (bounds.empty()) return bvh;
     assert(bounds.size() <= 0xffffffffu);
     const auto n = std::uint32_t(bounds.size());
     bvh.primitive_indices.resize(n);
-    Builder builder(bounds, options, bvh);
+    assert(kinds.empty() || kinds.size() == bounds.size());
+    Builder builder(bounds, options, kinds, bvh);
     Chunk chunk;
     builder.build(builder.root(), 0, chunk);
     if (chunk.remote.empty()) {

@@ -1,6 +1,6 @@
 // A binary bounding volume hierarchy over primitive bounds: a parallel binned-SAH build into a flat
 // array of 32-byte nodes, and allocation-free traversal templates (closest hit and any hit) that
-// call back per primitive. It is the build stage of the wide BVH (bvh4.h), which meshes and the
+// call back per primitive. It is the build stage of the wide BVH (wide_bvh.h), which meshes and the
 // scene-level structure trace, and the reference that the wide one is measured against.
 #pragma once
 
@@ -36,8 +36,11 @@ static_assert(sizeof(BvhNode) == 32, "two nodes to a cache line");
 struct BvhBuildOptions {
     int max_leaf_size = 4;  // in [1, 255]; leaves never hold more
     int bins = 16;          // SAH candidates on the longest centroid axis, in [2, 64]
-    // SAH cost of visiting a node relative to intersecting one primitive (pbrt-v4 uses 1/2).
+    // SAH cost of visiting a node relative to one leaf test (pbrt-v4 uses 1/2).
     float traversal_cost = 0.5f;
+    // Primitives of kind 1 (see build_bvh) that one leaf test handles at once: SAH counts n of
+    // them as ceil(n / block_size) tests (Embree's blocks of four triangles), in [1, 16].
+    int block_size = 1;
 };
 
 struct Bvh {
@@ -56,7 +59,12 @@ struct Bvh {
 // non-finite boxes are kept (they are never hit by the slab test) but placed arbitrarily.
 // Runs on the calling thread's oneTBB arena (subtrees as tasks, large nodes binned and
 // partitioned in fixed blocks); the tree is the same, node for node, for any number of threads.
-Bvh build_bvh(std::span<const Bounds3> bounds, const BvhBuildOptions& options = {});
+// With kinds (one per primitive, or empty), no leaf holds primitives of two kinds: a range that
+// would become such a leaf is split by kind instead, so that each leaf can be tested its own way.
+// Kind 0 is tested one by one, kind 1 (every primitive, without kinds) block_size at a time; SAH
+// counts the tests so.
+Bvh build_bvh(std::span<const Bounds3> bounds, const BvhBuildOptions& options = {},
+              std::span<const std::uint8_t> kinds = {});
 
 // A ray prepared for slab tests against many boxes: the reciprocal direction is computed once.
 struct BvhRay {

@@ -49,6 +49,19 @@ struct CsgDepth {
     int operator()(const Csg& c) const { return 1 + std::max(csg_depth(*c.a), csg_depth(*c.b)); }
     int operator()(const auto&) const { return 0; }
 };
+
+struct PrepareMeshes {
+    bool top_level;
+    void operator()(const TriangleMesh& m) const {
+        if (top_level) m.data->bvh();
+    }
+    void operator()(const Transformed& t) const { prepare_mesh_bvhs(*t.shape, true); }
+    void operator()(const Csg& c) const {
+        prepare_mesh_bvhs(*c.a, true);
+        prepare_mesh_bvhs(*c.b, true);
+    }
+    void operator()(const auto&) const {}
+};
 }  // namespace
 
 std::string_view shape_name(const Shape& shape) { return std::visit(NameOf{}, shape); }
@@ -56,5 +69,9 @@ std::string_view shape_name(const Shape& shape) { return std::visit(NameOf{}, sh
 bool is_solid(const Shape& shape) { return std::visit(IsSolid{}, shape); }
 
 int csg_depth(const Shape& shape) { return std::visit(CsgDepth{}, shape); }
+
+void prepare_mesh_bvhs(const Shape& shape, bool top_level) {
+    std::visit(PrepareMeshes{top_level}, shape);
+}
 
 }  // namespace glint

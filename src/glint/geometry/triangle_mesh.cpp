@@ -1,6 +1,8 @@
 // Building meshes (validation, degenerate triangles, BVH) and intersecting them.
 #include "glint/geometry/triangle_mesh.h"
 
+#include <tbb/task_arena.h>
+
 #include <cmath>
 #include <numeric>
 #include <string>
@@ -105,13 +107,10 @@ MeshBuild build_mesh(MeshData arrays) {
         return result;
     }
 
-    std::vector<Bounds3> bounds(kept);
-    for (std::size_t i = 0; i < kept; ++i) {
-        const auto& t = arrays.triangles[i];
-        bounds[i] = merge(Bounds3::of(arrays.positions[t[0]], arrays.positions[t[1]]),
-                          arrays.positions[t[2]]);
-    }
-    arrays.bvh = build_bvh4(bounds);
+    arrays.bounds = {};
+    for (const auto& t : arrays.triangles)
+        for (const std::uint32_t v : t) arrays.bounds = merge(arrays.bounds, arrays.positions[v]);
+    arrays.bvh_cache = {};
     result.mesh = std::make_shared<const MeshData>(std::move(arrays));
     return result;
 }
@@ -159,25 +158,67 @@ std::optional<ShapeHit> intersect_triangle(const MeshData& mesh, std::uint32_t i
     return hit;
 }
 
-std::optional<ShapeHit> TriangleMesh::intersect(const Ray& ray, Interval t_range) const {
-    const MeshData& mesh = *data;
-    ShapeHit nearest;
-    const auto t = bvh_closest_hit(
-        mesh.bvh, ray, t_range, [&](std::uint32_t index, Interval range) -> std::optional<float> {
-            const auto hit = intersect_triangle(mesh, index, ray, range);
-            if (!hit) return std::nullopt;
-            nearest = *hit;
-            return hit->t;
+const WideBvh& MeshBvhCache::get(const MeshData& mesh) const {
+    State& s = *state_;
+    if (s.built.load(std::memory_order_acquire)) return s.bvh;
+    std::call_once(s.once, [&] {
+        // Isolated: while this thread builds in parallel, it must not pick up a task of the
+        // caller's (another tile of the render) that would ask for this same BVH.
+        tbb::this_task_arena::isolate([&] {
+            std::vector<Bounds3> bounds(mesh.triangles.size());
+            for (std::size_t i = 0; i < bounds.size(); ++i) {
+                const auto& t = mesh.triangles[i];
+                bounds[i] = merge(Bounds3::of(mesh.positions[t[0]], mesh.positions[t[1]]),
+                                  mesh.positions[t[2]]);
+            }
+            s.bvh = build_wide_bvh(bounds, kWideBvhTriangleBuildOptions);
+            pack_triangle_leaves(s.bvh, [&](std::uint32_t i) -> std::optional<BlockTriangle> {
+                const auto& t = mesh.triangles[i];
+                return BlockTriangle{mesh.positions[t[0]], mesh.positions[t[1]],
+                                     mesh.positions[t[2]], i};
+            });
         });
-    if (!t) return std::nullopt;
+        s.built.store(true, std::memory_order_release);
+    });
+    return s.bvh;
+}
+
+std::optional<ShapeHit> TriangleMesh::intersect(const Ray& ray, Interval t_range) const {
+    const WideBvh& bvh = data->bvh();
+    const BlockTester tester(ray);
+    std::optional<ShapeHit> nearest;
+    bvh_closest_leaf(bvh, ray, t_range,
+                     [&](auto kernel, std::uint32_t leaf, std::uint32_t count, Interval range)
+                         GLINT_INLINE_LEAF -> std::optional<float> {
+                             std::optional<float> found;
+                             for (const TriangleBlock& block : leaf_blocks(bvh, leaf, count)) {
+                                 const auto hit = tester.nearest<decltype(kernel)::kSimd>(
+                                     block, range, kEveryLane);
+                                 if (!hit) continue;
+                                 const std::uint32_t part = block.id[hit->lane];
+                                 // At equal t the lower triangle, whatever the order of the leaves.
+                                 if (nearest && hit->t == nearest->t && part > nearest->part)
+                                     continue;
+                                 nearest = ShapeHit{hit->t, hit->u, hit->v, part};
+                                 range.max = hit->t;
+                                 found = hit->t;
+                             }
+                             return found;
+                         });
     return nearest;
 }
 
 bool TriangleMesh::occluded(const Ray& ray, Interval t_range) const {
-    const MeshData& mesh = *data;
-    return bvh_any_hit(mesh.bvh, ray, t_range, [&](std::uint32_t index, Interval range) {
-        return intersect_triangle(mesh, index, ray, range).has_value();
-    });
+    const WideBvh& bvh = data->bvh();
+    const BlockTester tester(ray);
+    return bvh_any_leaf(bvh, ray, t_range,
+                        [&](auto kernel, std::uint32_t leaf, std::uint32_t count,
+                            Interval range) GLINT_INLINE_LEAF {
+                            for (const TriangleBlock& block : leaf_blocks(bvh, leaf, count))
+                                if (tester.any<decltype(kernel)::kSimd>(block, range, kEveryLane))
+                                    return true;
+                            return false;
+                        });
 }
 
 SurfacePoint TriangleMesh::surface_at(const Ray&, const ShapeHit& hit) const {

@@ -3,20 +3,47 @@
 #pragma once
 
 #include <array>
+#include <atomic>
 #include <cstddef>
 #include <cstdint>
 #include <memory>
+#include <mutex>
 #include <optional>
 #include <string>
 #include <vector>
 
-#include "glint/geometry/bvh4_traversal.h"
 #include "glint/geometry/surface_point.h"
+#include "glint/geometry/wide_bvh_traversal.h"
 #include "glint/math/bounds.h"
 #include "glint/math/interval.h"
 #include "glint/math/ray.h"
 
 namespace glint {
+
+struct MeshData;
+
+// Where a mesh keeps its own BVH once built. A copy starts unbuilt: its arrays may still change.
+class MeshBvhCache {
+public:
+    MeshBvhCache() = default;
+    MeshBvhCache(const MeshBvhCache&) {}
+    MeshBvhCache& operator=(const MeshBvhCache&) {
+        state_ = std::make_unique<State>();
+        return *this;
+    }
+
+    // Builds it on the first call, once, whichever threads ask.
+    const WideBvh& get(const MeshData& mesh) const;
+    bool built() const { return state_->built.load(std::memory_order_acquire); }
+
+private:
+    struct State {
+        std::once_flag once;
+        std::atomic<bool> built{false};
+        WideBvh bvh;
+    };
+    std::unique_ptr<State> state_ = std::make_unique<State>();
+};
 
 // Immutable once built; shared by every object that uses it. Triangles run counter-clockwise
 // seen from their front side, as for Triangle.
@@ -25,7 +52,14 @@ struct MeshData {
     std::vector<Normal3> normals;  // unit, one per position; or empty for flat shading
     std::vector<Point2> uvs;       // one per position; or empty
     std::vector<std::array<std::uint32_t, 3>> triangles;
-    Bvh4 bvh;  // over triangles; made by build_mesh
+    Bounds3 bounds;  // of the triangles; set by build_mesh
+
+    // The mesh's own BVH over its triangles (in blocks of four; lanes name triangle indices),
+    // for tracing it as one shape: instances, transformed meshes, CSG operands, light buffers.
+    // Built on first use, or ahead of rendering by prepare_mesh_bvhs (shape.h). A mesh placed
+    // directly in a scene is traced through the scene's own structure and never builds it.
+    const WideBvh& bvh() const { return bvh_cache.get(*this); }
+    MeshBvhCache bvh_cache;
 };
 
 // Whether every edge joins exactly two triangles that run along it in opposite directions
@@ -46,17 +80,17 @@ struct MeshBuild {
 
 // Validates the arrays (normals and uvs empty or one per position, indices in range, every
 // coordinate finite and within kMaxMeshCoordinate), normalises the normals, drops degenerate
-// triangles (counted in the result), and builds the BVH. The bvh field of `arrays` is ignored.
+// triangles (counted in the result), and computes the bounds. The BVH is built when first asked.
 // Errors are messages, never exceptions: "triangle 7 uses vertex 12 but there are 10 vertices".
 MeshBuild build_mesh(MeshData arrays);
 
 struct TriangleMesh {
     std::shared_ptr<const MeshData> data;  // built by build_mesh; never null
 
-    Bounds3 bounds() const { return data->bvh.bounds(); }
-    // Nearest hit: the BVH, then Moeller-Trumbore on each triangle (as Triangle does).
-    // hit.part is the triangle's index, hit.u and hit.v the barycentric weights of its
-    // vertices 1 and 2.
+    Bounds3 bounds() const { return data->bounds; }
+    // Nearest hit: the mesh's BVH, then the watertight test on its triangles, four at a time
+    // (as Triangle tests one). hit.part is the triangle's index (the lower one at equal t),
+    // hit.u and hit.v the barycentric weights of its vertices 1 and 2.
     std::optional<ShapeHit> intersect(const Ray& ray, Interval t_range) const;
     // Whether any triangle is hit within t_range; stops at the first.
     bool occluded(const Ray& ray, Interval t_range) const;
@@ -66,7 +100,7 @@ struct TriangleMesh {
     SurfacePoint surface_at(const Ray& ray, const ShapeHit& hit) const;
 };
 
-// Moeller and Trumbore (1997) on the mesh's triangle `index`; two-sided.
+// The watertight test (as Triangle's) on the mesh's triangle `index`; two-sided.
 std::optional<ShapeHit> intersect_triangle(const MeshData& mesh, std::uint32_t index,
                                            const Ray& ray, Interval t_range);
 

@@ -18,33 +18,6 @@ struct Components {
     float operator[](int axis) const { return c[axis]; }
 };
 
-}  // namespace
-
-RayShear::RayShear(Vector3 direction) {
-    const Components d(direction);
-    const Vector3 a = abs(direction);
-    // kz is the axis of the largest |component| (the first of equals), chosen without branches:
-    // incoherent rays would mispredict them.
-    const int x_not_less_y = a.x >= a.y, x_not_less_z = a.x >= a.z, y_not_less_z = a.y >= a.z;
-    kz = 2 - 2 * (x_not_less_y & x_not_less_z) - ((1 - x_not_less_y) & y_not_less_z);
-    constexpr int kNext[3] = {1, 2, 0};
-    const int x = kNext[kz], y = kNext[x];
-    // Looking down a negative axis mirrors the xy plane; swapping x and y mirrors it back, so
-    // that the sign of the determinant still tells the front side (counter-clockwise) from the
-    // back.
-    const int swap = -int(d[kz] < 0);  // all ones or zero
-    kx = x ^ ((x ^ y) & swap);
-    ky = y ^ ((x ^ y) & swap);
-    sx = d[kx] / d[kz];
-    sy = d[ky] / d[kz];
-    sz = 1 / d[kz];
-    // An infinite component makes sz zero, and every t with it: poisoned like a NaN direction,
-    // such a ray hits nothing.
-    if (sz == 0) sx = sy = sz = std::numeric_limits<float>::quiet_NaN();
-}
-
-namespace {
-
 // A vertex in the ray's sheared frame, where the ray runs from (0, 0, 0) along +z. z is left
 // unscaled: only hits that pass the edge tests pay for the multiplication by sz.
 struct Sheared {

@@ -2,6 +2,7 @@
 // vertex that triangles share hits at least one of them, whatever the rounding.
 #pragma once
 
+#include <limits>
 #include <optional>
 
 #include "glint/geometry/surface_point.h"
@@ -17,7 +18,29 @@ struct RayShear {
     int kx = 0, ky = 1, kz = 2;
     float sx = 0, sy = 0, sz = 1;
 
-    explicit RayShear(Vector3 direction);
+    explicit RayShear(Vector3 direction) {
+        const float d[3] = {direction.x, direction.y, direction.z};
+        const Vector3 a = abs(direction);
+        // kz is the axis of the largest |component| (the first of equals), chosen without
+        // branches: incoherent rays would mispredict them.
+        const int x_not_less_y = a.x >= a.y, x_not_less_z = a.x >= a.z, y_not_less_z = a.y >= a.z;
+        kz = 2 - 2 * (x_not_less_y & x_not_less_z) - ((1 - x_not_less_y) & y_not_less_z);
+        constexpr int kNext[3] = {1, 2, 0};
+        const int x = kNext[kz], y = kNext[x];
+        // Looking down a negative axis mirrors the xy plane; swapping x and y mirrors it back, so
+        // that the sign of the determinant still tells the front side (counter-clockwise) from
+        // the back.
+        const int swap = -int(d[kz] < 0);  // all ones or zero
+        kx = x ^ ((x ^ y) & swap);
+        ky = y ^ ((x ^ y) & swap);
+        // Divided, not multiplied by 1 / d[kz]: one rounding each, the most accurate frame.
+        sx = d[kx] / d[kz];
+        sy = d[ky] / d[kz];
+        sz = 1 / d[kz];
+        // An infinite component makes sz zero, and every t with it: poisoned like a NaN
+        // direction, such a ray hits nothing.
+        if (sz == 0) sx = sy = sz = std::numeric_limits<float>::quiet_NaN();
+    }
 };
 
 // Woop, Benthin and Wald, "Watertight Ray/Triangle Intersection", JCGT 2(1), 2013, on the

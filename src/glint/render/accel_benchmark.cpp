@@ -96,7 +96,7 @@ std::size_t mesh_bvh_bytes(std::span<const Primitive> primitives) {
     for (const Primitive& p : primitives) {
         const auto* mesh = std::get_if<TriangleMesh>(&p.shape);
         if (!mesh || !seen.insert(mesh->data.get()).second) continue;
-        bytes += mesh->data->bvh.memory_bytes();
+        if (mesh->data->bvh_cache.built()) bytes += mesh->data->bvh().memory_bytes();
     }
     return bytes;
 }

@@ -39,12 +39,17 @@ World::World(const Scene& scene, AccelKind accel, ShadowAcceleration shadows)
     aggregate_ = make_aggregate(accel, primitives_);
     scene_scale_ = scene_scale(aggregate_->bounds(), camera_.eye());
     shadows_ = shadows;
+    bool any_buffer = false;
     for (const Light& light : lights_) {
         const auto* point = std::get_if<PointLight>(&light);
+        any_buffer |= point && shadows.light_buffer;
         light_buffers_.push_back(point && shadows.light_buffer
                                      ? std::make_unique<LightBuffer>(point->position, primitives_)
                                      : nullptr);
     }
+    // Meshes that are traced whole (inside instances, transforms and CSG, or listed in a light
+    // buffer's cells) get their own BVH now rather than on a render thread's first ray.
+    for (const Primitive& p : primitives_) prepare_mesh_bvhs(p.shape, any_buffer);
 }
 
 bool World::occluded_towards(std::size_t light, const Ray& ray, Interval t_range,

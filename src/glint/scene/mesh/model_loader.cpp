@@ -241,7 +241,7 @@ private:
                 it->second = std::uint32_t(model_.materials.size());
                 model_.materials.push_back(material(scene, key.material, format));
             }
-            model_.bounds = merge(model_.bounds, built.mesh->bvh.bounds());
+            model_.bounds = merge(model_.bounds, built.mesh->bounds);
             model_.parts.push_back({std::move(built.mesh), it->second});
         }
         if (dropped > 0) {

@@ -1,7 +1,7 @@
 // The wide BVH: collapse invariants, a build that is the same for any thread count, node tests
 // that agree bit for bit across SIMD paths, and traversal against brute force on random and
 // adversarial rays on every path.
-#include "glint/geometry/bvh4.h"
+#include "glint/geometry/wide_bvh.h"
 
 #include <gtest/gtest.h>
 #include <tbb/global_control.h>
@@ -16,8 +16,8 @@
 #include <random>
 #include <vector>
 
-#include "glint/geometry/bvh4_traversal.h"
 #include "glint/geometry/simd_path.h"
+#include "glint/geometry/wide_bvh_traversal.h"
 
 namespace glint {
 namespace {
@@ -97,8 +97,8 @@ Nearest brute_force(const std::vector<Bounds3>& boxes, const Ray& ray, Interval 
 }
 
 // The nearest box through the wide BVH, and the primitives in the order visited.
-Nearest with_bvh4(const Bvh4& bvh, const std::vector<Bounds3>& boxes, const Ray& ray,
-                  Interval range, std::vector<std::uint32_t>* visited = nullptr) {
+Nearest with_wide_bvh(const WideBvh& bvh, const std::vector<Bounds3>& boxes, const Ray& ray,
+                      Interval range, std::vector<std::uint32_t>* visited = nullptr) {
     Nearest n;
     bvh_closest_hit(bvh, ray, range, [&](std::uint32_t i, Interval r) -> std::optional<float> {
         if (visited) visited->push_back(i);
@@ -110,8 +110,8 @@ Nearest with_bvh4(const Bvh4& bvh, const std::vector<Bounds3>& boxes, const Ray&
     return n;
 }
 
-bool any_with_bvh4(const Bvh4& bvh, const std::vector<Bounds3>& boxes, const Ray& ray,
-                   Interval range) {
+bool any_with_wide_bvh(const WideBvh& bvh, const std::vector<Bounds3>& boxes, const Ray& ray,
+                       Interval range) {
     return bvh_any_hit(bvh, ray, range, [&](std::uint32_t i, Interval r) {
         return box_hit(boxes[i], ray, r).has_value();
     });
@@ -146,8 +146,8 @@ std::vector<Bounds3> box_grid(int n) {
 // Every primitive in exactly one leaf of at most max_leaf, each child box inside the box its
 // parent's slot gives it, unused slots empty and last, every node reachable once, and depth
 // below kBvhMaxDepth.
-void expect_valid(const Bvh4& bvh, const std::vector<Bounds3>& bounds,
-                  int max_leaf = kBvh4BuildOptions.max_leaf_size) {
+void expect_valid(const WideBvh& bvh, const std::vector<Bounds3>& bounds,
+                  int max_leaf = kWideBvhBuildOptions.max_leaf_size) {
     ASSERT_EQ(bvh.primitive_indices.size(), bounds.size());
     if (bounds.empty()) {
         EXPECT_TRUE(bvh.nodes.empty());
@@ -170,10 +170,10 @@ void expect_valid(const Bvh4& bvh, const std::vector<Bounds3>& bounds,
         ++visited;
         ASSERT_LT(item.depth, kBvhMaxDepth);
         ASSERT_LT(item.node, bvh.nodes.size());
-        const Bvh4Node& node = bvh.nodes[item.node];
+        const WideBvhNode& node = bvh.nodes[item.node];
         bool unused_seen = false;
         int used = 0;
-        for (int k = 0; k < 4; ++k) {
+        for (int k = 0; k < kWideBvhWidth; ++k) {
             const Bounds3 box = node.child_bounds(k);
             if (node.is_leaf(k) && node.count[k] == 0) {
                 unused_seen = true;
@@ -186,7 +186,7 @@ void expect_valid(const Bvh4& bvh, const std::vector<Bounds3>& bounds,
             ASSERT_TRUE(inside(box, item.box));
             if (node.is_leaf(k)) {
                 ASSERT_LE(int(node.count[k]), max_leaf);
-                const std::uint32_t first = node.child[k] & ~kBvh4Leaf;
+                const std::uint32_t first = node.child[k] & ~kWideLeaf;
                 for (std::uint32_t i = 0; i < node.count[k]; ++i) {
                     const std::uint32_t p = bvh.primitive_indices[first + i];
                     ++seen[p];
@@ -234,13 +234,13 @@ Vector3 adversarial_direction(std::mt19937& rng, int i) {
     }
 }
 
-TEST(Bvh4, NodesAreTwoCacheLines) {
-    EXPECT_EQ(sizeof(Bvh4Node), 128u);
-    EXPECT_EQ(alignof(Bvh4Node), 64u);
+TEST(WideBvh, NodesAreFourCacheLines) {
+    EXPECT_EQ(sizeof(WideBvhNode), 256u);
+    EXPECT_EQ(alignof(WideBvhNode), 64u);
 }
 
-TEST(Bvh4, NoPrimitivesGivesAnEmptyTreeThatNothingHits) {
-    const Bvh4 bvh = build_bvh4({});
+TEST(WideBvh, NoPrimitivesGivesAnEmptyTreeThatNothingHits) {
+    const WideBvh bvh = build_wide_bvh({});
     EXPECT_TRUE(bvh.nodes.empty());
     EXPECT_TRUE(bvh.bounds().is_empty());
     const Ray ray{{0, 0, 0}, {0, 0, 1}};
@@ -252,60 +252,133 @@ TEST(Bvh4, NoPrimitivesGivesAnEmptyTreeThatNothingHits) {
     });
 }
 
-TEST(Bvh4, OnePrimitiveIsTheRootsOnlyChild) {
+TEST(WideBvh, OnePrimitiveIsTheRootsOnlyChild) {
     const std::vector<Bounds3> b{{{0, 0, 0}, {1, 1, 1}}};
-    const Bvh4 bvh = build_bvh4(b);
+    const WideBvh bvh = build_wide_bvh(b);
     ASSERT_EQ(bvh.nodes.size(), 1u);
     EXPECT_TRUE(bvh.nodes[0].is_leaf(0));
     EXPECT_EQ(bvh.nodes[0].count[0], 1);
-    for (int k = 1; k < 4; ++k) EXPECT_EQ(bvh.nodes[0].count[k], 0);
+    for (int k = 1; k < kWideBvhWidth; ++k) EXPECT_EQ(bvh.nodes[0].count[k], 0);
     expect_valid(bvh, b);
     EveryPath paths;
     paths.run([&](SimdPath) {
-        EXPECT_EQ(with_bvh4(bvh, b, Ray{{0.5f, 0.5f, -1}, {0, 0, 1}}, {}).t, 1.0f);
-        EXPECT_FALSE(with_bvh4(bvh, b, Ray{{1.5f, 0.5f, -1}, {0, 0, 1}}, {}).hit);
+        EXPECT_EQ(with_wide_bvh(bvh, b, Ray{{0.5f, 0.5f, -1}, {0, 0, 1}}, {}).t, 1.0f);
+        EXPECT_FALSE(with_wide_bvh(bvh, b, Ray{{1.5f, 0.5f, -1}, {0, 0, 1}}, {}).hit);
     });
 }
 
-TEST(Bvh4, CollapseKeepsTheBinaryLeavesAndFillsNodes) {
+TEST(WideBvh, CollapseKeepsTheBinaryLeavesAndFillsNodes) {
     const std::vector<Bounds3> b = random_boxes(5000, 1);
     const Bvh binary = build_bvh(b);
     std::vector<std::pair<std::uint32_t, std::uint32_t>> binary_leaves, wide_leaves;
     for (const BvhNode& n : binary.nodes)
         if (n.is_leaf()) binary_leaves.emplace_back(n.offset, n.count);
-    const Bvh4 wide = collapse_to_bvh4(binary);
+    const WideBvh wide = collapse_to_wide_bvh(binary);
     expect_valid(wide, b);
     EXPECT_EQ(wide.primitive_indices, binary.primitive_indices);
     EXPECT_EQ(wide.root_bounds.min, binary.nodes[0].bounds.min);
     EXPECT_EQ(wide.root_bounds.max, binary.nodes[0].bounds.max);
     std::size_t slots = 0;
-    for (const Bvh4Node& n : wide.nodes) {
-        for (int k = 0; k < 4; ++k) {
+    for (const WideBvhNode& n : wide.nodes) {
+        for (int k = 0; k < kWideBvhWidth; ++k) {
             if (n.is_leaf(k) && n.count[k] > 0)
-                wide_leaves.emplace_back(n.child[k] & ~kBvh4Leaf, n.count[k]);
+                wide_leaves.emplace_back(n.child[k] & ~kWideLeaf, n.count[k]);
             slots += !(n.is_leaf(k) && n.count[k] == 0);
         }
     }
     std::sort(binary_leaves.begin(), binary_leaves.end());
     std::sort(wide_leaves.begin(), wide_leaves.end());
     EXPECT_EQ(wide_leaves, binary_leaves);
-    // Opening the largest child until four fills most slots; nodes over binary nodes whose
-    // children are both leaves keep two.
-    EXPECT_GT(double(slots) / double(4 * wide.nodes.size()), 0.7);
+    // Opening the largest child until all are used fills most slots; nodes over binary nodes
+    // whose children are both leaves keep two.
+    EXPECT_GT(double(slots) / double(kWideBvhWidth * wide.nodes.size()), 0.5);
 }
 
-TEST(Bvh4, LeafSizeOptionIsRespected) {
+TEST(WideBvh, NoLeafMixesKinds) {
+    const std::vector<Bounds3> b = random_boxes(4000, 6, 10, 2);  // overlapping: mixed ranges
+    std::vector<std::uint8_t> kinds(b.size());
+    for (std::size_t i = 0; i < b.size(); ++i) kinds[i] = std::uint8_t(i % 3 == 0);
+    const WideBvh bvh = build_wide_bvh(b, kWideBvhTriangleBuildOptions, kinds);
+    expect_valid(bvh, b);
+    for (const WideBvhNode& n : bvh.nodes) {
+        for (int k = 0; k < kWideBvhWidth; ++k) {
+            if (!n.is_leaf(k) || n.count[k] == 0) continue;
+            const std::uint32_t first = n.child[k] & ~kWideLeaf;
+            for (std::uint32_t i = 1; i < n.count[k]; ++i)
+                ASSERT_EQ(kinds[bvh.primitive_indices[first + i]],
+                          kinds[bvh.primitive_indices[first]]);
+        }
+    }
+}
+
+TEST(WideBvh, PackingTurnsLeavesOfTrianglesIntoBlocksInIdOrder) {
+    // Small triangles in random boxes; every fourth primitive is not a triangle.
+    std::mt19937 rng(3);
+    std::uniform_real_distribution<float> u(-10, 10), small(-0.5f, 0.5f);
+    std::vector<std::array<Point3, 3>> corners;
+    std::vector<Bounds3> b;
+    std::vector<std::uint8_t> kinds;
+    for (int i = 0; i < 3000; ++i) {
+        const Point3 c{u(rng), u(rng), u(rng)};
+        const auto corner = [&] { return c + Vector3{small(rng), small(rng), small(rng)}; };
+        corners.push_back({corner(), corner(), corner()});
+        b.push_back(merge(Bounds3::of(corners[i][0], corners[i][1]), corners[i][2]));
+        kinds.push_back(i % 4 == 0 ? 0 : 1);
+    }
+    WideBvh bvh = build_wide_bvh(b, kWideBvhTriangleBuildOptions, kinds);
+    pack_triangle_leaves(bvh, [&](std::uint32_t i) -> std::optional<BlockTriangle> {
+        if (kinds[i] == 0) return std::nullopt;
+        return BlockTriangle{corners[i][0], corners[i][1], corners[i][2], 100000 + i};
+    });
+    std::vector<int> seen(b.size());
+    for (const WideBvhNode& n : bvh.nodes) {
+        for (int k = 0; k < kWideBvhWidth; ++k) {
+            if (!n.is_leaf(k) || n.count[k] == 0) continue;
+            const Bounds3 box = n.child_bounds(k);
+            if ((n.child[k] & kWideBlockLeaf) == 0) {
+                for (const std::uint32_t i : leaf_primitives(bvh, n.child[k], n.count[k])) {
+                    EXPECT_EQ(kinds[i], 0);
+                    ++seen[i];
+                }
+                continue;
+            }
+            std::uint32_t previous = 0;
+            int lanes = 0;
+            for (const TriangleBlock& block : leaf_blocks(bvh, n.child[k], n.count[k])) {
+                for (int lane = 0; lane < 4; ++lane) {
+                    if (block.id[lane] == kNoTriangle) continue;
+                    ++lanes;
+                    ASSERT_GT(block.id[lane], previous) << "lanes run in ascending id";
+                    previous = block.id[lane];
+                    const std::uint32_t i = block.id[lane] - 100000;
+                    EXPECT_EQ(kinds[i], 1);
+                    ++seen[i];
+                    for (int c = 0; c < 3; ++c) {
+                        EXPECT_EQ(block.corner(lane, c), corners[i][std::size_t(c)]);
+                        EXPECT_TRUE(box.contains(corners[i][std::size_t(c)]));
+                    }
+                }
+            }
+            // Blocks are filled before a new one starts.
+            EXPECT_EQ((lanes + 3) / 4, int(n.count[k]));
+        }
+    }
+    for (std::size_t i = 0; i < seen.size(); ++i) ASSERT_EQ(seen[i], 1) << "primitive " << i;
+    EXPECT_EQ(bvh.primitive_indices.size(), b.size() / 4);  // only the leaves of other shapes
+}
+
+TEST(WideBvh, LeafSizeOptionIsRespected) {
     const std::vector<Bounds3> b = random_boxes(3000, 2);
     for (const int leaf : {1, 2, 8}) {
         BvhBuildOptions options;
         options.max_leaf_size = leaf;
-        expect_valid(build_bvh4(b, options), b, leaf);
+        expect_valid(build_wide_bvh(b, options), b, leaf);
     }
 }
 
-TEST(Bvh4, AMillionCoincidentBoxesTerminateWithSmallLeaves) {
+TEST(WideBvh, AMillionCoincidentBoxesTerminateWithSmallLeaves) {
     const std::vector<Bounds3> b(1'000'000, Bounds3{{1, 2, 3}, {1, 2, 3}});  // zero extent too
-    const Bvh4 bvh = build_bvh4(b);
+    const WideBvh bvh = build_wide_bvh(b);
     expect_valid(bvh, b);
     // A ray through the point meets them all; any hit stops at the first.
     int calls = 0;
@@ -316,7 +389,7 @@ TEST(Bvh4, AMillionCoincidentBoxesTerminateWithSmallLeaves) {
     EXPECT_EQ(calls, 1);
 }
 
-TEST(Bvh4, SkewedAndNonFiniteInputStaysValid) {
+TEST(WideBvh, SkewedAndNonFiniteInputStaysValid) {
     std::vector<Bounds3> b;
     for (int i = 0; i < 120; ++i) {  // exponentially spaced: SAH cuts one off at a time
         const float x = std::ldexp(1.0f, i);
@@ -324,36 +397,36 @@ TEST(Bvh4, SkewedAndNonFiniteInputStaysValid) {
     }
     BvhBuildOptions options;
     options.max_leaf_size = 1;
-    expect_valid(build_bvh4(b, options), b, 1);
+    expect_valid(build_wide_bvh(b, options), b, 1);
 
     std::vector<Bounds3> odd = random_boxes(200, 3);
     odd[5] = Bounds3{};  // empty
     odd[9] = {{-kInfinity, 0, 0}, {kInfinity, 1, 1}};
     odd[11].min.x = kNaN;
-    const Bvh4 bvh = build_bvh4(odd);
+    const WideBvh bvh = build_wide_bvh(odd);
     std::vector<std::uint32_t> sorted = bvh.primitive_indices;
     std::sort(sorted.begin(), sorted.end());
     for (std::uint32_t i = 0; i < sorted.size(); ++i) ASSERT_EQ(sorted[i], i);
 }
 
 // Big enough for the blocked binning and partition (2^16) and the subtree tasks (2^12).
-TEST(Bvh4, BuildIsIdenticalForAnyThreadCount) {
+TEST(WideBvh, BuildIsIdenticalForAnyThreadCount) {
     std::vector<Bounds3> b = random_boxes(300'000, 4, 100, 2);
     // Duplicates and a cluster, so that median splits and the fallbacks run as well.
     for (int i = 0; i < 20'000; ++i) b.push_back({{5, 5, 5}, {6, 6, 6}});
     Bvh reference_binary;
-    Bvh4 reference;
+    WideBvh reference;
     on_threads(1, [&] {
         reference_binary = build_bvh(b);
-        reference = build_bvh4(b);
+        reference = build_wide_bvh(b);
     });
     expect_valid(reference, b);
     for (const int threads : {2, 3, 8}) {
         Bvh binary;
-        Bvh4 wide;
+        WideBvh wide;
         on_threads(threads, [&] {
             binary = build_bvh(b);
-            wide = build_bvh4(b);
+            wide = build_wide_bvh(b);
         });
         ASSERT_EQ(binary.nodes.size(), reference_binary.nodes.size()) << threads << " threads";
         EXPECT_EQ(std::memcmp(binary.nodes.data(), reference_binary.nodes.data(),
@@ -363,7 +436,7 @@ TEST(Bvh4, BuildIsIdenticalForAnyThreadCount) {
         EXPECT_EQ(binary.primitive_indices, reference_binary.primitive_indices);
         ASSERT_EQ(wide.nodes.size(), reference.nodes.size()) << threads << " threads";
         EXPECT_EQ(std::memcmp(wide.nodes.data(), reference.nodes.data(),
-                              wide.nodes.size() * sizeof(Bvh4Node)),
+                              wide.nodes.size() * sizeof(WideBvhNode)),
                   0)
             << threads << " threads";
         EXPECT_EQ(wide.primitive_indices, reference.primitive_indices);
@@ -372,15 +445,15 @@ TEST(Bvh4, BuildIsIdenticalForAnyThreadCount) {
 
 // The node test of every kernel against slab_hit, child by child, on random nodes and on rays
 // with zero, -0, infinite and NaN components.
-#ifdef GLINT_BVH4_HAS_SIMD
-// The vector kernel as the avx2 path compiles it.
-__attribute__((target("avx2"))) unsigned avx2_node_test(const Bvh4Node& node, const BvhRay& r,
+#ifdef GLINT_WIDE_BVH_HAS_SIMD
+// The AVX2 kernel, which only target("avx2") functions can run.
+__attribute__((target("avx2"))) unsigned avx2_node_test(const WideBvhNode& node, const BvhRay& r,
                                                         float t_min, float t_max, float* t_near) {
-    return bvh4::VectorKernel::test(node, bvh4::VectorKernel::Ray(r), t_min, t_max, t_near);
+    return wide_bvh::Avx2Kernel::test(node, wide_bvh::Avx2Kernel::Ray(r), t_min, t_max, t_near);
 }
 #endif
 
-TEST(Bvh4, NodeTestKernelsAgreeWithSlabHitBitForBit) {
+TEST(WideBvh, NodeTestKernelsAgreeWithSlabHitBitForBit) {
     std::mt19937 rng(5);
     std::uniform_real_distribution<float> u(-4, 4);
     std::uniform_int_distribution<int> pick(0, 9);
@@ -390,8 +463,8 @@ TEST(Bvh4, NodeTestKernelsAgreeWithSlabHitBitForBit) {
     };
     int hits = 0;
     for (int i = 0; i < 20000; ++i) {
-        Bvh4Node node{};
-        for (int k = 0; k < 4; ++k) {
+        WideBvhNode node{};
+        for (int k = 0; k < kWideBvhWidth; ++k) {
             Point3 a{coordinate(), coordinate(), coordinate()};
             Point3 b{coordinate(), coordinate(), coordinate()};
             Bounds3 box = Bounds3::of(a, b);
@@ -409,22 +482,22 @@ TEST(Bvh4, NodeTestKernelsAgreeWithSlabHitBitForBit) {
         const float t_min = pick(rng) < 8 ? 0.0f : u(rng);
         const float t_max = pick(rng) < 5 ? kInfinity : std::abs(u(rng));
 
-        alignas(16) float scalar_t[4];
-        const unsigned scalar =
-            bvh4::ScalarKernel::test(node, bvh4::ScalarKernel::Ray(r), t_min, t_max, scalar_t);
-        for (int k = 0; k < 4; ++k) {
+        alignas(32) float scalar_t[kWideBvhWidth];
+        const unsigned scalar = wide_bvh::ScalarKernel::test(node, wide_bvh::ScalarKernel::Ray(r),
+                                                             t_min, t_max, scalar_t);
+        for (int k = 0; k < kWideBvhWidth; ++k) {
             const bool expected = slab_hit(node.child_bounds(k), r, t_min, t_max);
             ASSERT_EQ(((scalar >> k) & 1) != 0, expected) << "ray " << i << " child " << k;
         }
         hits += std::popcount(scalar);
-#ifdef GLINT_BVH4_HAS_SIMD
-        alignas(16) float vector_t[4];
-        const unsigned vector =
-            bvh4::VectorKernel::test(node, bvh4::VectorKernel::Ray(r), t_min, t_max, vector_t);
-        ASSERT_EQ(vector, scalar) << "ray " << i;
-        ASSERT_EQ(std::memcmp(vector_t, scalar_t, sizeof scalar_t), 0) << "ray " << i;
+#ifdef GLINT_WIDE_BVH_HAS_SIMD
+        alignas(32) float sse_t[kWideBvhWidth];
+        const unsigned sse =
+            wide_bvh::SseKernel::test(node, wide_bvh::SseKernel::Ray(r), t_min, t_max, sse_t);
+        ASSERT_EQ(sse, scalar) << "ray " << i;
+        ASSERT_EQ(std::memcmp(sse_t, scalar_t, sizeof scalar_t), 0) << "ray " << i;
         if (simd_path_supported(SimdPath::avx2)) {
-            alignas(16) float avx2_t[4];
+            alignas(32) float avx2_t[kWideBvhWidth];
             ASSERT_EQ(avx2_node_test(node, r, t_min, t_max, avx2_t), scalar) << "ray " << i;
             ASSERT_EQ(std::memcmp(avx2_t, scalar_t, sizeof scalar_t), 0) << "ray " << i;
         }
@@ -435,7 +508,7 @@ TEST(Bvh4, NodeTestKernelsAgreeWithSlabHitBitForBit) {
 
 // Closest hit (t and index, ties to the lower index) and any hit equal brute force on every
 // path, and every path visits the same primitives in the same order.
-void expect_agreement(const std::vector<Bounds3>& boxes, const Bvh4& bvh,
+void expect_agreement(const std::vector<Bounds3>& boxes, const WideBvh& bvh,
                       const std::vector<std::pair<Ray, Interval>>& rays, int min_hits) {
     EveryPath paths;
     std::vector<std::vector<std::uint32_t>> first_path_order(rays.size());
@@ -446,9 +519,9 @@ void expect_agreement(const std::vector<Bounds3>& boxes, const Bvh4& bvh,
             const auto& [ray, range] = rays[i];
             const Nearest expected = brute_force(boxes, ray, range);
             std::vector<std::uint32_t> order;
-            const Nearest got = with_bvh4(bvh, boxes, ray, range, &order);
+            const Nearest got = with_wide_bvh(bvh, boxes, ray, range, &order);
             ASSERT_EQ(got.hit, expected.hit) << simd_path_name(path) << " ray " << i;
-            ASSERT_EQ(any_with_bvh4(bvh, boxes, ray, range), expected.hit)
+            ASSERT_EQ(any_with_wide_bvh(bvh, boxes, ray, range), expected.hit)
                 << simd_path_name(path) << " ray " << i;
             if (first) {
                 first_path_order[i] = std::move(order);
@@ -465,10 +538,10 @@ void expect_agreement(const std::vector<Bounds3>& boxes, const Bvh4& bvh,
     });
 }
 
-TEST(Bvh4, ClosestAndAnyHitMatchBruteForceOnRandomRaysOnEveryPath) {
+TEST(WideBvh, ClosestAndAnyHitMatchBruteForceOnRandomRaysOnEveryPath) {
     for (const unsigned seed : {1u, 2u}) {
         const auto boxes = random_boxes(3000, seed, 10, 0.5f);
-        const Bvh4 bvh = build_bvh4(boxes);
+        const WideBvh bvh = build_wide_bvh(boxes);
         std::mt19937 rng(seed + 100);
         std::uniform_real_distribution<float> u(-1, 1), unit(0, 1);
         std::vector<std::pair<Ray, Interval>> rays;
@@ -483,9 +556,9 @@ TEST(Bvh4, ClosestAndAnyHitMatchBruteForceOnRandomRaysOnEveryPath) {
     }
 }
 
-TEST(Bvh4, RaysStartingOnBoxesAndRunningAlongTheirFacesMatchBruteForce) {
+TEST(WideBvh, RaysStartingOnBoxesAndRunningAlongTheirFacesMatchBruteForce) {
     const auto boxes = box_grid(8);
-    const Bvh4 bvh = build_bvh4(boxes);
+    const WideBvh bvh = build_wide_bvh(boxes);
     std::mt19937 rng(9);
     std::uniform_int_distribution<int> grid(0, 8);
     std::uniform_real_distribution<float> u(0, 8);
@@ -503,9 +576,9 @@ TEST(Bvh4, RaysStartingOnBoxesAndRunningAlongTheirFacesMatchBruteForce) {
     expect_agreement(boxes, bvh, rays, 3000);
 }
 
-TEST(Bvh4, AnyHitStopsAtTheFirstHit) {
+TEST(WideBvh, AnyHitStopsAtTheFirstHit) {
     const auto boxes = random_boxes(500, 4, 1, 0.2f);  // dense: a ray through the middle hits many
-    const Bvh4 bvh = build_bvh4(boxes);
+    const WideBvh bvh = build_wide_bvh(boxes);
     const Ray ray{{-20, 0.1f, 0.2f}, {1, 0, 0}};
     EveryPath paths;
     paths.run([&](SimdPath) {
@@ -521,20 +594,20 @@ TEST(Bvh4, AnyHitStopsAtTheFirstHit) {
     });
 }
 
-TEST(Bvh4, ClosestHitCullsSubtreesBeyondTheNearestHit) {
+TEST(WideBvh, ClosestHitCullsSubtreesBeyondTheNearestHit) {
     // A row of boxes along x: a ray along x needs only the first few.
     std::vector<Bounds3> boxes;
     for (int i = 0; i < 1000; ++i) boxes.push_back({{float(i), 0, 0}, {float(i) + 0.5f, 1, 1}});
-    const Bvh4 bvh = build_bvh4(boxes);
+    const WideBvh bvh = build_wide_bvh(boxes);
     std::vector<std::uint32_t> visited;
-    const Nearest n = with_bvh4(bvh, boxes, Ray{{-1, 0.5f, 0.5f}, {1, 0, 0}}, {}, &visited);
+    const Nearest n = with_wide_bvh(bvh, boxes, Ray{{-1, 0.5f, 0.5f}, {1, 0, 0}}, {}, &visited);
     EXPECT_EQ(n.index, 0u);
     EXPECT_LT(visited.size(), 20u);
 }
 
-TEST(Bvh4, NaNRaysVisitOnlyRealLeaves) {
+TEST(WideBvh, NaNRaysVisitOnlyRealLeaves) {
     const auto boxes = random_boxes(100, 6);
-    const Bvh4 bvh = build_bvh4(boxes);
+    const WideBvh bvh = build_wide_bvh(boxes);
     const Ray ray{{kNaN, 0, 0}, {1, kNaN, 0}};
     EveryPath paths;
     paths.run([&](SimdPath) {

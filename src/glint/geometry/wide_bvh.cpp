@@ -1,6 +1,7 @@
 // Collapsing the binary BVH into four-wide nodes.
-#include "glint/geometry/bvh4.h"
+#include "glint/geometry/wide_bvh.h"
 
+#include <algorithm>
 #include <array>
 #include <cassert>
 
@@ -10,39 +11,41 @@ namespace {
 
 class Collapser {
 public:
-    Collapser(const std::vector<BvhNode>& binary, std::vector<Bvh4Node>& wide)
+    using Slots = std::array<std::uint32_t, kWideBvhWidth>;
+
+    Collapser(const std::vector<BvhNode>& binary, std::vector<WideBvhNode>& wide)
         : binary_(binary), wide_(wide) {}
 
     // Fills wide_[index] from the binary subtree at `root`, then its descendants. The interior
     // children of a node are placed side by side, so that a traversal that visits several of them
     // touches neighbouring cache lines.
     void collapse(std::uint32_t root, std::uint32_t index) {
-        std::array<std::uint32_t, 4> slot{};
+        Slots slot{};
         int n = 0;
         if (binary_[root].is_leaf()) {
             slot[n++] = root;
         } else {
             slot[n++] = root + 1;
             slot[n++] = binary_[root].offset;
-            while (n < 4 && open_largest(slot, n)) ++n;
+            while (n < kWideBvhWidth && open_largest(slot, n)) ++n;
         }
         auto next = std::uint32_t(wide_.size());
         for (int k = 0; k < n; ++k) next += binary_[slot[std::size_t(k)]].is_leaf() ? 0 : 1;
         const auto first_child = std::uint32_t(wide_.size());
         wide_.resize(next);
-        Bvh4Node& node = wide_[index];
+        WideBvhNode& node = wide_[index];
         next = first_child;
-        for (int k = 0; k < 4; ++k) {
+        for (int k = 0; k < kWideBvhWidth; ++k) {
             const Bounds3 b = k < n ? binary_[slot[std::size_t(k)]].bounds : Bounds3{};
             node.planes[0][k] = b.min.x, node.planes[1][k] = b.min.y, node.planes[2][k] = b.min.z;
             node.planes[3][k] = b.max.x, node.planes[4][k] = b.max.y, node.planes[5][k] = b.max.z;
-            node.child[k] = kBvh4Leaf;
+            node.child[k] = kWideLeaf;
             node.count[k] = 0;
             if (k >= n) continue;
             const BvhNode& child = binary_[slot[std::size_t(k)]];
             if (child.is_leaf()) {
-                assert(child.offset < kBvh4Leaf && child.count <= 255);
-                node.child[k] = kBvh4Leaf | child.offset;
+                assert(child.offset < kWideBlockLeaf && child.count <= 255);
+                node.child[k] = kWideLeaf | child.offset;
                 node.count[k] = std::uint8_t(child.count);
             } else {
                 node.child[k] = next++;
@@ -57,7 +60,7 @@ public:
 private:
     // Replaces the interior child of largest surface area (the lowest slot at equal area) by its
     // two children, in place; false when every child is a leaf.
-    bool open_largest(std::array<std::uint32_t, 4>& slot, int n) const {
+    bool open_largest(Slots& slot, int n) const {
         int best = -1;
         float best_area = -1;
         for (int k = 0; k < n; ++k) {
@@ -75,15 +78,15 @@ private:
     }
 
     const std::vector<BvhNode>& binary_;
-    std::vector<Bvh4Node>& wide_;
+    std::vector<WideBvhNode>& wide_;
 };
 
 }  // namespace
 
-Bvh4 collapse_to_bvh4(Bvh binary) {
-    Bvh4 wide;
+WideBvh collapse_to_wide_bvh(Bvh binary) {
+    WideBvh wide;
     if (binary.nodes.empty()) return wide;
-    assert(binary.primitive_indices.size() < kBvh4Leaf);
+    assert(binary.primitive_indices.size() < kWideBlockLeaf);
     wide.root_bounds = binary.nodes[0].bounds;
     // Each wide node opens at least one interior binary node, and half the nodes are leaves.
     wide.nodes.reserve(binary.nodes.size() / 2 + 1);
@@ -94,8 +97,49 @@ Bvh4 collapse_to_bvh4(Bvh binary) {
     return wide;
 }
 
-Bvh4 build_bvh4(std::span<const Bounds3> bounds, const BvhBuildOptions& options) {
-    return collapse_to_bvh4(build_bvh(bounds, options));
+WideBvh build_wide_bvh(std::span<const Bounds3> bounds, const BvhBuildOptions& options,
+                       std::span<const std::uint8_t> kinds) {
+    return collapse_to_wide_bvh(build_bvh(bounds, options, kinds));
+}
+
+void pack_triangle_leaves(
+    WideBvh& bvh, const std::function<std::optional<BlockTriangle>(std::uint32_t)>& triangle) {
+    std::vector<std::uint32_t> kept;  // primitive_indices of the leaves that stay as they are
+    std::vector<BlockTriangle> leaf;
+    for (WideBvhNode& node : bvh.nodes) {
+        for (int k = 0; k < kWideBvhWidth; ++k) {
+            if (!node.is_leaf(k) || node.count[k] == 0) continue;
+            assert((node.child[k] & kWideBlockLeaf) == 0);
+            const std::uint32_t first = node.child[k] & ~kWideLeaf;
+            const std::uint32_t count = node.count[k];
+            leaf.clear();
+            for (std::uint32_t i = 0; i < count; ++i) {
+                const auto t = triangle(bvh.primitive_indices[first + i]);
+                if (!t) break;
+                leaf.push_back(*t);
+            }
+            if (leaf.size() < count) {
+                node.child[k] = kWideLeaf | std::uint32_t(kept.size());
+                kept.insert(kept.end(), bvh.primitive_indices.begin() + first,
+                            bvh.primitive_indices.begin() + first + count);
+                continue;
+            }
+            std::sort(leaf.begin(), leaf.end(),
+                      [](const BlockTriangle& a, const BlockTriangle& b) { return a.id < b.id; });
+            const auto first_block = std::uint32_t(bvh.blocks.size());
+            for (std::size_t i = 0; i < leaf.size(); ++i) {
+                if (i % 4 == 0) bvh.blocks.push_back(empty_triangle_block());
+                const BlockTriangle& t = leaf[i];
+                set_block_lane(bvh.blocks.back(), int(i % 4), t.v0, t.v1, t.v2, t.id);
+            }
+            assert(bvh.blocks.size() <= kWideBlockLeaf);
+            node.child[k] = kWideLeaf | kWideBlockLeaf | first_block;
+            node.count[k] = std::uint8_t(bvh.blocks.size() - first_block);
+        }
+    }
+    kept.shrink_to_fit();
+    bvh.primitive_indices = std::move(kept);
+    bvh.blocks.shrink_to_fit();
 }
 
 }  // namespace glint

@@ -1,0 +1,256 @@
+// Traversal of the wide BVH: closest hit (children visited nearest first, subtrees culled once the
+// nearest hit is nearer than their boxes) and any hit (stops at the first), calling back per leaf
+// (or per primitive, as the binary templates of bvh.h do). Allocation-free (a fixed stack), and
+// the same leaves are visited in the same order on every SimdPath.
+#pragma once
+
+#include <array>
+#include <optional>
+#include <span>
+#include <utility>
+
+#include "glint/geometry/bvh.h"
+#include "glint/geometry/simd_path.h"
+#include "glint/geometry/wide_bvh.h"
+#include "glint/geometry/wide_bvh_node_test.h"
+#include "glint/math/interval.h"
+#include "glint/math/ray.h"
+
+// For leaf callbacks: inlined into each traversal instantiation, so that they take its
+// instruction set (VEX-encoded in the AVX2 one) and keep the ray in registers across leaves.
+#define GLINT_INLINE_LEAF __attribute__((always_inline))
+
+namespace glint {
+
+namespace wide_bvh {
+
+// A wide node is at least one binary level below its parent and pushes at most all but one of its
+// children, so a path of kBvhMaxDepth levels never holds more.
+inline constexpr int kStackSize = (kWideBvhWidth - 1) * kBvhMaxDepth;
+
+struct StackEntry {
+    std::uint32_t child;  // as in WideBvhNode::child
+    std::uint32_t count;  // of a leaf
+    float t_near;         // where the ray enters its box
+};
+
+// Sorts n (at most kWideBvhWidth) entries by t_near, nearest first; stable, so that at equal t_near
+// the lower slot stays first and the order does not depend on the kernel.
+[[gnu::always_inline]] inline void sort_by_distance(StackEntry* e, int n) {
+    for (int i = 1; i < n; ++i) {
+        const StackEntry x = e[i];
+        int m = i;
+        for (; m > 0 && x.t_near < e[m - 1].t_near; --m) e[m] = e[m - 1];
+        e[m] = x;
+    }
+}
+
+template <typename Kernel, typename Visit>
+[[gnu::always_inline]] inline std::optional<float> closest_hit(const WideBvh& bvh, const Ray& ray,
+                                                               Interval t_range, Visit& visit) {
+    const typename Kernel::Ray r{BvhRay(ray)};
+    std::array<StackEntry, kStackSize> stack;
+    int top = 0;
+    std::uint32_t child = 0, count = 0;  // the root, a node
+    std::optional<float> nearest;
+    for (;;) {
+        if ((child & kWideLeaf) == 0) {
+            const WideBvhNode& node = bvh.nodes[child];
+            alignas(32) float t_near[kWideBvhWidth];
+            unsigned mask = Kernel::test(node, r, t_range.min, t_range.max, t_near);
+            if (mask != 0) {
+                unsigned k = unsigned(__builtin_ctz(mask));
+                mask &= mask - 1;
+                if (mask == 0) {  // one child: no ordering, no stack
+                    child = node.child[k];
+                    count = node.count[k];
+                    continue;
+                }
+                unsigned j = unsigned(__builtin_ctz(mask));
+                mask &= mask - 1;
+                if (mask == 0) {  // two: the nearer now, the other later (the lower slot at a tie)
+                    if (t_near[j] < t_near[k]) std::swap(j, k);
+                    stack[std::size_t(top++)] = {node.child[j], node.count[j], t_near[j]};
+                    child = node.child[k];
+                    count = node.count[k];
+                    continue;
+                }
+                // More: sorted, the farthest deepest in the stack, the nearest now.
+                StackEntry hit[kWideBvhWidth] = {{node.child[k], node.count[k], t_near[k]},
+                                                 {node.child[j], node.count[j], t_near[j]}};
+                int n = 2;
+                for (; mask != 0; mask &= mask - 1, ++n) {
+                    j = unsigned(__builtin_ctz(mask));
+                    hit[n] = {node.child[j], node.count[j], t_near[j]};
+                }
+                sort_by_distance(hit, n);
+                for (int i = n - 1; i > 0; --i) stack[std::size_t(top++)] = hit[i];
+                child = hit[0].child;
+                count = hit[0].count;
+                continue;
+            }
+        } else if (const std::optional<float> t = visit(Kernel{}, child, count, t_range)) {
+            t_range.max = *t;
+            nearest = t;
+        }
+        // Entries whose box starts beyond the nearest hit so far hold nothing nearer.
+        for (;;) {
+            if (top == 0) return nearest;
+            const StackEntry& e = stack[std::size_t(--top)];
+            if (e.t_near <= t_range.max) {
+                child = e.child;
+                count = e.count;
+                break;
+            }
+        }
+    }
+}
+
+template <typename Kernel, typename Visit>
+[[gnu::always_inline]] inline bool any_hit(const WideBvh& bvh, const Ray& ray, Interval t_range,
+                                           Visit& visit) {
+    const typename Kernel::Ray r{BvhRay(ray)};
+    std::array<StackEntry, kStackSize> stack;
+    int top = 0;
+    std::uint32_t child = 0, count = 0;
+    for (;;) {
+        if ((child & kWideLeaf) == 0) {
+            const WideBvhNode& node = bvh.nodes[child];
+            alignas(32) float t_near[kWideBvhWidth];
+            unsigned mask = Kernel::test(node, r, t_range.min, t_range.max, t_near);
+            if (mask != 0) {
+                // Any order finds a hit; the lowest slot goes first, the others wait.
+                const auto k = unsigned(__builtin_ctz(mask));
+                child = node.child[k];
+                count = node.count[k];
+                for (mask &= mask - 1; mask != 0; mask &= mask - 1) {
+                    const auto j = unsigned(__builtin_ctz(mask));
+                    stack[std::size_t(top++)] = {node.child[j], node.count[j], t_near[j]};
+                }
+                continue;
+            }
+        } else if (visit(Kernel{}, child, count, t_range)) {
+            return true;
+        }
+        if (top == 0) return false;
+        const StackEntry& e = stack[std::size_t(--top)];
+        child = e.child;
+        count = e.count;
+    }
+}
+
+#ifdef GLINT_WIDE_BVH_HAS_SIMD
+// One instantiation per instruction set: the traversal and the callback inline into these, and
+// take their target's instructions.
+template <typename Visit>
+std::optional<float> closest_hit_sse(const WideBvh& bvh, const Ray& ray, Interval t_range,
+                                     Visit& visit) {
+    return closest_hit<SseKernel>(bvh, ray, t_range, visit);
+}
+template <typename Visit>
+__attribute__((target("avx2"))) std::optional<float> closest_hit_avx2(const WideBvh& bvh,
+                                                                      const Ray& ray,
+                                                                      Interval t_range,
+                                                                      Visit& visit) {
+    return closest_hit<Avx2Kernel>(bvh, ray, t_range, visit);
+}
+template <typename Visit>
+bool any_hit_sse(const WideBvh& bvh, const Ray& ray, Interval t_range, Visit& visit) {
+    return any_hit<SseKernel>(bvh, ray, t_range, visit);
+}
+template <typename Visit>
+__attribute__((target("avx2"))) bool any_hit_avx2(const WideBvh& bvh, const Ray& ray,
+                                                  Interval t_range, Visit& visit) {
+    return any_hit<Avx2Kernel>(bvh, ray, t_range, visit);
+}
+#endif
+
+}  // namespace wide_bvh
+
+// Closest hit, leaf by leaf. visit(kernel, leaf, count, Interval) tests the leaf `leaf` (a child
+// reference with kWideLeaf set; `count` its entries) and returns the t of its nearest hit in the
+// interval, or nothing; the interval's max then shrinks to it, so later calls only report nearer
+// (or equally near) hits. `kernel` is the node test's (wide_bvh::ScalarKernel, SseKernel or
+// Avx2Kernel): the path this traversal runs on, for leaf tests that have SIMD forms too (its
+// kSimd). Returns the nearest t, or nothing. Allocates nothing.
+template <typename VisitLeaf>
+std::optional<float> bvh_closest_leaf(const WideBvh& bvh, const Ray& ray, Interval t_range,
+                                      VisitLeaf&& visit) {
+    if (bvh.nodes.empty()) return std::nullopt;
+#ifdef GLINT_WIDE_BVH_HAS_SIMD
+    switch (simd_path()) {
+        case SimdPath::avx2:
+            return wide_bvh::closest_hit_avx2(bvh, ray, t_range, visit);
+        case SimdPath::sse:
+            return wide_bvh::closest_hit_sse(bvh, ray, t_range, visit);
+        case SimdPath::scalar:
+            break;
+    }
+#endif
+    return wide_bvh::closest_hit<wide_bvh::ScalarKernel>(bvh, ray, t_range, visit);
+}
+
+// Any hit, leaf by leaf, for shadow feelers: visit(kernel, leaf, count, Interval) returns whether
+// the leaf holds a hit within the interval; traversal stops at the first that does.
+template <typename VisitLeaf>
+bool bvh_any_leaf(const WideBvh& bvh, const Ray& ray, Interval t_range, VisitLeaf&& visit) {
+    if (bvh.nodes.empty()) return false;
+#ifdef GLINT_WIDE_BVH_HAS_SIMD
+    switch (simd_path()) {
+        case SimdPath::avx2:
+            return wide_bvh::any_hit_avx2(bvh, ray, t_range, visit);
+        case SimdPath::sse:
+            return wide_bvh::any_hit_sse(bvh, ray, t_range, visit);
+        case SimdPath::scalar:
+            break;
+    }
+#endif
+    return wide_bvh::any_hit<wide_bvh::ScalarKernel>(bvh, ray, t_range, visit);
+}
+
+// The primitives of a leaf of primitive_indices (not of blocks).
+inline std::span<const std::uint32_t> leaf_primitives(const WideBvh& bvh, std::uint32_t leaf,
+                                                      std::uint32_t count) {
+    return {bvh.primitive_indices.data() + (leaf & ~kWideLeaf), count};
+}
+
+// The blocks of a leaf of triangle blocks.
+inline std::span<const TriangleBlock> leaf_blocks(const WideBvh& bvh, std::uint32_t leaf,
+                                                  std::uint32_t count) {
+    return {bvh.blocks.data() + (leaf & ~(kWideLeaf | kWideBlockLeaf)), count};
+}
+
+// Closest hit over a tree whose leaves are all of primitives. visit(primitive_index, Interval)
+// returns the t of that primitive's nearest hit in the interval, or nothing; the interval's max
+// then shrinks to it, so later calls only report nearer (or equally near) hits. Returns the
+// nearest t, or nothing. Allocates nothing.
+template <typename Visit>
+std::optional<float> bvh_closest_hit(const WideBvh& bvh, const Ray& ray, Interval t_range,
+                                     Visit&& visit) {
+    return bvh_closest_leaf(bvh, ray, t_range,
+                            [&](auto, std::uint32_t leaf, std::uint32_t count, Interval range) {
+                                std::optional<float> nearest;
+                                for (const std::uint32_t i : leaf_primitives(bvh, leaf, count)) {
+                                    if (const std::optional<float> t = visit(i, range)) {
+                                        range.max = *t;
+                                        nearest = t;
+                                    }
+                                }
+                                return nearest;
+                            });
+}
+
+// Any hit over a tree whose leaves are all of primitives, for shadow feelers.
+// visit(primitive_index, Interval) returns whether that primitive is hit within the interval;
+// traversal stops at the first that is. Allocates nothing.
+template <typename Visit>
+bool bvh_any_hit(const WideBvh& bvh, const Ray& ray, Interval t_range, Visit&& visit) {
+    return bvh_any_leaf(bvh, ray, t_range,
+                        [&](auto, std::uint32_t leaf, std::uint32_t count, Interval range) {
+                            for (const std::uint32_t i : leaf_primitives(bvh, leaf, count))
+                                if (visit(i, range)) return true;
+                            return false;
+                        });
+}
+
+}  // namespace glint
