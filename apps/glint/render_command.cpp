@@ -16,6 +16,7 @@
 #include "glint/render/world.h"
 #include "glint/scene/scene_error.h"
 #include "load_scene.h"
+#include "output_path.h"
 #include "progress.h"
 #include "stats_json.h"
 
@@ -135,17 +136,23 @@ int run_render(const RenderCommand& command) {
         }
         report_bad_samples(result.bad_samples, command.seed);
 
-        write_image(output, result.image, WriteOptions{command.ppm_ascii});
+        // An interrupted image is mostly black: it goes beside the target, never over it, so a
+        // good image from an earlier run survives a Ctrl-C.
+        const std::string written = result.complete ? output : partial_output_path(output).string();
+        write_image(written, result.image, WriteOptions{command.ppm_ascii});
         const RenderSettings& s = world.settings();
         if (!command.stats_file.empty()) {
             const int threads =
                 command.threads > 0 ? command.threads : tbb::info::default_concurrency();
-            write_stats(command.stats_file, stats_json({command.scene, output, s.width, s.height,
+            write_stats(command.stats_file, stats_json({command.scene, written, s.width, s.height,
                                                         s.samples_per_pixel, threads, &result}));
         }
         if (!result.complete) {
-            std::fprintf(stderr, "glint: interrupted: %s holds the %d of %d tiles that were done\n",
-                         output.c_str(), progress.tiles_done.load(), progress.tiles_total.load());
+            std::fprintf(stderr,
+                         "glint: interrupted: the %d of %d tiles that were done are in %s (the "
+                         "rest is black); %s was not written\n",
+                         progress.tiles_done.load(), progress.tiles_total.load(), written.c_str(),
+                         output.c_str());
             return kExitInterrupted;
         }
         if (!command.quiet) print_summary(output, s, result);

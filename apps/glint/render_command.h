@@ -22,7 +22,8 @@ struct RenderCommand {
 };
 
 // Exit status: 0 on success, 2 on bad input (scene, options), 1 on any other failure,
-// 130 when interrupted (after writing what was done).
+// 130 when interrupted (after writing what was done to partial_output_path(), leaving the
+// output itself alone).
 int run_render(const RenderCommand& command);
 
 }  // namespace glint::cli
