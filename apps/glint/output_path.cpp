@@ -1,9 +1,53 @@
-// Where an interrupted render's image goes.
+// Checks and names of the output files. The checks are a courtesy, not a guarantee: the file
+// system can change during the render, and the writers still report what fails then.
 #include "output_path.h"
 
-#include <string>
+#include <unistd.h>
+
+#include <system_error>
+
+#include "glint/image/image_format.h"
 
 namespace glint::cli {
+
+namespace {
+
+std::string quoted(const std::filesystem::path& path) { return "\"" + path.string() + "\""; }
+
+}  // namespace
+
+std::optional<std::string> unwritable_reason(const std::filesystem::path& file) {
+    const std::string prefix = "cannot write " + quoted(file) + ": ";
+    std::error_code error;
+    if (std::filesystem::is_directory(file, error)) return prefix + "it is a directory";
+    const std::filesystem::path parent = file.has_parent_path() ? file.parent_path() : ".";
+    const std::filesystem::file_status status = std::filesystem::status(parent, error);
+    if (error && error != std::errc::no_such_file_or_directory)
+        return prefix + "cannot reach directory " + quoted(parent) + ": " + error.message();
+    if (!std::filesystem::exists(status))
+        return prefix + "directory " + quoted(parent) + " does not exist";
+    if (!std::filesystem::is_directory(status))
+        return prefix + quoted(parent) + " is not a directory";
+    // Creating the temporary and renaming it over the file need write and search permission.
+    if (::access(parent.c_str(), W_OK | X_OK) != 0)
+        return prefix + "directory " + quoted(parent) + " is not writable";
+    return std::nullopt;
+}
+
+std::optional<std::string> unwritable_image_reason(const std::filesystem::path& image) {
+    std::error_code error;
+    // A directory first: `-o renders` means a folder, and "no extension" would mislead.
+    if (!std::filesystem::is_directory(image, error) && !format_from_extension(image)) {
+        const std::string formats = "; image formats are: " + std::string(known_image_extensions());
+        const std::string extension = image.extension().string();
+        if (extension.empty())
+            return "cannot write " + quoted(image) +
+                   ": the name has no extension to choose the image format" + formats;
+        return "cannot write " + quoted(image) + ": unknown image format \"" + extension + "\"" +
+               formats;
+    }
+    return unwritable_reason(image);
+}
 
 std::filesystem::path partial_output_path(const std::filesystem::path& output) {
     std::string name = output.stem().string();

@@ -1,10 +1,21 @@
-// The image file `glint render` writes, and the sibling that takes an interrupted render's
-// tiles so that the image already at the target survives a Ctrl-C.
+// The files `glint render` writes: checked before anything is loaded, so a bad -o fails at once
+// rather than after a long render, and the sibling that takes an interrupted render's tiles.
 #pragma once
 
 #include <filesystem>
+#include <optional>
+#include <string>
 
 namespace glint::cli {
+
+// Why `file` cannot be written, or nothing: it must not be a directory, and its directory must
+// exist and be writable. The reason reads `cannot write "x/y.png": directory "x" does not
+// exist`. A file that exists is fine: it is replaced by renaming, which needs only the
+// directory's permission.
+std::optional<std::string> unwritable_reason(const std::filesystem::path& file);
+
+// As unwritable_reason, and the extension must name an image format.
+std::optional<std::string> unwritable_image_reason(const std::filesystem::path& image);
 
 // "<stem>.partial<ext>" beside `output`: showcase.png -> showcase.partial.png. The format's
 // extension stays last, so the partial image is written and read like the full one.

@@ -10,7 +10,6 @@
 
 #include "glint/image/atomic_file.h"
 #include "glint/image/image_error.h"
-#include "glint/image/image_format.h"
 #include "glint/image/image_io.h"
 #include "glint/render/render.h"
 #include "glint/render/world.h"
@@ -110,10 +109,12 @@ int run_render(const RenderCommand& command) {
     const std::string output =
         command.output.empty() ? default_output(command.scene) : command.output;
     try {
-        if (!format_from_extension(output))
-            throw UsageError{output + ": unknown image format \"" +
-                             std::filesystem::path(output).extension().string() +
-                             "\"; image formats are: .exr, .pfm, .png, .ppm"};
+        // Before loading: a bad output path should fail at once, not after the whole render.
+        if (const auto reason = unwritable_image_reason(output)) throw UsageError{*reason};
+        if (!command.stats_file.empty()) {
+            if (const auto reason = unwritable_reason(command.stats_file))
+                throw UsageError{*reason};
+        }
         Scene scene = load_scene(command.scene);
         for (const std::string& warning : scene.warnings)
             std::fprintf(stderr, "glint: warning: %s\n", warning.c_str());

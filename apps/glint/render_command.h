@@ -21,9 +21,9 @@ struct RenderCommand {
     std::string stats_file;  // empty: none
 };
 
-// Exit status: 0 on success, 2 on bad input (scene, options), 1 on any other failure,
-// 130 when interrupted (after writing what was done to partial_output_path(), leaving the
-// output itself alone).
+// Exit status: 0 on success, 2 on bad input (scene, options, an unwritable output path), 1 on
+// any other failure, 130 when interrupted (after writing what was done to
+// partial_output_path(), leaving the output itself alone).
 int run_render(const RenderCommand& command);
 
 }  // namespace glint::cli

@@ -257,18 +257,52 @@ TEST_F(Cli, NonSquareSampleCountIsRejected) {
     EXPECT_NE(r.err.find("--spp must be a square number"), std::string::npos) << r.err;
 }
 
-TEST_F(Cli, UnwritableOutputExitsWithOneAndLeavesNoTemporary) {
-    const Outcome r =
-        run_glint("render " + scene("showcase.yaml") + " --width 8 -q -o no/such/dir/a.png");
-    EXPECT_EQ(r.exit_code, 1);
-    EXPECT_NE(r.err.find("a.png"), std::string::npos) << r.err;
-    // An output path that is a directory cannot be replaced: the directory survives.
+// The output is checked before the scene is even read (here it does not exist), so a path that
+// cannot take the image fails at once, not after a long render.
+TEST_F(Cli, UnwritableOutputIsRejectedBeforeLoading) {
     fs::create_directories(dir_ / "taken.png");
-    EXPECT_EQ(
-        run_glint("render " + scene("showcase.yaml") + " --width 8 -q -o taken.png").exit_code, 1);
-    EXPECT_TRUE(fs::is_directory(dir_ / "taken.png"));
-    for (const auto& entry : fs::directory_iterator(dir_))
-        EXPECT_EQ(entry.path().filename().string().find(".tmp"), std::string::npos) << entry.path();
+    std::ofstream(dir_ / "file.txt") << "not a directory";
+    const std::map<std::string, std::string> expected = {
+        {"taken.png", "cannot write \"taken.png\": it is a directory"},
+        {"no/such/dir/a.png",
+         "cannot write \"no/such/dir/a.png\": directory \"no/such/dir\" "
+         "does not exist"},
+        {"file.txt/a.png", "cannot write \"file.txt/a.png\": \"file.txt\" is not a directory"},
+        {"outdir",
+         "cannot write \"outdir\": the name has no extension to choose the image "
+         "format; image formats are: .png, .ppm, .pfm, .exr"},
+        {"out.gif", "cannot write \"out.gif\": unknown image format \".gif\""},
+    };
+    for (const auto& [output, message] : expected) {
+        const Outcome r = run_glint("render nowhere.yaml -q -o " + output);
+        EXPECT_EQ(r.exit_code, 2) << output;
+        EXPECT_EQ(r.err.find("glint: error: " + message), 0u) << r.err;
+    }
+    const Outcome stats = run_glint("render nowhere.yaml -q -o a.png --stats no/s.json");
+    EXPECT_EQ(stats.exit_code, 2);
+    EXPECT_NE(stats.err.find("cannot write \"no/s.json\": directory \"no\" does not exist"),
+              std::string::npos)
+        << stats.err;
+    EXPECT_TRUE(fs::is_directory(dir_ / "taken.png"));  // survives
+    for (const auto& entry : fs::directory_iterator(dir_)) {
+        const std::string name = entry.path().filename().string();
+        EXPECT_TRUE(name == "taken.png" || name == "file.txt" || name == "stdout.txt" ||
+                    name == "stderr.txt")
+            << name;
+    }
+}
+
+TEST_F(Cli, ReadOnlyOutputDirectoryIsRejectedBeforeLoading) {
+    fs::create_directories(dir_ / "locked");
+    fs::permissions(dir_ / "locked", fs::perms::owner_read | fs::perms::owner_exec);
+    const bool writable = access((dir_ / "locked").c_str(), W_OK) == 0;
+    const Outcome r = run_glint("render nowhere.yaml -q -o locked/a.png");
+    fs::permissions(dir_ / "locked", fs::perms::owner_all);
+    if (writable) GTEST_SKIP() << "permissions do not bind here (running as root)";
+    EXPECT_EQ(r.exit_code, 2);
+    EXPECT_NE(r.err.find("cannot write \"locked/a.png\": directory \"locked\" is not writable"),
+              std::string::npos)
+        << r.err;
 }
 
 // Ctrl-C in the middle of a render that would replace a good image: the image stays as it
