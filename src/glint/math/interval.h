@@ -1,4 +1,5 @@
-// A closed range of ray parameters [min, max]; the part of a ray a query looks at.
+// A closed range of ray parameters [min, max]; the part of a ray a query looks at. It travels
+// beside the Ray (which has no range of its own): traversal narrows it to the nearest hit so far.
 #pragma once
 
 #include <limits>

@@ -1,4 +1,6 @@
-// A ray P(t) = origin + t * direction. Queries pair it with an Interval of t.
+// A ray P(t) = origin + t * direction. By design it holds no t range of its own: every query
+// takes the ray and an Interval of t beside it (as pbrt-v4 passes tMax beside its Ray), so one
+// ray serves closest-hit, shadow and shrinking-range queries without being copied or mutated.
 #pragma once
 
 #include "glint/math/vector.h"
