@@ -65,7 +65,7 @@ std::string read_type(const YamlSource& source, const YAML::Node& node,
 
 MapReader::MapReader(const YamlSource& source, const YAML::Node& node,
                      std::vector<MapEntry> entries, std::string what,
-                     std::vector<std::string_view> keys)
+                     std::vector<std::string_view> keys, TypeKey type_key)
     : source_(source),
       node_(node),
       entries_(std::move(entries)),
@@ -74,7 +74,7 @@ MapReader::MapReader(const YamlSource& source, const YAML::Node& node,
     std::sort(keys_.begin(), keys_.end());
     std::vector<std::string_view> listed;
     for (const std::string_view key : keys_) {
-        if (key != "type") listed.push_back(key);
+        if (key != "type" || type_key == TypeKey::listed) listed.push_back(key);
     }
     for (const MapEntry& entry : entries_) {
         if (std::binary_search(keys_.begin(), keys_.end(), entry.key)) continue;
@@ -85,8 +85,9 @@ MapReader::MapReader(const YamlSource& source, const YAML::Node& node,
 }
 
 MapReader::MapReader(const YamlSource& source, const YAML::Node& node, const Field& field,
-                     std::string what, std::vector<std::string_view> keys)
-    : MapReader(source, node, read_map(source, node, field), std::move(what), std::move(keys)) {}
+                     std::string what, std::vector<std::string_view> keys, TypeKey type_key)
+    : MapReader(source, node, read_map(source, node, field), std::move(what), std::move(keys),
+                type_key) {}
 
 Field MapReader::field(std::string_view key) const {
     const MapEntry* entry = find(key);

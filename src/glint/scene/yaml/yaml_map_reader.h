@@ -33,17 +33,23 @@ std::string read_type(const YamlSource& source, const YAML::Node& node,
                       std::span<const std::string_view> types,
                       std::optional<std::string_view> fallback = {});
 
+// Whether the "accepts:" note of an unknown key lists "type". A required type chose the kind
+// of map, so the user already knows it; an optional one (the camera's, perspective by default)
+// may be news, so it is listed like any other key.
+enum class TypeKey { implied, listed };
+
 // A map with a fixed set of keys, read key by key. The constructor rejects unknown keys up front,
 // so a misspelt key is reported as such rather than as a missing one.
 class MapReader {
 public:
-    // `what` names the map in messages ("sphere"); `keys` are the keys it accepts. Notes leave
-    // out "type": it chose the kind of map, so the user already knows it.
+    // `what` names the map in messages ("sphere"); `keys` are the keys it accepts.
     MapReader(const YamlSource& source, const YAML::Node& node, std::vector<MapEntry> entries,
-              std::string what, std::vector<std::string_view> keys);
+              std::string what, std::vector<std::string_view> keys,
+              TypeKey type_key = TypeKey::implied);
     // Reads the entries of node itself.
     MapReader(const YamlSource& source, const YAML::Node& node, const Field& field,
-              std::string what, std::vector<std::string_view> keys);
+              std::string what, std::vector<std::string_view> keys,
+              TypeKey type_key = TypeKey::implied);
 
     const YamlSource& source() const { return source_; }
     const YAML::Node& node() const { return node_; }

@@ -47,7 +47,8 @@ CameraSpec read_camera(const YamlSource& source, const YAML::Node& node, const F
     // Each projection takes only its own parameter, so a fov on an orthographic camera is
     // reported rather than silently ignored.
     const MapReader map(source, node, std::move(entries), type + " camera",
-                        {"type", "from", "at", "up", perspective ? "fov" : "height"});
+                        {"type", "from", "at", "up", perspective ? "fov" : "height"},
+                        TypeKey::listed);
     CameraSpec camera;
     camera.projection = perspective ? Projection::perspective : Projection::orthographic;
     camera.from = map.point("from");
