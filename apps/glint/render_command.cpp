@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <new>
 #include <string>
 
 #include "glint/image/atomic_file.h"
@@ -166,6 +167,12 @@ int run_render(const RenderCommand& command) {
         return kExitBadInput;
     } catch (const ImageError& e) {
         std::fprintf(stderr, "glint: error: %s\n", e.what());
+        return kExitFailure;
+    } catch (const std::bad_alloc&) {
+        // Its what() is only "std::bad_alloc", which tells a user nothing.
+        std::fputs(
+            "glint: error: out of memory: the scene or image is too large for this machine\n",
+            stderr);
         return kExitFailure;
     } catch (const std::exception& e) {
         std::fprintf(stderr, "glint: error: %s\n", e.what());

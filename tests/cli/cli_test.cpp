@@ -44,10 +44,11 @@ protected:
         fs::create_directories(dir_);
     }
 
-    Outcome run_glint(const std::string& args) const {
+    // `shell` runs first in the same shell, e.g. "ulimit -v 1000000 && ".
+    Outcome run_glint(const std::string& args, const std::string& shell = "") const {
         const fs::path out = dir_ / "stdout.txt", err = dir_ / "stderr.txt";
-        const std::string command = "cd '" + dir_.string() + "' && '" GLINT_BINARY "' " + args +
-                                    " > '" + out.string() + "' 2> '" + err.string() + "'";
+        const std::string command = shell + "cd '" + dir_.string() + "' && '" GLINT_BINARY "' " +
+                                    args + " > '" + out.string() + "' 2> '" + err.string() + "'";
         const int status = std::system(command.c_str());
         return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, slurp(out), slurp(err)};
     }
@@ -100,6 +101,21 @@ TEST_F(Cli, UsageErrorsExitWithTwo) {
     EXPECT_EQ(run_glint("paint x.yaml").exit_code, 2);
     EXPECT_EQ(run_glint("render " + scene("showcase.yaml") + " --width 0").exit_code, 2);
     EXPECT_EQ(run_glint("render " + scene("showcase.yaml") + " --max-depth 999").exit_code, 2);
+}
+
+// Too little memory for the image (1 GB of address space, 3 GB of pixels) is reported in
+// words, not as "std::bad_alloc". The sanitizers need far more address space than the limit.
+TEST_F(Cli, OutOfMemoryIsReportedInWords) {
+#if defined(__SANITIZE_ADDRESS__) || defined(__SANITIZE_THREAD__)
+    GTEST_SKIP() << "the sanitizers' shadow memory does not fit under the limit";
+#endif
+    const Outcome r = run_glint("render " + scene("showcase.yaml") +
+                                    " --width 20000 --height 13000 --threads 1 -q -o big.exr",
+                                "ulimit -v 1000000 && ");
+    EXPECT_EQ(r.exit_code, 1) << r.err;
+    EXPECT_EQ(r.err,
+              "glint: error: out of memory: the scene or image is too large for this machine\n");
+    EXPECT_FALSE(fs::exists(dir_ / "big.exr"));
 }
 
 TEST_F(Cli, RendersAndSummarisesTheRays) {
