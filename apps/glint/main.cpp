@@ -25,7 +25,11 @@ Examples:
 
 void add_render_command(CLI::App& app, glint::cli::RenderCommand& c) {
     CLI::App* render = app.add_subcommand("render", "Render a scene to an image");
-    render->add_option("scene", c.scene, "Scene file (.yaml)")->required();
+    render
+        ->add_option("scene", c.scene,
+                     "Scene file: .yaml or .yml (glint's format), .nff or .nff.gz (NFF), or a "
+                     "model file (.obj, .ply, .gltf, .glb, .stl)")
+        ->required();
     render->add_option("-o,--output", c.output,
                        "Image to write: .png (sRGB, 8-bit), .ppm, .pfm or .exr (linear float); "
                        "default: the scene's name with .png");

@@ -103,6 +103,13 @@ TEST_F(Cli, UsageErrorsExitWithTwo) {
     EXPECT_EQ(run_glint("render " + scene("showcase.yaml") + " --max-depth 999").exit_code, 2);
 }
 
+TEST_F(Cli, RenderHelpNamesEverySceneFormat) {
+    const Outcome help = run_glint("render --help");
+    for (const char* extension :
+         {".yaml", ".nff", ".nff.gz", ".obj", ".ply", ".gltf", ".glb", ".stl"})
+        EXPECT_NE(help.out.find(extension), std::string::npos) << extension << "\n" << help.out;
+}
+
 // Too little memory for the image (1 GB of address space, 3 GB of pixels) is reported in
 // words, not as "std::bad_alloc". The sanitizers need far more address space than the limit.
 TEST_F(Cli, OutOfMemoryIsReportedInWords) {
