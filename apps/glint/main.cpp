@@ -1,6 +1,7 @@
 // The glint command-line tool: `glint render SCENE` and `glint bench SCENE`, with --help and
 // --version.
 #include <CLI/CLI.hpp>
+#include <cstdint>
 #include <cstdio>
 #include <limits>
 
@@ -8,12 +9,15 @@
 #include "glint/accel/make_aggregate.h"
 #include "glint/scene/scene.h"
 #include "render_command.h"
+#include "whole_number_option.h"
 
 #ifndef GLINT_VERSION
 #define GLINT_VERSION "unknown"
 #endif
 
 namespace {
+
+using glint::cli::whole_number;
 
 constexpr const char* kExamples = R"(
 Examples:
@@ -34,16 +38,17 @@ void add_render_command(CLI::App& app, glint::cli::RenderCommand& c) {
                        "Image to write: .png (sRGB, 8-bit), .ppm, .pfm or .exr (linear float); "
                        "default: the scene's name with .png");
     render->add_option("--width", c.width, "Image width in pixels (keeps the aspect alone)")
-        ->check(CLI::Range(1, glint::kMaxImageSide));
+        ->check(whole_number(1, glint::kMaxImageSide));
     render->add_option("--height", c.height, "Image height in pixels (keeps the aspect alone)")
-        ->check(CLI::Range(1, glint::kMaxImageSide));
+        ->check(whole_number(1, glint::kMaxImageSide));
     render->add_option("--spp", c.spp, "Samples per pixel (a square number: n x n grid)")
-        ->check(CLI::Range(1, glint::kMaxSamplesPerPixel));
+        ->check(whole_number(1, glint::kMaxSamplesPerPixel));
     render->add_option("--threads", c.threads, "Worker threads; 0 uses every core")
-        ->check(CLI::Range(0, 4096));
+        ->check(whole_number(0, 4096));
     render->add_option("--max-depth", c.max_depth, "Deepest level of the ray tree (eye rays are 1)")
-        ->check(CLI::Range(1, glint::kMaxDepth));
-    render->add_option("--seed", c.seed, "Seed of the random numbers (same seed, same image)");
+        ->check(whole_number(1, glint::kMaxDepth));
+    render->add_option("--seed", c.seed, "Seed of the random numbers (same seed, same image)")
+        ->check(whole_number<std::uint64_t>(0, std::numeric_limits<std::uint64_t>::max()));
     std::vector<std::string> accels;
     for (const std::string_view name : glint::accel_names()) accels.emplace_back(name);
     render

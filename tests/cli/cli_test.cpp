@@ -110,6 +110,26 @@ TEST_F(Cli, RenderHelpNamesEverySceneFormat) {
         EXPECT_NE(help.out.find(extension), std::string::npos) << extension << "\n" << help.out;
 }
 
+// CLI11's own check called "abc" out of range and let "--seed -1" wrap to 2^64 - 1.
+TEST_F(Cli, NonNumericOptionValuesAreNamedAsSuch) {
+    const std::map<std::string, std::string> expected = {
+        {"--width abc", "--width: expected a whole number from 1 to 65536, got \"abc\""},
+        {"--spp 1.5", "--spp: expected a whole number from 1 to 65536, got \"1.5\""},
+        {"--threads 2x", "--threads: expected a whole number from 0 to 4096, got \"2x\""},
+        {"--max-depth 65", "--max-depth: expected a whole number from 1 to 64, got \"65\""},
+        {"--seed -1", "--seed: expected a whole number from 0 to 18446744073709551615, got \"-1\""},
+    };
+    for (const auto& [option, message] : expected) {
+        const Outcome r = run_glint("render " + scene("showcase.yaml") + " -q " + option);
+        EXPECT_EQ(r.exit_code, 2) << option;
+        EXPECT_NE(r.err.find(message), std::string::npos) << r.err;
+    }
+    EXPECT_EQ(
+        run_glint("render " + scene("showcase.yaml") + " --width 8 -q --seed 18446744073709551615")
+            .exit_code,
+        0);
+}
+
 // Too little memory for the image (1 GB of address space, 3 GB of pixels) is reported in
 // words, not as "std::bad_alloc". The sanitizers need far more address space than the limit.
 TEST_F(Cli, OutOfMemoryIsReportedInWords) {
