@@ -4,7 +4,7 @@
 set -euo pipefail
 
 packages=(
-    build-essential cmake pkg-config clang-format
+    build-essential cmake pkg-config clang-format git
     libyaml-cpp-dev libtbb-dev libpng-dev zlib1g-dev libopenexr-dev libstb-dev
     libassimp-dev libembree-dev
     libcli11-dev libgtest-dev libgmock-dev libbenchmark-dev
@@ -21,8 +21,18 @@ if [ ${#missing[@]} -eq 0 ]; then
     exit 0
 fi
 
-echo "install-deps: installing ${missing[*]}"
 sudo=""
-[ "$(id -u)" -eq 0 ] || sudo="sudo"
+if [ "$(id -u)" -ne 0 ]; then
+    if ! command -v sudo >/dev/null 2>&1; then
+        echo "install-deps: error: not running as root and sudo is not installed;" \
+            "run this script as root, or install these packages: ${missing[*]}" >&2
+        exit 1
+    fi
+    sudo="sudo"
+fi
+
+echo "install-deps: installing ${missing[*]}"
 $sudo apt-get update -qq
-DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq --no-install-recommends "${missing[@]}"
+# Through env: sudo resets the environment, so a plain assignment would not reach apt-get.
+$sudo env DEBIAN_FRONTEND=noninteractive \
+    apt-get install -y -qq --no-install-recommends "${missing[@]}"
