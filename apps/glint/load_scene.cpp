@@ -1,3 +1,4 @@
+// The scene formats by extension: YAML, NFF (also gzipped) and the model files Assimp reads.
 #include "load_scene.h"
 
 #include <algorithm>

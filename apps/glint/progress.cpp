@@ -1,3 +1,5 @@
+// The progress watcher: a thread that wakes every 100 ms to redraw the bar (or print a plain line
+// per tenth of the work) and to pass Ctrl-C, caught by a SIGINT handler, on as a cancel.
 #include "progress.h"
 
 #include <unistd.h>

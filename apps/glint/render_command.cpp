@@ -1,3 +1,5 @@
+// `glint render` from start to end: check the output paths, load, apply the options, render,
+// write the image (or its .partial sibling when interrupted) and the stats, and summarise.
 #include "render_command.h"
 
 #include <tbb/info.h>

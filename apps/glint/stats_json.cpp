@@ -1,3 +1,4 @@
+// The --stats JSON written by hand: its few keys need no JSON library, only escaped strings.
 #include "stats_json.h"
 
 #include <cstdio>

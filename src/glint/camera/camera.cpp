@@ -1,3 +1,5 @@
+// The view-reference frame (n towards the target, u right, v up) and the eye ray through a film
+// position, for both projections.
 #include "glint/camera/camera.h"
 
 #include <cmath>

@@ -1,3 +1,4 @@
+// The right-handed frame around an axis, and the angle around it that the round shapes use as u.
 #include "glint/geometry/axis_frame.h"
 
 #include <cmath>

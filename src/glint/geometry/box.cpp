@@ -1,3 +1,5 @@
+// The slab test (Kay and Kajiya) for the box, remembering which face each slab crossing is on,
+// and the face's normal and uv.
 #include "glint/geometry/box.h"
 
 #include <algorithm>

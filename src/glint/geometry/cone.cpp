@@ -1,3 +1,5 @@
+// The frustum's side as a quadratic along the ray, solved in double near the axis' midpoint and
+// polished by a Newton step; the caps as planes across the axis; normals and uv.
 #include "glint/geometry/cone.h"
 
 #include <algorithm>

@@ -1,3 +1,5 @@
+// CSG by walking both operands' crossings along the ray in order and keeping the first that lies
+// on the result's surface (the classic inside/outside classification).
 #include "glint/geometry/csg.h"
 
 #include <cmath>

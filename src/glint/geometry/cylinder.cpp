@@ -1,3 +1,4 @@
+// The cylinder as a cone with equal radii, and the checks of its description.
 #include "glint/geometry/cylinder.h"
 
 #include <cmath>

@@ -1,3 +1,5 @@
+// The disk's plane hit (in double, near the centre) and radius test, its polar uv, and the tight
+// bounds of a tilted disk that the caps of cylinders and cones share.
 #include "glint/geometry/disk.h"
 
 #include <algorithm>

@@ -1,3 +1,4 @@
+// Moving a ray's origin to its point nearest a centre, in double, before a shape solves for t.
 #include "glint/geometry/near_ray.h"
 
 namespace glint {

@@ -1,3 +1,4 @@
+// The notes' ray-plane intersection, the hit point snapped onto the plane, and planar uv.
 #include "glint/geometry/plane.h"
 
 namespace glint {

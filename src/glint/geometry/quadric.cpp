@@ -1,3 +1,5 @@
+// The quadric along the ray as a quadratic in double, about the middle of its chord through the
+// clipping box, polished by Newton and clipped to the box; the gradient as its normal.
 #include "glint/geometry/quadric.h"
 
 #include <algorithm>

@@ -1,3 +1,5 @@
+// The German lecture notes' geometric ray-sphere method, step by step with its early exits, and
+// the sphere's normal and spherical uv.
 #include "glint/geometry/sphere.h"
 
 #include <algorithm>

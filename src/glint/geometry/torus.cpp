@@ -1,3 +1,5 @@
+// The torus as a quartic in double near its centre, with each root polished on the torus
+// function itself; the normal and the two angles as uv.
 #include "glint/geometry/torus.h"
 
 #include <algorithm>

@@ -1,3 +1,5 @@
+// Intersecting a transformed shape in its own space: the ray goes to object space (t rescaled, as
+// the direction is renormalised) and the surface point comes back to world space.
 #include "glint/geometry/transformed.h"
 
 #include "glint/geometry/shape.h"

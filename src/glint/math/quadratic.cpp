@@ -1,3 +1,5 @@
+// The quadratic formula in double, taking the root without cancellation first and the other from
+// the product of the roots (Numerical Recipes 5.6).
 #include "glint/math/quadratic.h"
 
 #include <cmath>

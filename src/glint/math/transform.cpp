@@ -1,3 +1,5 @@
+// 4x4 matrix arithmetic (products and Gauss-Jordan inversion in double) and the named
+// transforms with their inverses; points, vectors, normals and boxes transformed.
 #include "glint/math/transform.h"
 
 #include <cmath>

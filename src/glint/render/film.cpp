@@ -1,3 +1,5 @@
+// The film's box-filtered accumulation of samples per pixel, with NaN and infinite samples left
+// out and counted.
 #include "glint/render/film.h"
 
 namespace glint {

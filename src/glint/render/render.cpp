@@ -1,3 +1,5 @@
+// The render loop: tiles as oneTBB tasks in an arena of the requested size, one integrator per
+// tile, totals merged under a lock, and a cancel flag checked before each tile.
 #include "glint/render/render.h"
 
 #include <tbb/blocked_range.h>

@@ -1,3 +1,5 @@
+// The lecture notes' TraceRay: closest hit, the Phong terms with one shadow feeler per light,
+// then the reflected and refracted rays, cut by depth and by weight.
 #include "glint/render/whitted.h"
 
 #include "glint/shading/optics.h"

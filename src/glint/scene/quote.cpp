@@ -1,3 +1,4 @@
+// Double-quoting text for messages, with control characters escaped and long names cut short.
 #include "glint/scene/quote.h"
 
 namespace glint {

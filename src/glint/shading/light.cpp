@@ -1,3 +1,4 @@
+// What a point receives from each kind of light: direction, distance and attenuated intensity.
 #include "glint/shading/light.h"
 
 #include "glint/math/interval.h"

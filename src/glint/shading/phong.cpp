@@ -1,3 +1,4 @@
+// The notes' diffuse and specular terms (Blinn's H.N or Phong's R.V) of one light.
 #include "glint/shading/phong.h"
 
 #include <cmath>

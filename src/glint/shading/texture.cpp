@@ -1,3 +1,4 @@
+// Evaluating a colour source at a surface point: constant, 2D or solid checker, or image lookup.
 #include "glint/shading/texture.h"
 
 #include <cmath>

@@ -1,3 +1,5 @@
+// A model file as a scene: its own cameras and lights when it has them, else a camera that frames
+// it and a key and fill light.
 #include "glint/scene/mesh/model_scene.h"
 
 #include <algorithm>
