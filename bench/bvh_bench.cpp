@@ -259,7 +259,7 @@ void register_all() {
                 std::string(mesh_level ? "Mesh/" : "Top/") + name + "/" + set_names[set] + "/";
             benchmark::RegisterBenchmark((prefix + "binary").c_str(), traverse, file, mesh_level,
                                          set, Tree::binary, SimdPath::scalar);
-            for (const SimdPath path : {SimdPath::scalar, SimdPath::sse, SimdPath::avx2})
+            for (const SimdPath path : kSimdPaths)
                 benchmark::RegisterBenchmark(
                     (prefix + "wide_" + std::string(simd_path_name(path))).c_str(), traverse, file,
                     mesh_level, set, Tree::wide, path);

@@ -9,7 +9,7 @@
 #include <cmath>
 #include <random>
 
-#include "glint/geometry/wide_bvh_node_test.h"
+#include "glint/geometry/simd_path.h"
 
 namespace glint {
 namespace {
@@ -31,6 +31,11 @@ __attribute__((target("avx2"))) std::optional<BlockHit> nearest_avx2(const Block
                                                                      Interval range) {
     return tester.nearest<true>(b, range, kEveryLane);
 }
+// And as the AVX-512 one does (EVEX encoding).
+__attribute__((target("avx2,avx512f,avx512vl,avx512bw,avx512dq"))) std::optional<BlockHit>
+nearest_avx512(const BlockTester& tester, const TriangleBlock& b, Interval range) {
+    return tester.nearest<true>(b, range, kEveryLane);
+}
 #endif
 
 // Each lane alone: the block holds only it, so nearest() reports that lane's own hit.
@@ -42,7 +47,8 @@ void expect_lane_equals_scalar(const Corners& c, const Ray& ray, Interval range,
     std::vector<std::optional<BlockHit>> got{nearest<false>(tester, block, range),
                                              nearest<true>(tester, block, range)};
 #ifdef GLINT_TRIANGLE_BLOCK_HAS_SIMD
-    if (__builtin_cpu_supports("avx2")) got.push_back(nearest_avx2(tester, block, range));
+    if (simd_path_supported(SimdPath::avx2)) got.push_back(nearest_avx2(tester, block, range));
+    if (simd_path_supported(SimdPath::avx512)) got.push_back(nearest_avx512(tester, block, range));
 #endif
     for (const auto& hit : got) {
         ASSERT_EQ(hit.has_value(), expected.has_value());

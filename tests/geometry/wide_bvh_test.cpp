@@ -26,7 +26,7 @@ constexpr float kNaN = std::numeric_limits<float>::quiet_NaN();
 
 std::vector<SimdPath> supported_paths() {
     std::vector<SimdPath> paths;
-    for (const SimdPath p : {SimdPath::scalar, SimdPath::sse, SimdPath::avx2})
+    for (const SimdPath p : kSimdPaths)
         if (simd_path_supported(p)) paths.push_back(p);
     return paths;
 }
@@ -326,7 +326,7 @@ TEST(WideBvh, PackingTurnsLeavesOfTrianglesIntoBlocksInIdOrder) {
         kinds.push_back(i % 4 == 0 ? 0 : 1);
     }
     WideBvh bvh = build_wide_bvh(b, kWideBvhTriangleBuildOptions, kinds);
-    pack_triangle_leaves(bvh, [&](std::uint32_t i) -> std::optional<BlockTriangle> {
+    pack_block_leaves(bvh, [&](std::uint32_t i) -> std::optional<BlockTriangle> {
         if (kinds[i] == 0) return std::nullopt;
         return BlockTriangle{corners[i][0], corners[i][1], corners[i][2], 100000 + i};
     });
@@ -335,7 +335,7 @@ TEST(WideBvh, PackingTurnsLeavesOfTrianglesIntoBlocksInIdOrder) {
         for (int k = 0; k < kWideBvhWidth; ++k) {
             if (!n.is_leaf(k) || n.count[k] == 0) continue;
             const Bounds3 box = n.child_bounds(k);
-            if ((n.child[k] & kWideBlockLeaf) == 0) {
+            if (leaf_kind(n.child[k]) == kWidePrimitiveLeaf) {
                 for (const std::uint32_t i : leaf_primitives(bvh, n.child[k], n.count[k])) {
                     EXPECT_EQ(kinds[i], 0);
                     ++seen[i];
@@ -451,6 +451,11 @@ __attribute__((target("avx2"))) unsigned avx2_node_test(const WideBvhNode& node,
                                                         float t_min, float t_max, float* t_near) {
     return wide_bvh::Avx2Kernel::test(node, wide_bvh::Avx2Kernel::Ray(r), t_min, t_max, t_near);
 }
+// The same as the avx512 path compiles it (EVEX encoding).
+__attribute__((target("avx2,avx512f,avx512vl,avx512bw,avx512dq"))) unsigned avx512_node_test(
+    const WideBvhNode& node, const BvhRay& r, float t_min, float t_max, float* t_near) {
+    return wide_bvh::Avx2Kernel::test(node, wide_bvh::Avx2Kernel::Ray(r), t_min, t_max, t_near);
+}
 #endif
 
 TEST(WideBvh, NodeTestKernelsAgreeWithSlabHitBitForBit) {
@@ -500,6 +505,11 @@ TEST(WideBvh, NodeTestKernelsAgreeWithSlabHitBitForBit) {
             alignas(32) float avx2_t[kWideBvhWidth];
             ASSERT_EQ(avx2_node_test(node, r, t_min, t_max, avx2_t), scalar) << "ray " << i;
             ASSERT_EQ(std::memcmp(avx2_t, scalar_t, sizeof scalar_t), 0) << "ray " << i;
+        }
+        if (simd_path_supported(SimdPath::avx512)) {
+            alignas(32) float avx512_t[kWideBvhWidth];
+            ASSERT_EQ(avx512_node_test(node, r, t_min, t_max, avx512_t), scalar) << "ray " << i;
+            ASSERT_EQ(std::memcmp(avx512_t, scalar_t, sizeof scalar_t), 0) << "ray " << i;
         }
 #endif
     }
@@ -629,6 +639,7 @@ TEST(SimdPath, ScalarIsAlwaysSupportedAndSwitchable) {
     EXPECT_TRUE(simd_path_supported(best_simd_path()));
     EXPECT_TRUE(set_simd_path(saved));
     EXPECT_EQ(simd_path_name(SimdPath::avx2), "avx2");
+    EXPECT_EQ(simd_path_name(SimdPath::avx512), "avx512");
 }
 
 }  // namespace

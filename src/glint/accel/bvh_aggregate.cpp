@@ -5,14 +5,17 @@
 #include <stdexcept>
 
 #include "glint/accel/rounding_margin.h"
+#include "glint/geometry/made_on_first_use.h"
 
 namespace glint {
 
 namespace {
 
-// Leaf kinds of the build: a leaf of triangles becomes blocks, anything else stays as it is.
+// Leaf kinds of the build: leaves of triangles or of spheres become blocks of four, anything else
+// stays as it is.
 constexpr std::uint8_t kWholeShape = 0;
 constexpr std::uint8_t kTriangle = 1;
+constexpr std::uint8_t kSphere = 2;
 
 const MeshData* mesh_of(const Primitive& p) {
     const auto* mesh = std::get_if<TriangleMesh>(&p.shape);
@@ -28,8 +31,8 @@ BvhAggregate::BvhAggregate(std::span<const Primitive> primitives) : primitives_(
         first_reference_.push_back(std::uint32_t(total));
         const MeshData* mesh = mesh_of(p);
         total += mesh ? mesh->triangles.size() : 1;
-        if (total >= kWideBlockLeaf)
-            throw std::length_error("more than 2^30 shapes and triangles in one scene");
+        if (total > kWideBvhMaxPrimitives)
+            throw std::length_error("more than 2^29 shapes and triangles in one scene");
     }
     first_reference_.push_back(std::uint32_t(total));
     if (!primitives.empty()) {
@@ -60,10 +63,11 @@ BvhAggregate::BvhAggregate(std::span<const Primitive> primitives) : primitives_(
             unbounded_.push_back(i);
             continue;
         }
-        const bool triangle = std::holds_alternative<Triangle>(p.shape);
         bounded.push_back(first_reference_[i]);
         boxes.push_back(b);
-        kinds.push_back(triangle ? kTriangle : kWholeShape);
+        kinds.push_back(std::holds_alternative<Triangle>(p.shape) ? kTriangle
+                        : std::holds_alternative<Sphere>(p.shape) ? kSphere
+                                                                  : kWholeShape);
         bounds_ = merge(bounds_, b);
     }
     // Grown boxes: a hit on a box's face (a flat mesh, a shared edge) is never culled by the
@@ -71,22 +75,31 @@ BvhAggregate::BvhAggregate(std::span<const Primitive> primitives) : primitives_(
     const float margin = rounding_margin(bounds_);
     const Vector3 grow{margin, margin, margin};
     for (Bounds3& b : boxes) b = {b.min - grow, b.max + grow};
-    // SAH counts triangles in blocks of four and other shapes one by one, as leaves test them.
+    // SAH counts triangles and spheres in blocks of four and other shapes one by one, as leaves
+    // test them.
     bvh_ = build_wide_bvh(boxes, kWideBvhTriangleBuildOptions, kinds);
-    pack_triangle_leaves(bvh_, [&](std::uint32_t i) -> std::optional<BlockTriangle> {
-        if (kinds[i] != kTriangle) return std::nullopt;
-        const std::uint32_t ref = bounded[i];
-        const Reference r = reference(ref);
-        const Shape& shape = primitives[r.primitive].shape;
-        if (const auto* triangle = std::get_if<Triangle>(&shape)) {
-            const auto& v = triangle->vertices;
-            return BlockTriangle{v[0], v[1], v[2], ref};
-        }
-        const MeshData& mesh = *std::get<TriangleMesh>(shape).data;
-        const auto& t = mesh.triangles[r.triangle];
-        return BlockTriangle{mesh.positions[t[0]], mesh.positions[t[1]], mesh.positions[t[2]], ref};
-    });
-    // The leaves of whole shapes name primitives: a reference of one is its primitive's first.
+    // Triangle lanes name references; sphere lanes, and leaves of whole shapes, primitives.
+    pack_block_leaves(
+        bvh_,
+        [&](std::uint32_t i) -> std::optional<BlockTriangle> {
+            if (kinds[i] != kTriangle) return std::nullopt;
+            const std::uint32_t ref = bounded[i];
+            const Reference r = reference(ref);
+            const Shape& shape = primitives[r.primitive].shape;
+            if (const auto* triangle = std::get_if<Triangle>(&shape)) {
+                const auto& v = triangle->vertices;
+                return BlockTriangle{v[0], v[1], v[2], ref};
+            }
+            const MeshData& mesh = *std::get<TriangleMesh>(shape).data;
+            const auto& t = mesh.triangles[r.triangle];
+            return BlockTriangle{mesh.positions[t[0]], mesh.positions[t[1]], mesh.positions[t[2]],
+                                 ref};
+        },
+        [&](std::uint32_t i) -> std::optional<BlockSphere> {
+            if (kinds[i] != kSphere) return std::nullopt;
+            const std::uint32_t primitive = reference(bounded[i]).primitive;
+            return BlockSphere{std::get<Sphere>(primitives[primitive].shape), primitive};
+        });
     for (std::uint32_t& i : bvh_.primitive_indices) i = reference(bounded[i]).primitive;
 }
 
@@ -110,33 +123,48 @@ std::optional<Hit> BvhAggregate::closest_hit(const Ray& ray, Interval t_range,
         const auto hit = glint::intersect(primitives_[i].shape, ray, t_range);
         if (hit && consider({*hit, i})) t_range.max = hit->t;
     }
-    const BlockTester tester(ray);
-    bvh_closest_leaf(bvh_, ray, t_range,
-                     [&](auto kernel, std::uint32_t leaf, std::uint32_t count,
-                         Interval range) GLINT_INLINE_LEAF -> std::optional<float> {
-                         std::optional<float> found;
-                         if ((leaf & kWideBlockLeaf) != 0) {
-                             for (const TriangleBlock& block : leaf_blocks(bvh_, leaf, count)) {
-                                 const auto lane_visible = [&](int lane) {
-                                     return common_visibility_ ||
-                                            visible(reference(block.id[lane]).primitive, ray_mask);
-                                 };
-                                 const auto hit = tester.nearest<decltype(kernel)::kSimd>(
-                                     block, range, lane_visible);
-                                 if (!hit) continue;
-                                 const Reference r = reference(block.id[hit->lane]);
-                                 if (consider({{hit->t, hit->u, hit->v, r.triangle}, r.primitive}))
-                                     range.max = *(found = hit->t);
-                             }
-                             return found;
-                         }
-                         for (const std::uint32_t i : leaf_primitives(bvh_, leaf, count)) {
-                             if (!visible(i, ray_mask)) continue;
-                             const auto hit = glint::intersect(primitives_[i].shape, ray, range);
-                             if (hit && consider({*hit, i})) range.max = *(found = hit->t);
-                         }
-                         return found;
-                     });
+    // Set up when a ray first reaches a leaf of their kind.
+    MadeOnFirstUse<BlockTester, Ray> triangles(ray);
+    MadeOnFirstUse<SphereTester, Ray> spheres(ray);
+    bvh_closest_leaf(
+        bvh_, ray, t_range,
+        [&](auto kernel, std::uint32_t leaf, std::uint32_t count,
+            Interval range) GLINT_INLINE_LEAF -> std::optional<float> {
+            constexpr bool kSimd = decltype(kernel)::kSimd;
+            std::optional<float> found;
+            switch (leaf_kind(leaf)) {
+                case kWideTriangleLeaf:
+                    for (const TriangleBlock& block : leaf_blocks(bvh_, leaf, count)) {
+                        const auto lane_visible = [&](int lane) {
+                            return common_visibility_ ||
+                                   visible(reference(block.id[lane]).primitive, ray_mask);
+                        };
+                        const auto hit = triangles.get().nearest<kSimd>(block, range, lane_visible);
+                        if (!hit) continue;
+                        const Reference r = reference(block.id[hit->lane]);
+                        if (consider({{hit->t, hit->u, hit->v, r.triangle}, r.primitive}))
+                            range.max = *(found = hit->t);
+                    }
+                    return found;
+                case kWideSphereLeaf:
+                    for (const SphereBlock& block : leaf_sphere_blocks(bvh_, leaf, count)) {
+                        const auto lane_visible = [&](int lane) {
+                            return common_visibility_ || visible(block.id[lane], ray_mask);
+                        };
+                        const auto hit = spheres.get().nearest<kSimd>(block, range, lane_visible);
+                        if (hit && consider({{hit->t}, block.id[hit->lane]}))
+                            range.max = *(found = hit->t);
+                    }
+                    return found;
+                default:
+                    for (const std::uint32_t i : leaf_primitives(bvh_, leaf, count)) {
+                        if (!visible(i, ray_mask)) continue;
+                        const auto hit = glint::intersect(primitives_[i].shape, ray, range);
+                        if (hit && consider({*hit, i})) range.max = *(found = hit->t);
+                    }
+                    return found;
+            }
+        });
     return closest;
 }
 
@@ -146,27 +174,39 @@ bool BvhAggregate::any_hit(const Ray& ray, Interval t_range, std::uint32_t ray_m
         if (visible(i, ray_mask) && glint::intersect(primitives_[i].shape, ray, t_range))
             return true;
     }
-    const BlockTester tester(ray);
+    MadeOnFirstUse<BlockTester, Ray> triangles(ray);
+    MadeOnFirstUse<SphereTester, Ray> spheres(ray);
     return bvh_any_leaf(
         bvh_, ray, t_range,
         [&](auto kernel, std::uint32_t leaf, std::uint32_t count, Interval range)
             GLINT_INLINE_LEAF {
-                if ((leaf & kWideBlockLeaf) != 0) {
-                    for (const TriangleBlock& block : leaf_blocks(bvh_, leaf, count)) {
-                        const auto lane_visible = [&](int lane) {
-                            return common_visibility_ ||
-                                   visible(reference(block.id[lane]).primitive, ray_mask);
-                        };
-                        if (tester.any<decltype(kernel)::kSimd>(block, range, lane_visible))
-                            return true;
-                    }
-                    return false;
+                constexpr bool kSimd = decltype(kernel)::kSimd;
+                switch (leaf_kind(leaf)) {
+                    case kWideTriangleLeaf:
+                        for (const TriangleBlock& block : leaf_blocks(bvh_, leaf, count)) {
+                            const auto lane_visible = [&](int lane) {
+                                return common_visibility_ ||
+                                       visible(reference(block.id[lane]).primitive, ray_mask);
+                            };
+                            if (triangles.get().any<kSimd>(block, range, lane_visible)) return true;
+                        }
+                        return false;
+                    case kWideSphereLeaf:
+                        for (const SphereBlock& block : leaf_sphere_blocks(bvh_, leaf, count)) {
+                            const auto lane_visible = [&](int lane) {
+                                return common_visibility_ || visible(block.id[lane], ray_mask);
+                            };
+                            if (spheres.get().any<kSimd>(block, range, lane_visible)) return true;
+                        }
+                        return false;
+                    default:
+                        for (const std::uint32_t i : leaf_primitives(bvh_, leaf, count)) {
+                            if (visible(i, ray_mask) &&
+                                glint::intersect(primitives_[i].shape, ray, range))
+                                return true;
+                        }
+                        return false;
                 }
-                for (const std::uint32_t i : leaf_primitives(bvh_, leaf, count)) {
-                    if (visible(i, ray_mask) && glint::intersect(primitives_[i].shape, ray, range))
-                        return true;
-                }
-                return false;
             });
 }
 

@@ -1,7 +1,7 @@
 // The scene-level bounding volume hierarchy: one wide BVH over the bounded primitives and the
 // single triangles of meshes placed directly, and the unbounded primitives (planes) tested one by
-// one beside it. Triangles sit in leaves of blocks of four, tested in one SIMD pass; every other
-// shape in leaves of its own.
+// one beside it. Triangles and spheres sit in leaves of blocks of four, each block tested in one
+// SIMD pass; every other shape in leaves of its own.
 #pragma once
 
 #include <cstdint>
@@ -16,7 +16,7 @@ namespace glint {
 
 class BvhAggregate final : public Aggregate {
 public:
-    // Fewer than 2^30 primitives and triangles in all (std::length_error otherwise).
+    // At most 2^29 - 1 primitives and triangles in all (std::length_error otherwise).
     explicit BvhAggregate(std::span<const Primitive> primitives);
 
     Bounds3 bounds() const override { return bounds_; }

@@ -233,7 +233,7 @@ private:
     }
 
     std::uint32_t blocked(std::uint32_t p) const {
-        return kinds_.empty() || kinds_[p] == 1 ? 1 : 0;
+        return kinds_.empty() || kinds_[p] != 0 ? 1 : 0;
     }
     // Leaf tests for n primitives of which `blocked` are of kind 1.
     float tests(std::uint32_t n, std::uint32_t blocked) const {

@@ -38,8 +38,9 @@ struct BvhBuildOptions {
     int bins = 16;          // SAH candidates on the longest centroid axis, in [2, 64]
     // SAH cost of visiting a node relative to one leaf test (pbrt-v4 uses 1/2).
     float traversal_cost = 0.5f;
-    // Primitives of kind 1 (see build_bvh) that one leaf test handles at once: SAH counts n of
-    // them as ceil(n / block_size) tests (Embree's blocks of four triangles), in [1, 16].
+    // Primitives of a kind other than 0 (see build_bvh) that one leaf test handles at once: SAH
+    // counts n of them as ceil(n / block_size) tests (Embree's blocks of four triangles), in
+    // [1, 16].
     int block_size = 1;
 };
 
@@ -61,8 +62,8 @@ struct Bvh {
 // partitioned in fixed blocks); the tree is the same, node for node, for any number of threads.
 // With kinds (one per primitive, or empty), no leaf holds primitives of two kinds: a range that
 // would become such a leaf is split by kind instead, so that each leaf can be tested its own way.
-// Kind 0 is tested one by one, kind 1 (every primitive, without kinds) block_size at a time; SAH
-// counts the tests so.
+// Kind 0 is tested one by one, the others (every primitive, without kinds) block_size at a time;
+// SAH counts the tests so.
 Bvh build_bvh(std::span<const Bounds3> bounds, const BvhBuildOptions& options = {},
               std::span<const std::uint8_t> kinds = {});
 

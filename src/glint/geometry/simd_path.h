@@ -1,5 +1,5 @@
-// Which instructions the wide BVH's node test runs on: the best the CPU has, picked once at start
-// up, and switchable so that tests and benchmarks can run every path on one machine.
+// Which instructions the wide BVH's node and leaf tests run on: the best the CPU has, picked once
+// at start up, and switchable so that tests and benchmarks can run every path on one machine.
 #pragma once
 
 #include <atomic>
@@ -12,8 +12,15 @@ namespace glint {
 enum class SimdPath : std::uint8_t {
     scalar,  // portable C++, one box at a time; the only path off x86-64
     sse,     // four boxes at once in 128-bit registers (every x86-64 CPU has SSE2)
-    avx2,    // the same kernel in VEX-encoded AVX2 code, for CPUs that report AVX2
+    avx2,    // eight boxes at once in 256-bit registers, for CPUs that report AVX2
+    // The AVX2 kernels EVEX-encoded, for CPUs with AVX-512 (F, VL, BW, DQ): 32 vector registers,
+    // so the node and leaf tests' rays both stay in registers. Still 256-bit operations.
+    avx512,
 };
+
+// Every path, slowest first (for tests and benchmarks that try each one this CPU supports).
+inline constexpr SimdPath kSimdPaths[] = {SimdPath::scalar, SimdPath::sse, SimdPath::avx2,
+                                          SimdPath::avx512};
 
 std::string_view simd_path_name(SimdPath path);
 

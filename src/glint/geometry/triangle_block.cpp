@@ -1,5 +1,5 @@
-// Filling triangle blocks, and the SIMD test's exact fallback. Built with
-// -ffp-contract=off, as watertight_triangle.cpp is: the area check here must round as that file's.
+// Filling triangle blocks, and the SIMD test's exact fallback. The area check here rounds as
+// watertight_triangle.cpp's (no fused multiply-adds anywhere in glint: CMakeLists.txt).
 #include "glint/geometry/triangle_block.h"
 
 #include <limits>

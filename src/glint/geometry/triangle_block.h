@@ -9,6 +9,7 @@
 #include <limits>
 #include <optional>
 
+#include "glint/geometry/block_hit.h"
 #include "glint/geometry/watertight_triangle.h"
 #include "glint/math/interval.h"
 #include "glint/math/ray.h"
@@ -37,12 +38,6 @@ TriangleBlock empty_triangle_block();
 // tests only what can be hit.
 void set_block_lane(TriangleBlock& block, int lane, Point3 v0, Point3 v1, Point3 v2,
                     std::uint32_t id);
-
-// A hit on lane `lane`: t, and the barycentric weights of corners 1 and 2.
-struct BlockHit {
-    float t, u, v;
-    int lane;
-};
 
 // A ray prepared for block tests: the shear once a ray, and its rows in SIMD registers.
 struct BlockRay {
@@ -223,8 +218,5 @@ private:
     block_simd::Ray4 ray4_;
 #endif
 };
-
-// Accepts every lane.
-inline constexpr auto kEveryLane = [](int) { return true; };
 
 }  // namespace glint

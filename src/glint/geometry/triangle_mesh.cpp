@@ -41,7 +41,7 @@ MeshBuild build_mesh(MeshData arrays) {
     MeshBuild result;
     const std::size_t n = arrays.positions.size();
     if (n > kMaxMeshElements || arrays.triangles.size() > kMaxMeshElements) {
-        result.error = "mesh has more than 2^31 vertices or triangles";
+        result.error = "mesh has more than 2^29 - 1 vertices or triangles";
         return result;
     }
     if (!arrays.normals.empty() && arrays.normals.size() != n) {
@@ -172,7 +172,7 @@ const WideBvh& MeshBvhCache::get(const MeshData& mesh) const {
                                   mesh.positions[t[2]]);
             }
             s.bvh = build_wide_bvh(bounds, kWideBvhTriangleBuildOptions);
-            pack_triangle_leaves(s.bvh, [&](std::uint32_t i) -> std::optional<BlockTriangle> {
+            pack_block_leaves(s.bvh, [&](std::uint32_t i) -> std::optional<BlockTriangle> {
                 const auto& t = mesh.triangles[i];
                 return BlockTriangle{mesh.positions[t[0]], mesh.positions[t[1]],
                                      mesh.positions[t[2]], i};

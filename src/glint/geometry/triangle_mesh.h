@@ -69,8 +69,8 @@ bool is_closed_surface(const MeshData& mesh);
 
 // Coordinates beyond this magnitude are refused: products of such edges overflow a float.
 inline constexpr float kMaxMeshCoordinate = 1e16f;
-// More triangles or vertices than this are refused (indices are 32-bit).
-inline constexpr std::size_t kMaxMeshElements = std::size_t(1) << 31;
+// More triangles or vertices than this are refused: what a wide BVH can index.
+inline constexpr std::size_t kMaxMeshElements = kWideBvhMaxPrimitives;
 
 struct MeshBuild {
     std::shared_ptr<const MeshData> mesh;  // null on error

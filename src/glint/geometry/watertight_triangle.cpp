@@ -1,6 +1,6 @@
-// The watertight ray/triangle test (Woop, Benthin and Wald 2013). Built with -ffp-contract=off
-// (see CMakeLists.txt): a fused multiply-add would round some products and not others, and the
-// edge functions' signs would no longer be exact.
+// The watertight ray/triangle test (Woop, Benthin and Wald 2013). Built, as all of glint, with
+// -ffp-contract=off (see CMakeLists.txt): a fused multiply-add would round some products and not
+// others, and the edge functions' signs would no longer be exact.
 #include "glint/geometry/watertight_triangle.h"
 
 #include <cmath>

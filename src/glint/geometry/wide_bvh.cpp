@@ -44,7 +44,7 @@ public:
             if (k >= n) continue;
             const BvhNode& child = binary_[slot[std::size_t(k)]];
             if (child.is_leaf()) {
-                assert(child.offset < kWideBlockLeaf && child.count <= 255);
+                assert(child.offset <= kWideLeafIndex && child.count <= 255);
                 node.child[k] = kWideLeaf | child.offset;
                 node.count[k] = std::uint8_t(child.count);
             } else {
@@ -86,7 +86,7 @@ private:
 WideBvh collapse_to_wide_bvh(Bvh binary) {
     WideBvh wide;
     if (binary.nodes.empty()) return wide;
-    assert(binary.primitive_indices.size() < kWideBlockLeaf);
+    assert(binary.primitive_indices.size() <= kWideBvhMaxPrimitives);
     wide.root_bounds = binary.nodes[0].bounds;
     // Each wide node opens at least one interior binary node, and half the nodes are leaves.
     wide.nodes.reserve(binary.nodes.size() / 2 + 1);
@@ -102,44 +102,67 @@ WideBvh build_wide_bvh(std::span<const Bounds3> bounds, const BvhBuildOptions& o
     return collapse_to_wide_bvh(build_bvh(bounds, options, kinds));
 }
 
-void pack_triangle_leaves(
-    WideBvh& bvh, const std::function<std::optional<BlockTriangle>(std::uint32_t)>& triangle) {
+namespace {
+
+// The leaf's primitives as blocks of one kind, appended to `blocks`; false (and nothing appended)
+// when one of them is not of that kind. Lanes run in ascending id.
+template <typename Item, typename Block, typename EmptyBlock, typename SetLane>
+bool pack_leaf(std::span<const std::uint32_t> leaf,
+               const std::function<std::optional<Item>(std::uint32_t)>& item_of,
+               std::vector<Block>& blocks, EmptyBlock&& empty_block, SetLane&& set_lane) {
+    if (!item_of) return false;
+    std::vector<Item> items;
+    for (const std::uint32_t p : leaf) {
+        const auto item = item_of(p);
+        if (!item) return false;
+        items.push_back(*item);
+    }
+    std::sort(items.begin(), items.end(), [](const Item& a, const Item& b) { return a.id < b.id; });
+    for (std::size_t i = 0; i < items.size(); ++i) {
+        if (i % 4 == 0) blocks.push_back(empty_block());
+        set_lane(blocks.back(), int(i % 4), items[i]);
+    }
+    return true;
+}
+
+}  // namespace
+
+void pack_block_leaves(WideBvh& bvh,
+                       const std::function<std::optional<BlockTriangle>(std::uint32_t)>& triangle,
+                       const std::function<std::optional<BlockSphere>(std::uint32_t)>& sphere) {
     std::vector<std::uint32_t> kept;  // primitive_indices of the leaves that stay as they are
-    std::vector<BlockTriangle> leaf;
     for (WideBvhNode& node : bvh.nodes) {
         for (int k = 0; k < kWideBvhWidth; ++k) {
             if (!node.is_leaf(k) || node.count[k] == 0) continue;
-            assert((node.child[k] & kWideBlockLeaf) == 0);
-            const std::uint32_t first = node.child[k] & ~kWideLeaf;
-            const std::uint32_t count = node.count[k];
-            leaf.clear();
-            for (std::uint32_t i = 0; i < count; ++i) {
-                const auto t = triangle(bvh.primitive_indices[first + i]);
-                if (!t) break;
-                leaf.push_back(*t);
+            assert((node.child[k] & kWideLeafKind) == kWidePrimitiveLeaf);
+            const std::span<const std::uint32_t> leaf(
+                bvh.primitive_indices.data() + (node.child[k] & kWideLeafIndex), node.count[k]);
+            const auto first_triangles = std::uint32_t(bvh.blocks.size());
+            const auto first_spheres = std::uint32_t(bvh.sphere_blocks.size());
+            if (pack_leaf(leaf, triangle, bvh.blocks, empty_triangle_block,
+                          [](TriangleBlock& b, int lane, const BlockTriangle& t) {
+                              set_block_lane(b, lane, t.v0, t.v1, t.v2, t.id);
+                          })) {
+                node.child[k] = kWideLeaf | kWideTriangleLeaf | first_triangles;
+                node.count[k] = std::uint8_t(bvh.blocks.size() - first_triangles);
+            } else if (pack_leaf(leaf, sphere, bvh.sphere_blocks, empty_sphere_block,
+                                 [](SphereBlock& b, int lane, const BlockSphere& s) {
+                                     set_sphere_lane(b, lane, s.sphere, s.id);
+                                 })) {
+                node.child[k] = kWideLeaf | kWideSphereLeaf | first_spheres;
+                node.count[k] = std::uint8_t(bvh.sphere_blocks.size() - first_spheres);
+            } else {
+                node.child[k] = kWideLeaf | kWidePrimitiveLeaf | std::uint32_t(kept.size());
+                kept.insert(kept.end(), leaf.begin(), leaf.end());
             }
-            if (leaf.size() < count) {
-                node.child[k] = kWideLeaf | std::uint32_t(kept.size());
-                kept.insert(kept.end(), bvh.primitive_indices.begin() + first,
-                            bvh.primitive_indices.begin() + first + count);
-                continue;
-            }
-            std::sort(leaf.begin(), leaf.end(),
-                      [](const BlockTriangle& a, const BlockTriangle& b) { return a.id < b.id; });
-            const auto first_block = std::uint32_t(bvh.blocks.size());
-            for (std::size_t i = 0; i < leaf.size(); ++i) {
-                if (i % 4 == 0) bvh.blocks.push_back(empty_triangle_block());
-                const BlockTriangle& t = leaf[i];
-                set_block_lane(bvh.blocks.back(), int(i % 4), t.v0, t.v1, t.v2, t.id);
-            }
-            assert(bvh.blocks.size() <= kWideBlockLeaf);
-            node.child[k] = kWideLeaf | kWideBlockLeaf | first_block;
-            node.count[k] = std::uint8_t(bvh.blocks.size() - first_block);
+            assert(bvh.blocks.size() <= kWideBvhMaxPrimitives &&
+                   bvh.sphere_blocks.size() <= kWideBvhMaxPrimitives);
         }
     }
     kept.shrink_to_fit();
     bvh.primitive_indices = std::move(kept);
     bvh.blocks.shrink_to_fit();
+    bvh.sphere_blocks.shrink_to_fit();
 }
 
 }  // namespace glint

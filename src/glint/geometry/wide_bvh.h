@@ -12,17 +12,23 @@
 #include <vector>
 
 #include "glint/geometry/bvh.h"
+#include "glint/geometry/sphere_block.h"
 #include "glint/geometry/triangle_block.h"
 #include "glint/math/bounds.h"
 
 namespace glint {
 
-// A child reference with this bit set is a leaf: the rest is the index of its first entry in
-// WideBvh::primitive_indices. Without it, the index of a node.
+// A child reference with this bit set is a leaf; without it, the index of a node.
 inline constexpr std::uint32_t kWideLeaf = 0x80000000u;
-// A leaf with this bit set too holds triangle blocks: the rest is the index of its first block in
-// WideBvh::blocks, and its count is the number of blocks.
-inline constexpr std::uint32_t kWideBlockLeaf = 0x40000000u;
+// The two bits below say what a leaf holds, and so what its index (the low bits) and its count
+// refer to: entries of WideBvh::primitive_indices, triangle blocks or sphere blocks.
+inline constexpr std::uint32_t kWideLeafKind = 0x60000000u;
+inline constexpr std::uint32_t kWidePrimitiveLeaf = 0;
+inline constexpr std::uint32_t kWideTriangleLeaf = 0x20000000u;
+inline constexpr std::uint32_t kWideSphereLeaf = 0x40000000u;
+inline constexpr std::uint32_t kWideLeafIndex = 0x1fffffffu;
+// Primitives (and blocks) a tree can index.
+inline constexpr std::size_t kWideBvhMaxPrimitives = std::size_t(kWideLeafIndex);
 
 // Children of a node: one AVX2 register holds a coordinate of all eight boxes.
 inline constexpr int kWideBvhWidth = 8;
@@ -33,9 +39,8 @@ struct alignas(64) WideBvhNode {
     // Child boxes as structure of arrays: planes[axis][slot] is the min side, planes[3 + axis]
     // the max side, so a node test loads one row per slab.
     float planes[6][kWideBvhWidth];
-    std::uint32_t
-        child[kWideBvhWidth];           // node, or a leaf (kWideLeaf, maybe kWideBlockLeaf) | first
-    std::uint8_t count[kWideBvhWidth];  // primitives or blocks of a leaf child (0: unused slot)
+    std::uint32_t child[kWideBvhWidth];  // node, or kWideLeaf | kind | index
+    std::uint8_t count[kWideBvhWidth];   // primitives or blocks of a leaf child (0: unused slot)
 
     Bounds3 child_bounds(int slot) const {
         return {{planes[0][slot], planes[1][slot], planes[2][slot]},
@@ -49,49 +54,57 @@ struct WideBvh {
     std::vector<WideBvhNode> nodes;  // nodes[0] is the root; empty for no primitives
     // Leaves of primitives refer to ranges of this permutation of the primitives' indices.
     std::vector<std::uint32_t> primitive_indices;
-    // Leaves of triangles refer to ranges of these (see pack_triangle_leaves).
+    // Leaves of triangles and of spheres refer to ranges of these (see pack_block_leaves).
     std::vector<TriangleBlock> blocks;
+    std::vector<SphereBlock> sphere_blocks;
     Bounds3 root_bounds;  // the union of every primitive's box
 
     Bounds3 bounds() const { return root_bounds; }
     std::size_t memory_bytes() const {
         return nodes.capacity() * sizeof(WideBvhNode) +
                primitive_indices.capacity() * sizeof(std::uint32_t) +
-               blocks.capacity() * sizeof(TriangleBlock);
+               blocks.capacity() * sizeof(TriangleBlock) +
+               sphere_blocks.capacity() * sizeof(SphereBlock);
     }
 };
 
 // The binary tree collapsed top down: each wide node takes a binary node's two children and keeps
 // opening the one of largest surface area until it has kWideBvhWidth or all are leaves. Leaves,
 // boxes and the primitive order stay as they were, so the wide tree's leaves are the binary tree's.
-// The root is always a node (a lone leaf becomes the root's only child). Fewer than 2^30
-// primitives.
+// The root is always a node (a lone leaf becomes the root's only child). At most
+// kWideBvhMaxPrimitives primitives.
 WideBvh collapse_to_wide_bvh(Bvh binary);
 
 // The wide tree's defaults for primitives tested one by one: leaves of up to 8 and a binary node
 // costing as much as a primitive test (bench/README.md).
 inline constexpr BvhBuildOptions kWideBvhBuildOptions{8, 16, 1.0f};
-// For triangles, which leaves test four at a time (pack_triangle_leaves): SAH counts them in
-// blocks of four (and shapes of kind 0, if the build has kinds, one by one).
-inline constexpr BvhBuildOptions kWideBvhTriangleBuildOptions{8, 16, 1.0f, 4};
+// For triangles and spheres, which leaves test four at a time (pack_block_leaves): SAH counts them
+// in blocks of four (and shapes of kind 0, if the build has kinds, one by one).
+inline constexpr BvhBuildOptions kWideBvhTriangleBuildOptions{4, 16, 1.0f, 4};
 
 // build_bvh then collapse_to_wide_bvh: deterministic for any number of threads, like build_bvh.
 WideBvh build_wide_bvh(std::span<const Bounds3> bounds,
                        const BvhBuildOptions& options = kWideBvhBuildOptions,
                        std::span<const std::uint8_t> kinds = {});
 
-// What a leaf of blocks holds of one primitive: its corners and the id its lane reports.
+// What a leaf of blocks holds of one primitive, and the id its lane reports.
 struct BlockTriangle {
     Point3 v0, v1, v2;
     std::uint32_t id;
 };
+struct BlockSphere {
+    Sphere sphere;
+    std::uint32_t id;
+};
 
-// Turns every leaf whose primitives are all triangles into a leaf of TriangleBlocks: triangle(i)
-// returns primitive i as a BlockTriangle, or nothing when it is not a triangle. Within a leaf,
-// lanes run in ascending id, so that the lowest lane at equal t is the lowest id. The entries of
-// primitive_indices that such leaves used are dropped. Builds whose leaves may mix triangles with
-// other primitives should separate them (build_bvh's kinds).
-void pack_triangle_leaves(
-    WideBvh& bvh, const std::function<std::optional<BlockTriangle>(std::uint32_t)>& triangle);
+// Turns every leaf whose primitives are all triangles into a leaf of TriangleBlocks, and every
+// leaf whose primitives are all spheres into one of SphereBlocks: triangle(i) and sphere(i)
+// return primitive i as such, or nothing when it is not one (either may be empty: no such
+// leaves). Within a leaf, lanes run in ascending id, so that the lowest lane at equal t is the
+// lowest id. The entries of primitive_indices that such leaves used are dropped. Builds whose
+// leaves may mix kinds should separate them (build_bvh's kinds).
+void pack_block_leaves(WideBvh& bvh,
+                       const std::function<std::optional<BlockTriangle>(std::uint32_t)>& triangle,
+                       const std::function<std::optional<BlockSphere>(std::uint32_t)>& sphere = {});
 
 }  // namespace glint

@@ -154,6 +154,14 @@ __attribute__((target("avx2"))) std::optional<float> closest_hit_avx2(const Wide
                                                                       Visit& visit) {
     return closest_hit<Avx2Kernel>(bvh, ray, t_range, visit);
 }
+// The AVX2 kernels again, EVEX-encoded: AVX-512's 32 vector registers hold both the node test's
+// ray and a leaf test's without spilling either.
+#define GLINT_AVX512_TARGET __attribute__((target("avx2,avx512f,avx512vl,avx512bw,avx512dq")))
+template <typename Visit>
+GLINT_AVX512_TARGET std::optional<float> closest_hit_avx512(const WideBvh& bvh, const Ray& ray,
+                                                            Interval t_range, Visit& visit) {
+    return closest_hit<Avx2Kernel>(bvh, ray, t_range, visit);
+}
 template <typename Visit>
 bool any_hit_sse(const WideBvh& bvh, const Ray& ray, Interval t_range, Visit& visit) {
     return any_hit<SseKernel>(bvh, ray, t_range, visit);
@@ -161,6 +169,11 @@ bool any_hit_sse(const WideBvh& bvh, const Ray& ray, Interval t_range, Visit& vi
 template <typename Visit>
 __attribute__((target("avx2"))) bool any_hit_avx2(const WideBvh& bvh, const Ray& ray,
                                                   Interval t_range, Visit& visit) {
+    return any_hit<Avx2Kernel>(bvh, ray, t_range, visit);
+}
+template <typename Visit>
+GLINT_AVX512_TARGET bool any_hit_avx512(const WideBvh& bvh, const Ray& ray, Interval t_range,
+                                        Visit& visit) {
     return any_hit<Avx2Kernel>(bvh, ray, t_range, visit);
 }
 #endif
@@ -171,14 +184,16 @@ __attribute__((target("avx2"))) bool any_hit_avx2(const WideBvh& bvh, const Ray&
 // reference with kWideLeaf set; `count` its entries) and returns the t of its nearest hit in the
 // interval, or nothing; the interval's max then shrinks to it, so later calls only report nearer
 // (or equally near) hits. `kernel` is the node test's (wide_bvh::ScalarKernel, SseKernel or
-// Avx2Kernel): the path this traversal runs on, for leaf tests that have SIMD forms too (its
-// kSimd). Returns the nearest t, or nothing. Allocates nothing.
+// Avx2Kernel, which the avx512 path runs too): the path this traversal runs on, for leaf tests that
+// have SIMD forms too (its kSimd). Returns the nearest t, or nothing. Allocates nothing.
 template <typename VisitLeaf>
 std::optional<float> bvh_closest_leaf(const WideBvh& bvh, const Ray& ray, Interval t_range,
                                       VisitLeaf&& visit) {
     if (bvh.nodes.empty()) return std::nullopt;
 #ifdef GLINT_WIDE_BVH_HAS_SIMD
     switch (simd_path()) {
+        case SimdPath::avx512:
+            return wide_bvh::closest_hit_avx512(bvh, ray, t_range, visit);
         case SimdPath::avx2:
             return wide_bvh::closest_hit_avx2(bvh, ray, t_range, visit);
         case SimdPath::sse:
@@ -197,6 +212,8 @@ bool bvh_any_leaf(const WideBvh& bvh, const Ray& ray, Interval t_range, VisitLea
     if (bvh.nodes.empty()) return false;
 #ifdef GLINT_WIDE_BVH_HAS_SIMD
     switch (simd_path()) {
+        case SimdPath::avx512:
+            return wide_bvh::any_hit_avx512(bvh, ray, t_range, visit);
         case SimdPath::avx2:
             return wide_bvh::any_hit_avx2(bvh, ray, t_range, visit);
         case SimdPath::sse:
@@ -208,16 +225,25 @@ bool bvh_any_leaf(const WideBvh& bvh, const Ray& ray, Interval t_range, VisitLea
     return wide_bvh::any_hit<wide_bvh::ScalarKernel>(bvh, ray, t_range, visit);
 }
 
-// The primitives of a leaf of primitive_indices (not of blocks).
+// What a leaf holds (kWidePrimitiveLeaf, kWideTriangleLeaf or kWideSphereLeaf).
+inline std::uint32_t leaf_kind(std::uint32_t leaf) { return leaf & kWideLeafKind; }
+
+// The primitives of a leaf of primitive_indices.
 inline std::span<const std::uint32_t> leaf_primitives(const WideBvh& bvh, std::uint32_t leaf,
                                                       std::uint32_t count) {
-    return {bvh.primitive_indices.data() + (leaf & ~kWideLeaf), count};
+    return {bvh.primitive_indices.data() + (leaf & kWideLeafIndex), count};
 }
 
-// The blocks of a leaf of triangle blocks.
+// The blocks of a leaf of triangles.
 inline std::span<const TriangleBlock> leaf_blocks(const WideBvh& bvh, std::uint32_t leaf,
                                                   std::uint32_t count) {
-    return {bvh.blocks.data() + (leaf & ~(kWideLeaf | kWideBlockLeaf)), count};
+    return {bvh.blocks.data() + (leaf & kWideLeafIndex), count};
+}
+
+// The blocks of a leaf of spheres.
+inline std::span<const SphereBlock> leaf_sphere_blocks(const WideBvh& bvh, std::uint32_t leaf,
+                                                       std::uint32_t count) {
+    return {bvh.sphere_blocks.data() + (leaf & kWideLeafIndex), count};
 }
 
 // Closest hit over a tree whose leaves are all of primitives. visit(primitive_index, Interval)

@@ -185,7 +185,7 @@ private:
         MeshData& out = arrays_[{mesh.mMaterialIndex, normals, uvs}];
         if (out.positions.size() + mesh.mNumVertices > kMaxMeshElements ||
             out.triangles.size() + mesh.mNumFaces > kMaxMeshElements) {
-            throw error("the model has more than 2^31 vertices or triangles");
+            throw error("the model has more than 2^29 - 1 vertices or triangles");
         }
         const std::string mesh_name =
             mesh.mName.length > 0 ? "mesh \"" + std::string(mesh.mName.C_Str()) + "\"" : "a mesh";
