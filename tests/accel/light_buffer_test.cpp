@@ -103,5 +103,43 @@ TEST(LightBuffer, AShapeAroundTheLightIsInEveryCell) {
         EXPECT_EQ(buffer.candidates(d).size(), 1u);
 }
 
+// A flat grid of 2 n^2 triangles in the plane y = 0, from (-1, 0, -1) to (1, 0, 1), shifted by c.
+Primitive grid_mesh(int n, Vector3 c) {
+    MeshData arrays;
+    for (int i = 0; i <= n; ++i)
+        for (int j = 0; j <= n; ++j)
+            arrays.positions.push_back(
+                to_point(c + Vector3{-1 + 2 * float(i) / n, 0, -1 + 2 * float(j) / n}));
+    const auto at = [&](int i, int j) { return std::uint32_t(i * (n + 1) + j); };
+    for (int i = 0; i < n; ++i)
+        for (int j = 0; j < n; ++j) {
+            arrays.triangles.push_back({at(i, j), at(i + 1, j), at(i + 1, j + 1)});
+            arrays.triangles.push_back({at(i, j), at(i + 1, j + 1), at(i, j + 1)});
+        }
+    const MeshBuild built = build_mesh(std::move(arrays));
+    return {TriangleMesh{built.mesh}};
+}
+
+TEST(LightBuffer, AMeshOfManyTrianglesLeavesItsCellsToTheStructure) {
+    // A big mesh below the light, a small one (2 triangles) to the side, a sphere above.
+    const std::vector<Primitive> prims{
+        grid_mesh(8, {0, -2, 0}), grid_mesh(1, {5, 1, 0}), {Sphere{{0, 5, 0}, 0.5f}}};
+    EXPECT_FALSE(LightBuffer::tests_whole(prims[0].shape));
+    EXPECT_TRUE(LightBuffer::tests_whole(prims[1].shape));
+    const LightBuffer buffer({0, 0, 0}, prims, 8);
+    std::uint32_t hint = LightBuffer::kNoPrimitive;
+    // Below: the big mesh's cells are crowded, whatever their lists.
+    const auto [down, down_range] = feeler({0.1f, -4, 0.1f}, {0, 0, 0});
+    EXPECT_FALSE(buffer.occluded(down, down_range, hint).has_value());
+    EXPECT_TRUE(buffer.candidates({0.1f, -1, 0.1f}).empty());
+    // The small mesh is listed and tested whole; the sphere too.
+    const auto [side, side_range] = feeler({10, 2, 0}, {0, 0, 0});  // through (5, 1, 0)
+    EXPECT_EQ(buffer.occluded(side, side_range, hint), std::optional<bool>(true));
+    EXPECT_EQ(hint, 1u);
+    const auto [up, up_range] = feeler({0, 10, 0}, {0, 0, 0});
+    EXPECT_EQ(buffer.occluded(up, up_range, hint), std::optional<bool>(true));
+    EXPECT_EQ(hint, 2u);
+}
+
 }  // namespace
 }  // namespace glint

@@ -38,8 +38,7 @@ void expect_lane_equals_scalar(const Sphere& sphere, const Ray& ray, Interval ra
                                              tester.nearest<true>(block, range, kEveryLane)};
 #ifdef GLINT_SPHERE_BLOCK_HAS_SIMD
     if (simd_path_supported(SimdPath::avx2)) got.push_back(nearest_avx2(tester, block, range));
-    if (simd_path_supported(SimdPath::avx512))
-        got.push_back(nearest_avx512(tester, block, range));
+    if (simd_path_supported(SimdPath::avx512)) got.push_back(nearest_avx512(tester, block, range));
 #endif
     for (const auto& hit : got) {
         ASSERT_EQ(hit.has_value(), expected.has_value());
@@ -57,9 +56,9 @@ TEST(SphereBlock, EveryLaneEqualsTheGeometricTestOfTheNotes) {
         const float scale = std::pow(10.0f, float(i % 5) - 2);
         const Sphere sphere{{u(rng) * scale, u(rng) * scale, u(rng) * scale}, unit(rng) * scale};
         // From outside, from inside, and grazing: aimed at the sphere's rim.
-        const Point3 origin = i % 3 == 1 ? sphere.center + Vector3{0.1f, 0, 0} * sphere.radius
-                                         : Point3{u(rng) * 4 * scale, u(rng) * 4 * scale,
-                                                  u(rng) * 4 * scale};
+        const Point3 origin =
+            i % 3 == 1 ? sphere.center + Vector3{0.1f, 0, 0} * sphere.radius
+                       : Point3{u(rng) * 4 * scale, u(rng) * 4 * scale, u(rng) * 4 * scale};
         const Point3 aim = i % 3 == 2 ? sphere.center + Vector3{sphere.radius, 0, 0}
                                       : sphere.center + Vector3{u(rng), u(rng), u(rng)} * scale;
         if (distance(aim, origin) == 0) continue;
@@ -91,8 +90,8 @@ TEST(SphereBlock, TheNearestLaneWinsAndTheLowestAtEqualT) {
     set_sphere_lane(block, 1, Sphere{{0, 0, 5}, 1}, 11);   // t = 9
     set_sphere_lane(block, 3, Sphere{{0, 0, 5}, 1}, 13);   // the same: equal t
     const SphereTester tester({{0, 0, -5}, {0, 0, 1}});
-    for (const auto& hit :
-         {tester.nearest<false>(block, {}, kEveryLane), tester.nearest<true>(block, {}, kEveryLane)}) {
+    for (const auto& hit : {tester.nearest<false>(block, {}, kEveryLane),
+                            tester.nearest<true>(block, {}, kEveryLane)}) {
         ASSERT_TRUE(hit);
         EXPECT_EQ(hit->lane, 1);
         EXPECT_EQ(hit->t, 9);

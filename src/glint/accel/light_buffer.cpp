@@ -1,3 +1,4 @@
+// Building the light buffer's direction cube and answering shadow feelers from its cells.
 #include "glint/accel/light_buffer.h"
 
 #include <algorithm>
@@ -60,6 +61,11 @@ Bounds3 relative(const Bounds3& b, Point3 origin) {
 
 }  // namespace
 
+bool LightBuffer::tests_whole(const Shape& shape) {
+    const auto* mesh = std::get_if<TriangleMesh>(&shape);
+    return !mesh || mesh->data->triangles.size() <= kMaxListTested;
+}
+
 LightBuffer::LightBuffer(Point3 light, std::span<const Primitive> primitives, int resolution)
     : light_(light), primitives_(primitives) {
     // About one primitive a cell on average, between 8 and 256 cells along an edge.
@@ -86,10 +92,15 @@ LightBuffer::LightBuffer(Point3 light, std::span<const Primitive> primitives, in
         }
     };
     std::vector<std::uint32_t> bounded;
+    crowded_.assign(cells, false);
     for (std::uint32_t i = 0; i < primitives.size(); ++i) {
         if ((primitives[i].visibility & kVisibleToShadowRays) == 0) continue;
         if (!glint::bounds(primitives[i].shape).is_finite()) {
             unbounded_.push_back(i);
+            continue;
+        }
+        if (!tests_whole(primitives[i].shape)) {
+            for_each_cell(i, [&](std::size_t c) { crowded_[c] = true; });
             continue;
         }
         bounded.push_back(i);
@@ -131,7 +142,10 @@ std::optional<bool> LightBuffer::occluded(const Ray& ray, Interval t_range,
     // from the light.
     const Vector3 from_light = ray.origin - light_;
     if (!(length_squared(from_light) > 0)) return std::nullopt;
-    const auto list = candidates(from_light);
+    const std::uint32_t cell = cell_of(from_light);
+    if (crowded_[cell]) return std::nullopt;
+    const std::span<const std::uint32_t> list(entries_.data() + cell_start_[cell],
+                                              entries_.data() + cell_start_[cell + 1]);
     if (list.size() > kMaxListTested) return std::nullopt;
     for (const std::uint32_t index : list) {
         if (index != hint && blocks(index)) return hint = index, true;
@@ -140,8 +154,10 @@ std::optional<bool> LightBuffer::occluded(const Ray& ray, Interval t_range,
 }
 
 std::size_t LightBuffer::memory_bytes() const {
-    return sizeof(*this) + (cell_start_.capacity() + entries_.capacity() + unbounded_.capacity()) *
-                               sizeof(std::uint32_t);
+    return sizeof(*this) +
+           (cell_start_.capacity() + entries_.capacity() + unbounded_.capacity()) *
+               sizeof(std::uint32_t) +
+           crowded_.capacity() / 8;
 }
 
 }  // namespace glint

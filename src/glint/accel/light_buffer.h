@@ -34,6 +34,11 @@ public:
     // Longer cell lists are left to the acceleration structure: a list is tested one by one.
     static constexpr std::size_t kMaxListTested = 24;
 
+    // Whether the buffer lists the shape and tests it whole. A mesh of more triangles than
+    // kMaxListTested is a crowd of its own: the cells it covers are left to the acceleration
+    // structure, which holds its triangles one by one.
+    static bool tests_whole(const Shape& shape);
+
     // The primitives listed in the cell of a direction from the light (for tests).
     std::span<const std::uint32_t> candidates(Vector3 from_light) const;
 
@@ -49,6 +54,7 @@ private:
     std::span<const Primitive> primitives_;
     std::vector<std::uint32_t> cell_start_;  // 6 R^2 + 1 offsets into entries_
     std::vector<std::uint32_t> entries_;     // primitive indices, cell by cell
+    std::vector<bool> crowded_;              // cells covered by a mesh not tested whole
     std::vector<std::uint32_t> unbounded_;   // planes: they may block any direction
 };
 

@@ -1,3 +1,4 @@
+// Acceleration structures by name: the table behind --accel and glint bench.
 #include "glint/accel/make_aggregate.h"
 
 #include "glint/accel/bvh_aggregate.h"

@@ -1,3 +1,4 @@
+// The brute-force list: every primitive against every ray, the reference the others match.
 #include "glint/accel/primitive_list.h"
 
 namespace glint {

@@ -1,3 +1,5 @@
+// Numbering the triangles of meshes placed directly beside whole primitives, for the grid,
+// the kd-tree and the list.
 #include "glint/accel/primitive_refs.h"
 
 namespace glint {

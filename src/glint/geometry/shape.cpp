@@ -1,3 +1,5 @@
+// What every shape answers beside its own tests: its name, whether it is a solid, its CSG depth,
+// and building the own BVH of the meshes it holds.
 #include "glint/geometry/shape.h"
 
 #include <algorithm>

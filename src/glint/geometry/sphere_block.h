@@ -44,7 +44,9 @@ typedef int Int4 __attribute__((vector_size(16)));
 typedef float Row __attribute__((vector_size(16), may_alias));
 
 [[gnu::always_inline]] inline Float4 splat(float x) { return Float4{x, x, x, x}; }
-[[gnu::always_inline]] inline Float4 row(const float* r) { return *reinterpret_cast<const Row*>(r); }
+[[gnu::always_inline]] inline Float4 row(const float* r) {
+    return *reinterpret_cast<const Row*>(r);
+}
 [[gnu::always_inline]] inline unsigned mask_of(Int4 m) {
     return unsigned(__builtin_ia32_movmskps(reinterpret_cast<Float4>(m)));
 }
@@ -131,8 +133,7 @@ public:
 
     // Whether an accepted lane is hit within t_range.
     template <bool kSimd, typename Accept>
-    [[gnu::always_inline]] bool any(const SphereBlock& b, Interval t_range,
-                                    Accept&& accept) const {
+    [[gnu::always_inline]] bool any(const SphereBlock& b, Interval t_range, Accept&& accept) const {
 #ifdef GLINT_SPHERE_BLOCK_HAS_SIMD
         if constexpr (kSimd) {
             sphere_simd::Float4 t;

@@ -1,3 +1,5 @@
+// Building the render-time world from a Scene (primitives, acceleration structure, light
+// buffers) and the shadow and spawn queries the integrator asks of it.
 #include "glint/render/world.h"
 
 #include <algorithm>
@@ -47,9 +49,10 @@ World::World(const Scene& scene, AccelKind accel, ShadowAcceleration shadows)
                                      ? std::make_unique<LightBuffer>(point->position, primitives_)
                                      : nullptr);
     }
-    // Meshes that are traced whole (inside instances, transforms and CSG, or listed in a light
-    // buffer's cells) get their own BVH now rather than on a render thread's first ray.
-    for (const Primitive& p : primitives_) prepare_mesh_bvhs(p.shape, any_buffer);
+    // Meshes that are traced whole (inside instances, transforms and CSG, or small ones that
+    // light buffers list) get their own BVH now rather than on a render thread's first ray.
+    for (const Primitive& p : primitives_)
+        prepare_mesh_bvhs(p.shape, any_buffer && LightBuffer::tests_whole(p.shape));
 }
 
 bool World::occluded_towards(std::size_t light, const Ray& ray, Interval t_range,
