@@ -127,11 +127,20 @@ TEST(JuliaSet, RaysFromInsideTheBoundingSphere) {
     const auto hit = julia.intersect(near, {});
     ASSERT_TRUE(hit);
     EXPECT_NEAR(near.at(hit->t).z, -1, 2 * julia.epsilon);
-    // From inside the set: the solid is entered at once.
+    // From inside the set: where the ray leaves the ball, x^2 + 0.3^2 = 1, up to the 2 epsilon
+    // shell, marked as leaving, with the normal pointing out along the radius.
     const Ray inside{{0, 0, 0.3f}, {1, 0, 0}};
-    const auto at_start = julia.intersect(inside, {0.01f, kInfinity});
-    ASSERT_TRUE(at_start);
-    EXPECT_FLOAT_EQ(at_start->t, 0.01f);
+    const auto exit = julia.intersect(inside, {0.01f, kInfinity});
+    ASSERT_TRUE(exit);
+    EXPECT_GE(exit->t, std::sqrt(1 - 0.09f) - 1e-5f);
+    EXPECT_LE(exit->t, std::sqrt(std::pow(1 + 2 * julia.epsilon, 2.0f) - 0.09f) + 2e-5f);
+    EXPECT_EQ(exit->part, kLeavingHit);
+    EXPECT_FALSE(julia.inside(inside.at(exit->t)));
+    EXPECT_TRUE(julia.inside(inside.at(exit->t - 1e-4f)));
+    const SurfacePoint sp = julia.surface_at(inside, *exit);
+    EXPECT_GT(dot(sp.normal, normalize(to_vector(sp.p))), 0.999f);
+    // A range that ends inside the set holds no crossing.
+    EXPECT_FALSE(julia.intersect(inside, {0, 0.5f}));
 }
 
 TEST(JuliaSet, RayLeavingTheSurfaceDoesNotHitItAgain) {
@@ -143,10 +152,12 @@ TEST(JuliaSet, RayLeavingTheSurfaceDoesNotHitItAgain) {
     // A shadow ray from the hit point itself, inside the epsilon shell, towards a light.
     const Vector3 to_light = normalize(to_vector(sp.normal) + Vector3{0.5f, 0.3f, 0});
     EXPECT_FALSE(julia.intersect({sp.p, to_light}, {}));
-    // Into the surface instead: it hits at once.
-    const auto entering = julia.intersect({sp.p, ray.direction}, {});
-    ASSERT_TRUE(entering);
-    EXPECT_EQ(entering->t, 0);
+    // Into the surface instead: it crosses the ball and leaves it on the far side, at the
+    // mirror image of the hit point (z -> -z), up to the epsilon shells.
+    const auto leaving = julia.intersect({sp.p, ray.direction}, {});
+    ASSERT_TRUE(leaving);
+    EXPECT_EQ(leaving->part, kLeavingHit);
+    EXPECT_NEAR(sp.p.z + leaving->t, -sp.p.z, 4 * julia.epsilon);
 }
 
 TEST(JuliaSet, EstimateIsNeverNaN) {

@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "glint/geometry/shape.h"
+#include "glint/geometry/sphere_tracing.h"
 
 namespace glint {
 
@@ -20,16 +21,43 @@ struct Crossing {
     bool inside_before = false;
 };
 
+// Whether the ray leaves the shape at the hit, where the hit itself says so: the fractals mark
+// the hits where rays leave them, since their estimated normals are noisy at the epsilon scale.
+// Transforms keep inside and outside; a CSG level turns b of a difference inside out.
+std::optional<bool> marked_leaving(const Shape& shape, const ShapeHit& hit) {
+    if (std::holds_alternative<JuliaSet>(shape) || std::holds_alternative<Mandelbulb>(shape)) {
+        return hit.part == kLeavingHit;
+    }
+    if (const auto* placed = std::get_if<Transformed>(&shape)) {
+        return marked_leaving(*placed->shape, hit);
+    }
+    if (const auto* csg = std::get_if<Csg>(&shape)) {
+        ShapeHit operand_hit = hit;
+        operand_hit.csg_path = hit.csg_path >> 2;
+        const auto leaving =
+            marked_leaving((hit.csg_path & kFromB) ? *csg->b : *csg->a, operand_hit);
+        if (leaving && (hit.csg_path & kFlipped)) return !*leaving;
+        return leaving;
+    }
+    return std::nullopt;
+}
+
 // The next crossing at or after t_min. Whether the ray is inside before it follows from the
 // direction in which it crosses: leaving through the surface means it was inside.
 Crossing next_crossing(const Shape& shape, const Ray& ray, float t_min) {
     Crossing c;
     c.hit = intersect(shape, ray, {t_min, kInfinity});
     if (c.hit) {
-        c.inside_before = dot(surface_at(shape, ray, *c.hit).normal, ray.direction) > 0;
+        const auto leaving = marked_leaving(shape, *c.hit);
+        c.inside_before =
+            leaving ? *leaving : dot(surface_at(shape, ray, *c.hit).normal, ray.direction) > 0;
     } else if (const auto* plane = std::get_if<Plane>(&shape)) {
-        // A half-space the ray never crosses: inside when the origin is below the plane.
-        c.inside_before = dot(plane->normal, ray.at(t_min) - plane->point) < 0;
+        // A half-space the ray no longer crosses: inside when it heads inwards (from outside it
+        // would cross), whatever rounding says of a start on the plane; when parallel to the
+        // plane, inside when it runs below it.
+        const float along = dot(plane->normal, ray.direction);
+        c.inside_before =
+            along != 0 ? along < 0 : dot(plane->normal, ray.at(t_min) - plane->point) < 0;
     }
     return c;
 }
@@ -92,7 +120,9 @@ std::optional<ShapeHit> Csg::intersect(const Ray& ray, Interval t_range) const {
         const bool inside_after = !c.inside_before;
         const Shape& shape = on_b ? *b : *a;
         c = next_crossing(shape, ray, after(t));
-        if (!c.hit) c.inside_before = inside_after;
+        // Without a further crossing, a bounded solid has been left for good (a ray that only
+        // grazed a fractal's shell may have no exit); a half-space keeps the side last crossed to.
+        if (!c.hit && !glint::bounds(shape).is_finite()) c.inside_before = inside_after;
     }
     return std::nullopt;
 }

@@ -50,6 +50,8 @@ double JuliaSet::distance_estimate(Point3 p) const {
     return r < 1 ? -std::numeric_limits<double>::min() : 0.0;
 }
 
+bool JuliaSet::inside(Point3 p) const { return distance_estimate(p) < epsilon; }
+
 Bounds3 JuliaSet::bounds() const {
     const float r = float(bounding_radius());
     return {center - Vector3{r, r, r}, center + Vector3{r, r, r}};
@@ -62,7 +64,9 @@ std::optional<ShapeHit> JuliaSet::intersect(const Ray& ray, Interval t_range) co
     const SphereTrace trace =
         sphere_trace(estimate, ray, t_range, {center, radius, epsilon, max_steps});
     if (trace.outcome != SphereTrace::Outcome::kHit) return std::nullopt;
-    return ShapeHit{float(trace.t)};
+    ShapeHit hit{float(trace.t)};
+    if (trace.leaving) hit.part = kLeavingHit;
+    return hit;
 }
 
 SurfacePoint JuliaSet::surface_at(const Ray& ray, const ShapeHit& hit) const {
@@ -70,7 +74,8 @@ SurfacePoint JuliaSet::surface_at(const Ray& ray, const ShapeHit& hit) const {
     sp.p = ray.at(hit.t);
     sp.error = 2 * epsilon;  // hits land within 2 epsilon outside the set
     const auto estimate = [this](Point3 p) { return distance_estimate(p); };
-    sp.normal = sp.shading_normal = estimate_normal(estimate, sp.p, 0.5 * epsilon, -ray.direction);
+    const Vector3 fallback = hit.part == kLeavingHit ? ray.direction : -ray.direction;
+    sp.normal = sp.shading_normal = estimate_normal(estimate, sp.p, 0.5 * epsilon, fallback);
     sp.uv = spherical_uv(sp.p, center);
     return sp;
 }

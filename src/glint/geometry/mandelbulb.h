@@ -36,10 +36,16 @@ struct Mandelbulb {
     // formula has no value it is a tiny negative number if r < 1 (the centre) and 0 otherwise.
     double distance_estimate(Point3 p) const;
 
+    // Whether p is inside the solid that rays see: distance_estimate(p) < epsilon, the set
+    // grown by the epsilon shell in which sphere tracing stops. This is the solid a CSG uses.
+    bool inside(Point3 p) const;
+
     Bounds3 bounds() const;
+    // The first crossing of the solid's surface: where the ray enters it, or, for a ray that
+    // starts inside, where it leaves (hit.part = kLeavingHit). See sphere_trace().
     std::optional<ShapeHit> intersect(const Ray& ray, Interval t_range) const;
-    // normal: central differences of the estimate with step epsilon / 2. uv: spherical about
-    // `center`, as for Sphere.
+    // normal: central differences of the estimate with step epsilon / 2, pointing out of the
+    // solid. uv: spherical about `center`, as for Sphere.
     SurfacePoint surface_at(const Ray& ray, const ShapeHit& hit) const;
 };
 
