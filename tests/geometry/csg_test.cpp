@@ -8,6 +8,7 @@
 #include <cmath>
 #include <functional>
 #include <memory>
+#include <source_location>
 
 #include "glint/geometry/shape.h"
 #include "shape_property_checks.h"
@@ -80,7 +81,9 @@ struct MembershipOptions {
     float normal_probe = 1e-3f;
 };
 
-void expect_matches_membership(const Solid& solid, const MembershipOptions& options = {}) {
+void expect_matches_membership(const Solid& solid, const MembershipOptions& options = {},
+                               const std::source_location where = std::source_location::current()) {
+    SCOPED_TRACE(::testing::Message() << "case at line " << where.line());
     testing::RandomRays rays({0, 0, 0}, 1.6f, 7);
     int hits = 0, normal_misses = 0, facing_away = 0, disagreeing = 0;
     for (int i = 0; i < options.rays; ++i) {
@@ -194,6 +197,104 @@ TEST(Csg, OnlyClosedShapesAreSolids) {
     EXPECT_FALSE(is_solid(Shape{Triangle{}}));
     EXPECT_FALSE(
         is_solid(Shape{Transformed{Transform{}, std::make_shared<const Shape>(Triangle{})}}));
+}
+
+// The axial coordinates of p about the segment from `base` to `top`: height along it from base,
+// and distance from its line.
+struct Axial {
+    float height, rho, length;
+};
+Axial axial(Point3 p, Point3 base, Point3 top) {
+    const Vector3 axis = normalize(top - base);
+    const float height = dot(p - base, axis);
+    return {height, length((p - base) - axis * height), length(top - base)};
+}
+
+Solid capped_cylinder(Point3 base, Point3 top, float r) {
+    return {std::make_shared<const Shape>(Cylinder{base, top, r, true}), [=](Point3 p) {
+                const Axial a = axial(p, base, top);
+                return a.height > 0 && a.height < a.length && a.rho < r;
+            }};
+}
+
+Solid capped_cone(Point3 base, float base_radius, Point3 apex, float apex_radius) {
+    return {std::make_shared<const Shape>(Cone{base, base_radius, apex, apex_radius, true}),
+            [=](Point3 p) {
+                const Axial a = axial(p, base, apex);
+                const float radius =
+                    base_radius + (apex_radius - base_radius) * a.height / a.length;
+                return a.height > 0 && a.height < a.length && a.rho < radius;
+            }};
+}
+
+// About the y axis through the origin.
+Solid torus(float major, float minor) {
+    return {std::make_shared<const Shape>(Torus{{0, 0, 0}, {0, 1, 0}, major, minor}),
+            [=](Point3 p) { return std::hypot(std::hypot(p.x, p.z) - major, p.y) < minor; }};
+}
+
+// A rounded cube, x^4 + y^4 + z^4 < r^4, in a region that encloses it.
+Solid superellipsoid(float r) {
+    auto compiled = compile_expression("x^4 + y^4 + z^4 - r^4", {{"r", r}});
+    EXPECT_TRUE(std::holds_alternative<Expression>(compiled));
+    ImplicitSurface surface;
+    surface.f = std::make_shared<const Expression>(std::get<Expression>(std::move(compiled)));
+    const float half = 1.2f * r;
+    surface.region = {{-half, -half, -half}, {half, half, half}};
+    return {std::make_shared<const Shape>(surface), [=](Point3 p) {
+                return p.x * p.x * p.x * p.x + p.y * p.y * p.y * p.y + p.z * p.z * p.z * p.z <
+                       r * r * r * r;
+            }};
+}
+
+Solid transformed(const Transform& world_from_object, const Solid& solid) {
+    const Transform object_from_world = world_from_object.inverse();
+    return {std::make_shared<const Shape>(Transformed{world_from_object, solid.shape}),
+            [=](Point3 p) { return solid.inside(object_from_world(p)); }};
+}
+
+TEST(Csg, CappedCylindersAndConesAreOperands) {
+    const Solid rod = capped_cylinder({-0.3f, -1.5f, 0.2f}, {0.4f, 1.4f, -0.1f}, 0.45f);
+    EXPECT_TRUE(is_solid(*rod.shape));
+    expect_matches_membership(combine(CsgOperation::difference, kCube, rod));
+    expect_matches_membership(combine(CsgOperation::merge, kBall, rod));
+    const Solid frustum = capped_cone({0.1f, -1.3f, 0}, 1.1f, {-0.2f, 1.2f, 0.3f}, 0.4f);
+    const Solid spike = capped_cone({0, -0.2f, -1.5f}, 0.5f, {0.1f, 0.3f, 1.5f}, 0);
+    expect_matches_membership(combine(CsgOperation::intersection, frustum, kCube));
+    expect_matches_membership(combine(CsgOperation::difference, kBall, spike));
+}
+
+TEST(Csg, ToriAreOperands) {
+    const Solid ring = torus(1, 0.35f);
+    expect_matches_membership(combine(CsgOperation::difference, ring, kCube));
+    expect_matches_membership(
+        combine(CsgOperation::intersection, ring, box({-2, -2, -2}, {2, 2, 0.3f})));
+    expect_matches_membership(combine(CsgOperation::merge, ring, sphere({0, 0, 0}, 0.8f)));
+}
+
+TEST(Csg, ImplicitSurfacesAreOperands) {
+    const Solid rounded = superellipsoid(1.1f);
+    EXPECT_TRUE(is_solid(*rounded.shape));
+    expect_matches_membership(combine(CsgOperation::difference, rounded, kBall));
+    expect_matches_membership(
+        combine(CsgOperation::intersection, rounded, sphere({0.5f, 0, 0}, 1)));
+}
+
+TEST(Csg, TransformedShapesAreOperands) {
+    // Non-uniformly scaled, turned and moved: the ball becomes a tilted ellipsoid, the cube a
+    // slanted brick, and the torus an oval ring.
+    const Transform squash = Transform::translate({0.2f, -0.1f, 0}) *
+                             Transform::rotate({1, 1, 0}, 35) * Transform::scale(1.3f, 0.6f, 0.9f);
+    const Solid ellipsoid = transformed(squash, kBall);
+    const Solid brick =
+        transformed(Transform::rotate({0, 0, 1}, 30) * Transform::scale(1.4f, 0.5f, 0.8f), kCube);
+    expect_matches_membership(combine(CsgOperation::difference, brick, ellipsoid));
+    expect_matches_membership(combine(CsgOperation::intersection, ellipsoid, kCube));
+    expect_matches_membership(
+        combine(CsgOperation::merge, transformed(squash, torus(1, 0.3f)), sphere({0, 0, 0}, 0.5f)));
+    // A CSG shape placed as a whole.
+    const Solid carved = combine(CsgOperation::difference, kCube, kBall);
+    expect_matches_membership(transformed(squash, carved));
 }
 
 // Quaternion Julia sets and the Mandelbulb are solids: inside is where their distance estimate is

@@ -1,7 +1,9 @@
+// Transformed shapes: placement, normals by the inverse transpose, and hits across the scaling.
 #include "glint/geometry/transformed.h"
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <memory>
 
 #include "glint/geometry/shape.h"
@@ -54,6 +56,28 @@ TEST(Transformed, NonUniformScaleGivesAnEllipsoidWithGradientNormals) {
     const SurfacePoint sp = ellipsoid.surface_at(diagonal, *h);
     const Vector3 gradient = normalize(Vector3{sp.p.x / 2, 2 * sp.p.y, 8 * sp.p.z});
     EXPECT_NEAR(dot(sp.normal, gradient), 1, 1e-5f);
+}
+
+// Walking from crossing to crossing (as CSG does, asking for the hit just after the last) finds
+// both crossings of a placed solid: rounding in the scaling of t back to world space once put the
+// entry just before the range, and the exit behind it was lost.
+TEST(Transformed, TheCrossingAfterAHitIsNotLost) {
+    const Transform brick = Transform::rotate({0, 0, 1}, 30) * Transform::scale(1.4f, 0.5f, 0.8f);
+    const Transform squash = Transform::translate({0.2f, -0.1f, 0}) *
+                             Transform::rotate({1, 1, 0}, 35) * Transform::scale(1.3f, 0.6f, 0.9f);
+    for (const Transformed& placed :
+         {place(Box{{-1, -1, -1}, {1, 1, 1}}, brick), place(Sphere{{0, 0, 0}, 1.2f}, squash)}) {
+        RandomRays rays({0, 0, 0}, 1.6f, 7);
+        for (int i = 0; i < 2000; ++i) {
+            const Ray ray = rays.next();
+            const auto entry = placed.intersect(ray, {});
+            if (!entry) continue;
+            const auto exit =
+                placed.intersect(ray, {std::nextafter(entry->t, kInfinity), kInfinity});
+            ASSERT_TRUE(exit) << "ray " << i << " enters at " << entry->t << " and never leaves";
+            EXPECT_GT(exit->t, entry->t);
+        }
+    }
 }
 
 TEST(Transformed, RotatedBoxFacesFollowTheRotation) {

@@ -2,6 +2,8 @@
 // the direction is renormalised) and the surface point comes back to world space.
 #include "glint/geometry/transformed.h"
 
+#include <cmath>
+
 #include "glint/geometry/shape.h"
 
 namespace glint {
@@ -32,12 +34,22 @@ Bounds3 Transformed::bounds() const {
 
 std::optional<ShapeHit> Transformed::intersect(const Ray& ray, Interval t_range) const {
     const ObjectRay o = to_object(world_from_object, ray);
-    auto hit = glint::intersect(*shape, o.ray, {t_range.min * o.scale, t_range.max * o.scale});
-    if (!hit) return std::nullopt;
-    hit->t /= o.scale;
-    // Rounding in the two scalings must not move the hit outside the caller's range.
-    if (!t_range.contains(hit->t)) return std::nullopt;
-    return hit;
+    Interval object_range{t_range.min * o.scale, t_range.max * o.scale};
+    // Rounding in the two scalings must not move the hit outside the caller's range. A hit that
+    // lands just before it is the one the caller has (a CSG walk asks for the crossing after
+    // the last): the next one is looked for beyond it, rather than lost.
+    for (int attempt = 0; attempt < 4; ++attempt) {
+        auto hit = glint::intersect(*shape, o.ray, object_range);
+        if (!hit) return std::nullopt;
+        const float t = hit->t / o.scale;
+        if (t > t_range.max || !(t == t)) return std::nullopt;
+        if (t >= t_range.min) {
+            hit->t = t;
+            return hit;
+        }
+        object_range.min = std::nextafter(hit->t, kInfinity);
+    }
+    return std::nullopt;
 }
 
 SurfacePoint Transformed::surface_at(const Ray& ray, const ShapeHit& hit) const {
