@@ -129,6 +129,7 @@ TEST(Disk, PropertyChecks) {
     const Disk disk{{0.1f, -0.2f, 0.3f}, n, 1.3f, 0.4f};
     PropertyOptions options;
     options.convex = true;
+    options.normal_matches_gradient = true;  // of the plane's function: the disk's normal
     expect_shape_properties(
         disk, [&](Point3 p) { return dot(n, p - disk.center); }, RandomRays({0, 0, 0}, 1.5f),
         options);

@@ -380,6 +380,7 @@ TEST(ImplicitSurface, ShapePropertiesOfASphere) {
     PropertyOptions options;
     options.convex = true;
     options.surface_tolerance = s.tolerance;
+    options.normal_matches_gradient = true;
     expect_shape_properties(
         s,
         [](Point3 p) {
@@ -393,6 +394,7 @@ TEST(ImplicitSurface, ShapePropertiesOfATorus) {
                                       {{-1.5f, -0.5f, -1.5f}, {1.5f, 0.5f, 1.5f}});
     PropertyOptions options;
     options.surface_tolerance = s.tolerance;
+    options.normal_matches_gradient = true;
     expect_shape_properties(
         s, [](Point3 p) { return std::hypot(std::hypot(p.x, p.z) - 1.0f, p.y) - 0.4f; },
         RandomRays({0, 0, 0}, 1.5f), options);

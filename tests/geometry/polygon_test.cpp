@@ -373,10 +373,12 @@ using testing::expect_shape_properties;
 using testing::PropertyOptions;
 using testing::RandomRays;
 
-// Planar: a ray leaving the surface never meets it again, whatever the outline.
+// Planar: a ray leaving the surface never meets it again, whatever the outline; the normal is
+// the gradient of the plane's function.
 void expect_polygon_properties(const Polygon& p) {
     PropertyOptions options;
     options.convex = true;
+    options.normal_matches_gradient = true;
     const Bounds3 box = p.bounds();
     const float size = length(box.diagonal()) / 3;
     expect_shape_properties(

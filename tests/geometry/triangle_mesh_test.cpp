@@ -222,6 +222,32 @@ TEST(TriangleMesh, PropertiesOfAClosedMesh) {
                                      testing::RandomRays({0, 0, 0}, 1.2f), options);
 }
 
+// A mesh's counterpart of "the normal is the gradient": the geometric normal is the unit normal
+// of the triangle hit (hit.part), by its winding, outwards on this closed mesh; the smooth
+// shading normal stays on its side.
+TEST(TriangleMesh, NormalIsTheFaceNormalOfTheTriangleHit) {
+    MeshData arrays = sphere_mesh(3);
+    compute_vertex_normals(arrays, 60);
+    const TriangleMesh mesh = build(arrays);
+    testing::RandomRays rays({0, 0, 0}, 1.2f, 5);
+    int hits = 0;
+    for (int i = 0; i < 500; ++i) {
+        const Ray ray = rays.next();
+        const auto hit = mesh.intersect(ray, {});
+        if (!hit) continue;
+        ++hits;
+        const auto& t = mesh.data->triangles[hit->part];
+        const Point3 a = mesh.data->positions[t[0]], b = mesh.data->positions[t[1]],
+                     c = mesh.data->positions[t[2]];
+        const Vector3 face = normalize(cross(b - a, c - a));
+        const SurfacePoint sp = mesh.surface_at(ray, *hit);
+        EXPECT_GT(dot(sp.normal, face), 0.99999f) << "ray " << i;
+        EXPECT_GT(dot(face, to_vector(sp.p)), 0) << "ray " << i;  // outwards
+        EXPECT_GT(dot(sp.shading_normal, face), 0) << "ray " << i;
+    }
+    EXPECT_GT(hits, 100);
+}
+
 TEST(TriangleMesh, ClosedMeshesAreSolidsAndOpenOnesAreNot) {
     EXPECT_TRUE(is_closed_surface(*build(sphere_mesh(2)).data));
     EXPECT_FALSE(is_closed_surface(*build(quad_arrays()).data));
@@ -261,6 +287,10 @@ TEST(TriangleMesh, PropertiesOfANonConvexMesh) {
     };
     testing::PropertyOptions options;
     options.surface_tolerance = 2e-6f;
+    // Each face is a piece of the function's zero set, and its normal the function's gradient
+    // there; hits within the difference step of a ridge or valley see two faces.
+    options.normal_matches_gradient = true;
+    options.gradient_mismatch_fraction = 0.02f;
     testing::expect_shape_properties(mesh, distance_to_surface,
                                      testing::RandomRays({0, 0.25f, 0}, 1), options);
 }
