@@ -1,5 +1,5 @@
-// The OBJ and PLY validators on their own: accepted forms, located errors, and mutated files
-// (truncated, bytes flipped) that must give a SceneError or pass, never crash.
+// The OBJ, PLY and ASCII STL validators on their own: accepted forms, located errors, and mutated
+// files (truncated, bytes flipped) that must give a SceneError or pass, never crash.
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -10,6 +10,7 @@
 
 #include "glint/scene/mesh/obj_validator.h"
 #include "glint/scene/mesh/ply_validator.h"
+#include "glint/scene/mesh/stl_validator.h"
 #include "glint/scene/mesh/text_lines.h"
 #include "glint/scene/scene_error.h"
 
@@ -82,6 +83,68 @@ TEST(PlyValidator, NonPlyIsLeftToAssimp) {
     EXPECT_NO_THROW(validate_ply("x.ply", ""));
 }
 
+SceneError stl_error(const std::string& text) {
+    try {
+        validate_stl(kMeshes / "inline.stl", text);
+    } catch (const SceneError& e) {
+        return e;
+    }
+    ADD_FAILURE() << "no error for:\n" << text;
+    return SceneError({}, "");
+}
+
+const std::string kFacet =
+    " facet normal 0 0 1\n  outer loop\n   vertex 0 0 0\n   vertex 1 0 0\n   vertex 0 1 0\n"
+    "  endloop\n endfacet\n";
+
+TEST(StlValidator, AcceptsTheFormsAssimpReads) {
+    for (const char* name : {"tetra_ascii.stl", "tetra_binary.stl"}) {
+        EXPECT_NO_THROW(validate_stl(kMeshes / name, read(kMeshes / name))) << name;
+    }
+    // Two solids, CRLF, tabs, blank lines, names with spaces, +signs and exponents; a file
+    // whose last solid lacks endsolid.
+    std::string text = "\n  solid first part\r\n" + kFacet + "endsolid first part\r\n\n";
+    text += "solid\n\tfacet normal +0 -0 1e0\n outer\tloop\nvertex 1e-3 0 0\nvertex 1 0 0\n";
+    text += "vertex 0 1.5E+0 0\nendloop\nendfacet\n" + kFacet;
+    EXPECT_NO_THROW(validate_stl(kMeshes / "inline.stl", text));
+    // Not ASCII STL: left to Assimp.
+    EXPECT_NO_THROW(validate_stl("x.stl", "not an stl file"));
+    std::string binary(84 + 50, '\0');
+    binary.replace(0, 5, "solid");
+    binary[80] = 1;
+    EXPECT_NO_THROW(validate_stl("x.stl", binary));
+}
+
+TEST(StlValidator, ErrorsPointAtTheToken) {
+    SceneError e = stl_error("solid x\n facet normal 0 0 1\n  outer loop\n   vertex 0 0 inf\n");
+    EXPECT_EQ(e.location().line, 4);
+    EXPECT_EQ(e.location().column, 15);
+    EXPECT_EQ(e.message(), "vertex has a coordinate that is not finite: \"inf\"");
+    EXPECT_EQ(e.source_line(), "   vertex 0 0 inf");
+    EXPECT_EQ(e.span(), 3);
+
+    e = stl_error("solid x\n facet normal 0 0\n");
+    EXPECT_EQ(e.message(), "facet normal needs 3 numbers, got 2");
+    e = stl_error("solid x\n facet 0 0 1\n");
+    EXPECT_EQ(e.message(), "expected \"normal\", got \"0\"");
+    e = stl_error("solid x\n facet normal 0 0 1\n  vertex 0 0 0\n");
+    EXPECT_EQ(e.message(), "expected \"outer loop\", got \"vertex\"");
+    EXPECT_EQ(e.location().line, 3);
+    e = stl_error("solid x\n facet normal 0 0 1\n  outer loop\n   vertex 0 0 0 1\n");
+    EXPECT_EQ(e.message(), "unexpected \"1\" after \"0\"");
+    EXPECT_EQ(e.location().column, 17);
+    e = stl_error("solid x\n facet normal 0 0 1\n  outer loop\n   vertex 0 0 0\n  endloop\n");
+    EXPECT_EQ(e.message(), "the facet has 1 vertices; STL facets are triangles");
+    e = stl_error("solid x\n" + kFacet + " endfacet\n");
+    EXPECT_EQ(e.message(), "expected \"facet\" or \"endsolid\", got \"endfacet\"");
+    EXPECT_EQ(e.location().line, 9);
+    e = stl_error("solid x\n" + kFacet + "endsolid x\nfacet normal 0 0 1\n");
+    EXPECT_EQ(e.message(), "expected \"solid\", got \"facet\"");
+    // A binary STL whose length does not match its count, with a header that starts "solid".
+    e = stl_error("solid header\n\x01\x02\x03 garbage\n");
+    EXPECT_NE(e.notes().at(0).find("binary STL"), std::string::npos);
+}
+
 TEST(TextLines, NumbersParseWholeTokensOnly) {
     EXPECT_EQ(parse_float("1.5"), 1.5f);
     EXPECT_EQ(parse_float("+2"), 2.0f);
@@ -124,6 +187,8 @@ TEST(MeshValidators, SurviveMutatedFiles) {
     }
     survive_mutations(read(kMeshes / "materials.obj"),
                       [&](const std::string& t) { validate_obj(kMeshes / "materials.obj", t); });
+    survive_mutations(read(kMeshes / "tetra_ascii.stl"),
+                      [&](const std::string& t) { validate_stl(kMeshes / "tetra_ascii.stl", t); });
 }
 
 }  // namespace

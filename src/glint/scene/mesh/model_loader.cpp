@@ -24,6 +24,7 @@
 #include "glint/scene/mesh/mesh_limits.h"
 #include "glint/scene/mesh/obj_validator.h"
 #include "glint/scene/mesh/ply_validator.h"
+#include "glint/scene/mesh/stl_validator.h"
 #include "glint/scene/mesh/text_lines.h"
 #include "glint/scene/scene_error.h"
 
@@ -126,6 +127,9 @@ private:
         } else if (format == Format::ply) {
             const std::string bytes = read_text_file(name_, kMaxMeshFileBytes);
             validate_ply(file_, bytes);
+        } else if (format == Format::stl) {
+            const std::string bytes = read_text_file(name_, kMaxMeshFileBytes);
+            validate_stl(file_, bytes);
         }
     }
 
