@@ -20,6 +20,7 @@
 #include "glint/image/srgb.h"
 #include "glint/image/texture_file.h"
 #include "glint/math/constants.h"
+#include "glint/scene/mesh/assimp_warnings.h"
 #include "glint/scene/mesh/material_mapping.h"
 #include "glint/scene/mesh/mesh_limits.h"
 #include "glint/scene/mesh/obj_validator.h"
@@ -99,7 +100,7 @@ public:
         const Format format = format_of(file_);
         check_file(file_);
         validate(format);
-        const aiScene* scene = import();
+        const aiScene* scene = import(format);
         if (!scene->mRootNode) throw error("the file has no scene");
         collect(*scene);
         if (arrays_.empty()) {
@@ -133,7 +134,20 @@ private:
         }
     }
 
-    const aiScene* import() {
+    // glTF accessors are not validated before Assimp reads them (that needs a JSON parser);
+    // Assimp drops the faces whose indices are out of range with only a log message, which is
+    // caught here and made an error, whether or not any faces are left.
+    void check_assimp_log(Format format, const AssimpWarnings& log) const {
+        if (format == Format::gltf && log.any_contains("out-of-range indices")) {
+            throw error(
+                "an index is out of range: a primitive's indices refer to vertices beyond "
+                "the count of its POSITION accessor",
+                {"Assimp drops the triangles that use such indices; glint refuses the "
+                 "file rather than render it with holes"});
+        }
+    }
+
+    const aiScene* import(Format format) {
         unsigned flags = aiProcess_Triangulate | aiProcess_JoinIdenticalVertices |
                          aiProcess_SortByPType | aiProcess_ValidateDataStructure;
         // Points and lines are not surfaces; SortByPType drops them.
@@ -145,11 +159,13 @@ private:
             importer_.SetPropertyInteger(AI_CONFIG_PP_RVC_FLAGS, aiComponent_NORMALS);
         }
         const aiScene* scene = nullptr;
+        const AssimpWarnings log;
         try {
             scene = importer_.ReadFile(name_, flags);
         } catch (const std::exception& e) {
             throw error(std::string("Assimp cannot read it: ") + e.what());
         }
+        check_assimp_log(format, log);
         if (!scene)
             throw error(std::string("Assimp cannot read it: ") + importer_.GetErrorString());
         return scene;

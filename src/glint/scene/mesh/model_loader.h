@@ -56,8 +56,8 @@ inline constexpr float kGltfLightUnitsToGlint = 1;
 // Reads a model file; the extension picks the format (.obj, .ply, .gltf, .glb, .stl, any case).
 // Throws SceneError only: file:line:col for bad lines of OBJ, MTL, ASCII PLY and ASCII STL files
 // (checked before Assimp reads them), the file and Assimp's message for files Assimp refuses,
-// the file and a clear message for what validation after import finds (no triangles, non-finite
-// coordinates).
+// the file and a clear message for what Assimp only logs (glTF indices out of range) and for
+// what validation after import finds (no triangles, non-finite coordinates).
 Model load_model(const std::filesystem::path& file, const ModelOptions& options = {});
 
 }  // namespace glint
