@@ -214,6 +214,34 @@ TEST(YamlScene, ShapesAreReadAndPlaneNormalsNormalised) {
     EXPECT_EQ(box.max, (Point3{1, 2, 3}));
 }
 
+// A glTF file placed as a mesh object gives triangles and materials; its cameras and lights are
+// not the scene's, and a warning names the file and what it leaves out.
+TEST(YamlScene, MeshObjectFromGltfWarnsOfTheCamerasAndLightsItIgnores) {
+    const std::string scene_file = (kSourceDir / "tests/data/meshes/inline.yaml").string();
+    const Scene scene = parse_yaml_scene(
+        "camera: {from: [0, 0, -5], at: [0, 0, 0]}\n"
+        "objects:\n"
+        "  - {type: mesh, file: quad.gltf}\n"
+        "  - {type: mesh, file: quad.gltf, transform: [{translate: [2, 0, 0]}]}\n",
+        scene_file);
+    EXPECT_TRUE(scene.lights.empty());
+    std::vector<std::string> about_gltf;
+    for (const std::string& w : scene.warnings)
+        if (w.find("ignored") != std::string::npos) about_gltf.push_back(w);
+    ASSERT_EQ(about_gltf.size(), 1u);  // once per file, however often it is used
+    EXPECT_EQ(about_gltf[0],
+              (kSourceDir / "tests/data/meshes/quad.gltf").string() +
+                  ": 1 camera and 3 lights of the file ignored: as a mesh object (" + scene_file +
+                  ":3:24) it gives only its triangles and materials; render the file on its own "
+                  "to use them");
+    // A file without cameras or lights gives no such warning.
+    const Scene ply = parse_yaml_scene(
+        "camera: {from: [0, 0, -5], at: [0, 0, 0]}\nobjects: [{type: mesh, file: "
+        "cube_ascii.ply}]\n",
+        scene_file);
+    EXPECT_TRUE(ply.warnings.empty());
+}
+
 TEST(YamlScene, EmptySectionsAreAllowed) {
     const Scene scene = parse(std::string(kCamera) + "image:\nmaterials:\nlights: []\nobjects:\n");
     EXPECT_TRUE(scene.objects.empty());

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <string>
 
 #include "glint/scene/yaml/yaml_shapes.h"
 #include "glint/scene/yaml/yaml_transform.h"
@@ -10,6 +11,11 @@
 namespace glint {
 
 namespace {
+
+// "1 camera", "3 lights".
+std::string count_of(std::size_t n, const char* what) {
+    return std::to_string(n) + " " + what + (n == 1 ? "" : "s");
+}
 
 // A transform on an already placed shape (an instance) composes with its placement rather than
 // nesting another level.
@@ -125,6 +131,21 @@ std::shared_ptr<const Model> ShapeReader::model(const MapReader& map) {
         auto model = std::make_shared<const Model>(load_model(file, options));
         // The model's warnings name its file already.
         warnings_.insert(warnings_.end(), model->warnings.begin(), model->warnings.end());
+        if (!model->cameras.empty() || !model->lights.empty()) {
+            // A mesh object takes triangles and materials; the scene has its own camera and
+            // lights. Say so rather than drop the file's silently.
+            std::string ignored = count_of(model->cameras.size(), "camera");
+            if (model->cameras.empty())
+                ignored = count_of(model->lights.size(), "light");
+            else if (!model->lights.empty())
+                ignored += " and " + count_of(model->lights.size(), "light");
+            const YAML::Mark m = entry.value.Mark();
+            warnings_.push_back(file.string() + ": " + ignored + " of the file ignored: as a " +
+                                "mesh object (" + source_.file_name() + ":" +
+                                std::to_string(m.line + 1) + ":" + std::to_string(m.column + 1) +
+                                ") it gives only its triangles and materials; render the file on "
+                                "its own to use them");
+        }
         return models_.emplace(key, std::move(model)).first->second;
     } catch (const SceneError& e) {
         const YAML::Mark m = entry.value.Mark();
