@@ -118,11 +118,9 @@ private:
         s.center = point(e, "center x", "center y", "center z");
         const NffToken r = tokens_.require(e, {"radius"});
         s.radius = tokens_.number_of(r, e, {"radius"});
-        if (s.radius < 0) {
-            throw tokens_.error_at(r,
-                                   "negative radii (inside-only spheres) are not supported, got " +
-                                       std::string(r.text));
-        }
+        // The SPD's README: "A negative radius means only the inside is visible".
+        s.inside_only = s.radius < 0;
+        s.radius = std::abs(s.radius);
         if (s.radius == 0) {
             throw tokens_.error_at(r,
                                    "the sphere's radius must be > 0, got " + std::string(r.text));
@@ -140,14 +138,18 @@ private:
         c.apex = point(e, "apex x", "apex y", "apex z");
         const NffToken apex_radius = tokens_.require(e, {"apex radius"});
         c.apex_radius = tokens_.number_of(apex_radius, e, {"apex radius"});
-        for (const auto& [r, value] :
-             {std::pair{base_radius, c.base_radius}, std::pair{apex_radius, c.apex_radius}}) {
-            if (value < 0) {
-                throw tokens_.error_at(
-                    r, "negative radii (inside-only cones) are not supported, got " +
-                           std::string(r.text));
-            }
+        // The SPD's README: "Negative radii mean only the inside is visible": both of them,
+        // or one beside a pointed end.
+        if ((c.base_radius < 0 && c.apex_radius > 0) || (c.base_radius > 0 && c.apex_radius < 0)) {
+            const NffToken& negative = c.base_radius < 0 ? base_radius : apex_radius;
+            throw tokens_.error_at(negative,
+                                   "the cone's radii have opposite signs: negative radii, which "
+                                   "make a cone visible from inside only, must both be negative "
+                                   "(or 0)");
         }
+        c.inside_only = c.base_radius < 0 || c.apex_radius < 0;
+        c.base_radius = std::abs(c.base_radius);
+        c.apex_radius = std::abs(c.apex_radius);
         if (c.base_radius == 0 && c.apex_radius == 0) {
             throw tokens_.error_at(apex_radius, "the cone's radii are both 0: it has no surface");
         }

@@ -48,18 +48,21 @@ struct NffLight {
     NffLocation location;
 };
 
-// `s x y z r`, r > 0 (inside-only spheres, r < 0, are refused).
+// `s x y z r`, r != 0. A negative r makes a sphere of radius |r| whose inside only is visible.
 struct NffSphere {
     Point3 center;
-    float radius = 1;
+    float radius = 1;          // > 0: |r|
+    bool inside_only = false;  // r < 0
 };
 
-// `c`: a cone or cylinder without end caps. Radii >= 0, not both 0; base != apex.
+// `c`: a cone or cylinder without end caps; base != apex. Negative radii (both, or one with the
+// other 0) make one whose inside only is visible.
 struct NffCone {
     Point3 base;
-    float base_radius = 1;
+    float base_radius = 1;  // >= 0, not both 0: as written, or their absolute values
     Point3 apex;
     float apex_radius = 1;
+    bool inside_only = false;
 };
 
 // `p n`: a planar polygon of n >= 3 vertices, counter-clockwise seen from its visible side.

@@ -6,6 +6,8 @@
 
 #include <cmath>
 #include <map>
+#include <optional>
+#include <string>
 #include <utility>
 
 #include "glint/geometry/triangle_mesh.h"
@@ -75,6 +77,43 @@ private:
     std::map<std::pair<std::uint32_t, bool>, MeshData> meshes_;
 };
 
+// Spheres and cones that NFF makes visible from inside only; glint draws every surface from both
+// sides, so the scene says how many there are and where the first one is.
+struct InsideOnly {
+    std::size_t spheres = 0, cones = 0;
+    std::optional<NffLocation> first;
+
+    void count(const NffObject& object) {
+        const auto* s = std::get_if<NffSphere>(&object.primitive);
+        const auto* c = std::get_if<NffCone>(&object.primitive);
+        if (!(s && s->inside_only) && !(c && c->inside_only)) return;
+        ++(s ? spheres : cones);
+        if (!first) first = object.location;
+    }
+
+    std::optional<std::string> warning(const NffScene& nff) const {
+        if (!first) return std::nullopt;
+        const SourceLocation at = nff.where(*first);
+        const auto count_of = [](std::size_t n, const char* what) {
+            return std::to_string(n) + " " + what + (n == 1 ? "" : "s");
+        };
+        std::string what;
+        if (spheres + cones == 1) {
+            what = spheres == 1 ? "a sphere with a negative radius" : "a cone with negative radii";
+        } else {
+            what = spheres > 0 ? count_of(spheres, "sphere") : "";
+            if (cones > 0) what += (what.empty() ? "" : " and ") + count_of(cones, "cone");
+            what += " with negative radii";
+        }
+        const bool one = spheres + cones == 1;
+        return at.file + ":" + std::to_string(at.line) + ":" + std::to_string(at.column) + ": " +
+               what + ", which NFF makes visible from inside only, " + (one ? "is" : "are") +
+               " drawn from both sides with the absolute " +
+               (one && spheres == 1 ? "radius" : "radii") + " (glint's surfaces are two-sided)" +
+               (one ? "" : "; the first is here");
+    }
+};
+
 struct ToShapes {
     std::uint32_t material;
     std::vector<SceneObject>& objects;
@@ -141,10 +180,13 @@ Scene nff_to_scene(const NffScene& nff) {
         scene.materials.push_back(to_material(nff.materials[i], i));
     }
     MeshCollector triangles;
+    InsideOnly inside_only;
     for (const NffObject& object : nff.objects) {
         std::visit(ToShapes{object.material, scene.objects, triangles}, object.primitive);
+        inside_only.count(object);
     }
     triangles.emit(scene.objects, scene.warnings);
+    if (const auto warning = inside_only.warning(nff)) scene.warnings.push_back(*warning);
     return scene;
 }
 
