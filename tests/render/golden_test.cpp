@@ -65,7 +65,8 @@ INSTANTIATE_TEST_SUITE_P(
                       "features/orthographic.yaml", "features/supersampling.yaml",
                       "features/csg.yaml", "features/quadrics.yaml", "features/polygons.yaml",
                       "features/implicit.yaml", "features/fractals.yaml", "features/meshes.yaml",
-                      "features/model-formats.yaml", "features/instancing.yaml"),
+                      "features/model-formats.yaml", "features/gltf-ply-stl.yaml",
+                      "features/instancing.yaml"),
     [](const ::testing::TestParamInfo<std::string>& param) {
         std::string id = fs::path(param.param).stem().string();
         for (char& c : id)
