@@ -208,6 +208,74 @@ TEST(JuliaSet, ScaleAndCenterPlaceTheSet) {
     EXPECT_EQ(julia.bounds().min.x, 1 - float(julia.bounding_radius()));
 }
 
+// Bounds: the cube around the bounding sphere of the slice, and no point of the solid outside
+// it (brute force over a grid of twice its size); a slice beyond the set has nothing to bound.
+TEST(JuliaSet, BoundsHoldTheSolid) {
+    JuliaSet julia;
+    julia.c = {-0.2f, 0.6f, 0.2f, 0};
+    julia.slice_w = 0.1f;
+    julia.center = {0.5f, -1, 2};
+    julia.scale = 0.8f;
+    const float r = float(julia.bounding_radius());
+    // The slice of the ball of radius R = (1 + sqrt(1 + 4|c|)) / 2, scaled, plus the margins.
+    const double big_r = julia.escape_radius();
+    EXPECT_NEAR(r, 0.8 * std::sqrt(big_r * big_r - 0.01) * 1.01 + 2 * julia.epsilon, 1e-5);
+    const Bounds3 b = julia.bounds();
+    EXPECT_EQ(b.min, (julia.center - Vector3{r, r, r}));
+    EXPECT_EQ(b.max, (julia.center + Vector3{r, r, r}));
+    constexpr int kN = 48;
+    int inside = 0;
+    for (int i = 0; i <= kN; ++i) {
+        for (int j = 0; j <= kN; ++j) {
+            for (int k = 0; k <= kN; ++k) {
+                const Vector3 offset =
+                    Vector3{float(i), float(j), float(k)} / float(kN) * 2.0f - Vector3{1, 1, 1};
+                const Point3 p = julia.center + offset * (2 * r);
+                if (!julia.inside(p)) continue;
+                ++inside;
+                ASSERT_TRUE(b.contains(p)) << p.x << ", " << p.y << ", " << p.z;
+            }
+        }
+    }
+    EXPECT_GT(inside, 100);
+    julia.slice_w = 5;  // beyond R: an empty slice
+    EXPECT_EQ(julia.bounds().min, julia.center);
+    EXPECT_EQ(julia.bounds().max, julia.center);
+}
+
+// uv is the spherical mapping about the centre, as for Sphere: on the c = 0 set (a sphere) the
+// hit from each axis direction has that direction's longitude and latitude.
+TEST(JuliaSet, UvsAreSphericalAboutTheCentre) {
+    JuliaSet julia;
+    julia.center = {1, 2, 3};
+    julia.scale = 2;
+    const Sphere same{julia.center, 2};
+    RandomRays rays(julia.center, 2.5f, 41);
+    int hits = 0;
+    for (int i = 0; i < 200; ++i) {
+        const Ray ray = rays.next();
+        const auto a = julia.intersect(ray, {});
+        const auto b = same.intersect(ray, {});
+        if (!a || !b) continue;
+        // Grazing rays meet the shell (2e-3 deep at this scale) far from where they meet the
+        // sphere.
+        if (dot(same.surface_at(ray, *b).normal, ray.direction) > -0.3f) continue;
+        ++hits;
+        const Point2 ua = julia.surface_at(ray, *a).uv, ub = same.surface_at(ray, *b).uv;
+        // Away from the seam at u = 0, the two agree to about the shell's depth.
+        if (ub.x > 0.01f && ub.x < 0.99f) {
+            EXPECT_NEAR(ua.x, ub.x, 4e-3f) << "ray " << i;
+        }
+        EXPECT_NEAR(ua.y, ub.y, 4e-3f) << "ray " << i;
+    }
+    EXPECT_GT(hits, 50);
+    // From -z: a quarter turn from +x, on the equator.
+    const Ray from_front{{1, 2, -3}, {0, 0, 1}};
+    const Point2 uv = julia.surface_at(from_front, *julia.intersect(from_front, {})).uv;
+    EXPECT_NEAR(uv.x, 0.25f, 1e-5f);
+    EXPECT_NEAR(uv.y, 0.5f, 1e-5f);
+}
+
 TEST(JuliaSet, ParameterChecks) {
     JuliaSet julia;
     EXPECT_EQ(describe_problem(julia), "");

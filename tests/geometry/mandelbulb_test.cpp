@@ -55,12 +55,36 @@ TEST(Mandelbulb, RayAtTheCentreMatchesBruteForceMarching) {
     }
 }
 
+// Rays that miss the bounding sphere are not traced at all (no estimate evaluated); rays through
+// it that pass the bulb are traced across it and miss. Fine marching confirms that the estimate
+// stays above epsilon along all of them.
 TEST(Mandelbulb, RaysOutsideTheBoundingSphereMiss) {
     const Mandelbulb bulb;
     EXPECT_NEAR(bulb.bounding_radius(), std::pow(2.0, 1.0 / 7) * 1.01 + 2e-3, 1e-9);
-    EXPECT_FALSE(bulb.intersect({{2, 2, -3}, {0, 0, 1}}, {}));
-    EXPECT_FALSE(bulb.intersect({{0, 1.2f, -3}, {0, 0, 1}}, {}));
-    EXPECT_FALSE(bulb.intersect({{0, 0, -3}, {0, 0, -1}}, {}));
+    const auto estimate = [&](Point3 p) { return bulb.distance_estimate(p); };
+    const SphereTraceSettings settings{bulb.center, bulb.bounding_radius(), bulb.epsilon,
+                                       bulb.max_steps};
+    const auto expect_miss = [&](const Ray& ray, bool through_the_sphere) {
+        SCOPED_TRACE(::testing::Message() << "ray from " << ray.origin.x << ", " << ray.origin.y
+                                          << ", " << ray.origin.z);
+        EXPECT_FALSE(bulb.intersect(ray, {}));
+        const SphereTrace trace = sphere_trace(estimate, ray, {}, settings);
+        EXPECT_EQ(trace.outcome, SphereTrace::Outcome::kMiss);
+        if (through_the_sphere) {
+            EXPECT_GT(trace.steps, 3);  // stepped across the sphere
+        } else {
+            EXPECT_EQ(trace.steps, 0);  // clipped away
+        }
+        EXPECT_LT(march(bulb, ray, 0, 6, 1e-4, bulb.epsilon), 0);
+    };
+    expect_miss({{2, 2, -3}, {0, 0, 1}}, false);
+    expect_miss({{0, 1.2f, -3}, {0, 0, 1}}, false);
+    expect_miss({{0, 0, -3}, {0, 0, -1}}, false);  // pointing away
+    // Through the bounding sphere (radius 1.117), past the bulb: over it, under it and beside it.
+    expect_miss({{0, 1.05f, -3}, {0, 0, 1}}, true);
+    expect_miss({{-3, 1.05f, 0.1f}, {1, 0, 0}}, true);
+    expect_miss({{-3, -1, 0.3f}, {1, 0, 0}}, true);
+    expect_miss({{1.1f, -3, 0}, {0, 1, 0}}, true);
 }
 
 TEST(Mandelbulb, RaysFromInsideTheBoundingSphere) {
@@ -81,6 +105,122 @@ TEST(Mandelbulb, RaysFromInsideTheBoundingSphere) {
     while (bulb.inside(from_centre.at(first_outside))) first_outside += 1e-5f;
     EXPECT_NEAR(exit->t, first_outside, 1e-4f);
     EXPECT_GT(dot(bulb.surface_at(from_centre, *exit).normal, from_centre.direction), 0);
+}
+
+// The polar axis (+y) maps to itself under z -> z^8 + c (theta = 0 stays 0), so along it the
+// iteration is the real one y <- y^8 + c with dr <- 8 y^7 dr + 1: a worked estimate that needs no
+// spherical coordinates. The orbit stays bounded up to c = x - x^8 for x = 8^(-1/7), 0.650; at
+// 12 iterations the estimate falls below epsilon a little above that.
+double axis_estimate(double c, int iterations, double bailout) {
+    double y = c, dr = 1;
+    for (int i = 0; i < iterations && std::abs(y) <= bailout; ++i) {
+        dr = 8 * std::pow(std::abs(y), 7) * dr + 1;
+        y = std::pow(y, 8) + c;
+    }
+    const double r = std::abs(y);
+    return 0.5 * std::log(r) * r / dr;
+}
+
+TEST(Mandelbulb, WorkedHitOnThePolarAxis) {
+    const Mandelbulb bulb;
+    double top = 2;  // where the axis estimate, marched down in steps of 1e-6, first falls below
+    while (axis_estimate(top, bulb.max_iterations, bulb.bailout) >= bulb.epsilon) top -= 1e-6;
+    EXPECT_GT(top, 0.650);
+    EXPECT_LT(top, 0.68);
+    const float y = float(top);
+    EXPECT_NEAR(bulb.distance_estimate({0, y, 0}), axis_estimate(y, 12, 2), 1e-12);
+
+    const Ray down{{0, 3, 0}, {0, -1, 0}};
+    const auto hit = bulb.intersect(down, {});
+    ASSERT_TRUE(hit);
+    EXPECT_EQ(hit->part, 0u);  // entering
+    // Sphere tracing stops at its first step below epsilon: at most one step (about epsilon
+    // there) past the first point that is.
+    EXPECT_GE(hit->t, 3 - top - 1e-5);
+    EXPECT_LE(hit->t, 3 - top + bulb.epsilon);
+    EXPECT_NEAR(bulb.surface_at(down, *hit).uv.y, 1, 1e-6f);  // the north pole of the uv
+}
+
+// Along the z axis, where the surface is smooth at the scale of a few epsilon: the hit is where
+// dense marching first finds the estimate below epsilon, and the normal is that of the plane
+// through the hits of four parallel rays 5 epsilon around it, each found by dense marching.
+TEST(Mandelbulb, WorkedHitAndNormalAlongTheZAxis) {
+    const Mandelbulb bulb;
+    const Ray ray{{0, 0, -3}, {0, 0, 1}};
+    const auto hit = bulb.intersect(ray, {});
+    ASSERT_TRUE(hit);
+    const double first = march(bulb, ray, 1.5, 3, 1e-6, bulb.epsilon);
+    EXPECT_NEAR(hit->t, first, bulb.epsilon);
+    EXPECT_NEAR(hit->t, 2.124, 1e-3);  // the bulb's front reaches z = -0.876 on the axis
+
+    Point3 around[4];
+    const Vector3 offsets[4] = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}};
+    for (int k = 0; k < 4; ++k) {
+        const Ray beside{ray.origin + offsets[k] * (5 * bulb.epsilon), ray.direction};
+        around[k] =
+            beside.at(float(march(bulb, beside, first - 0.1, first + 0.1, 1e-6, bulb.epsilon)));
+    }
+    Vector3 plane = normalize(cross(around[0] - around[1], around[2] - around[3]));
+    if (dot(plane, ray.direction) > 0) plane = -plane;
+    const SurfacePoint sp = bulb.surface_at(ray, *hit);
+    EXPECT_GT(dot(sp.normal, plane), 0.999f);
+    EXPECT_LT(dot(sp.normal, ray.direction), -0.9f);  // facing the ray, tilted a little
+}
+
+// Bounds: the cube around the bounding sphere, and no point of the solid outside it. Brute force
+// over a grid of the cube twice its size (and of the same cube for a placed bulb).
+TEST(Mandelbulb, BoundsHoldTheSolid) {
+    for (const auto& [center, scale] :
+         {std::pair{Point3{0, 0, 0}, 1.0f}, std::pair{Point3{1, -2, 0.5f}, 0.5f}}) {
+        Mandelbulb bulb;
+        bulb.center = center;
+        bulb.scale = scale;
+        const float r = float(bulb.bounding_radius());
+        const Bounds3 b = bulb.bounds();
+        EXPECT_EQ(b.min, (center - Vector3{r, r, r}));
+        EXPECT_EQ(b.max, (center + Vector3{r, r, r}));
+        constexpr int kN = 48;
+        int inside = 0;
+        for (int i = 0; i <= kN; ++i) {
+            for (int j = 0; j <= kN; ++j) {
+                for (int k = 0; k <= kN; ++k) {
+                    const Vector3 offset =
+                        Vector3{float(i), float(j), float(k)} / float(kN) * 2.0f - Vector3{1, 1, 1};
+                    const Point3 p = center + offset * (2 * r);
+                    if (!bulb.inside(p)) continue;
+                    ++inside;
+                    ASSERT_TRUE(b.contains(p)) << p.x << ", " << p.y << ", " << p.z;
+                }
+            }
+        }
+        EXPECT_GT(inside, 1000);
+    }
+}
+
+// uv is the spherical mapping about the centre: u the longitude around +y from +x
+// (counter-clockwise seen from above: -z is a quarter turn), v the latitude from the south
+// pole (0) to the north pole (1).
+TEST(Mandelbulb, UvsAreSphericalAboutTheCentre) {
+    Mandelbulb bulb;
+    bulb.center = {1, 2, 3};
+    const struct {
+        Vector3 from;  // direction from the centre to the ray's origin
+        float u, v;
+    } cases[] = {{{1, 0, 0}, 0, 0.5f},
+                 {{0, 0, -1}, 0.25f, 0.5f},
+                 {{-1, 0, 0}, 0.5f, 0.5f},
+                 {{0, 0, 1}, 0.75f, 0.5f},
+                 {{0, -1, 0}, 0.5f, 0}};
+    for (const auto& c : cases) {
+        const Ray ray{bulb.center + c.from * 3.0f, -c.from};
+        const auto hit = bulb.intersect(ray, {});
+        ASSERT_TRUE(hit);
+        const Point2 uv = bulb.surface_at(ray, *hit).uv;
+        if (c.v > 0) {  // the pole has no longitude
+            EXPECT_NEAR(uv.x, c.u, 1e-5f) << c.from.x << c.from.y << c.from.z;
+        }
+        EXPECT_NEAR(uv.y, c.v, 1e-5f);
+    }
 }
 
 TEST(Mandelbulb, TighterEpsilonHitsCloserToTheSurface) {
