@@ -280,6 +280,16 @@ TEST(Csg, ImplicitSurfacesAreOperands) {
         combine(CsgOperation::intersection, rounded, sphere({0.5f, 0, 0}, 1)));
 }
 
+// An implicit surface is a solid when its box encloses it, not when the box cuts it open.
+TEST(Csg, ImplicitSurfacesCutOpenByTheirBoxAreNotSolids) {
+    const Solid rounded = superellipsoid(1);
+    EXPECT_TRUE(is_solid(*rounded.shape));
+    ImplicitSurface cut = std::get<ImplicitSurface>(*rounded.shape);
+    cut.region.max.x = 0.5f;
+    EXPECT_FALSE(is_solid(Shape{cut}));
+    EXPECT_FALSE(is_solid(Shape{Transformed{Transform{}, std::make_shared<const Shape>(cut)}}));
+}
+
 TEST(Csg, TransformedShapesAreOperands) {
     // Non-uniformly scaled, turned and moved: the ball becomes a tilted ellipsoid, the cube a
     // slanted brick, and the torus an oval ring.

@@ -374,6 +374,32 @@ TEST(ImplicitSurface, ParameterChecks) {
     EXPECT_EQ(describe_problem(s), "implicit surface needs a function");
 }
 
+// A region that encloses the surface leaves the solid f < 0 closed; one that cuts through it
+// leaves it open, and the search of the box's faces finds a point of the cut.
+TEST(ImplicitSurface, RegionsThatCutTheSurfaceOpenAreFound) {
+    const auto expect_cut = [](const ImplicitSurface& s) {
+        const auto cut = point_cut_open(s);
+        ASSERT_TRUE(cut);
+        EXPECT_LT(s.f->value(*cut), 0);
+        const bool on_boundary = cut->x == s.region.min.x || cut->x == s.region.max.x ||
+                                 cut->y == s.region.min.y || cut->y == s.region.max.y ||
+                                 cut->z == s.region.min.z || cut->z == s.region.max.z;
+        EXPECT_TRUE(on_boundary);
+        EXPECT_TRUE(s.region.contains(*cut));
+    };
+    const char* const ball = "x^2 + y^2 + z^2 - 1";
+    EXPECT_FALSE(point_cut_open(surface(ball, cube(1.2f))));
+    EXPECT_FALSE(point_cut_open(surface(ball, cube(1))));  // touching the faces is not cutting
+    expect_cut(surface(ball, cube(0.9f)));
+    expect_cut(surface(ball, {{0, -2, -2}, {2, 2, 2}}));  // half of it
+    // A thin ball on one face, cut as a disk 0.08 across on a face 3 across: found by halving,
+    // as a disk wider than the finest squares' diagonal holds one of their centres.
+    expect_cut(surface("min(x^2 + y^2 + z^2 - 1, (x - 1.5)^2 + (y - 0.3)^2 + (z - 0.2)^2 - 0.04^2)",
+                       cube(1.5f)));
+    // f < 0 everywhere outside a ball: the box cuts the (unbounded) solid on every face.
+    expect_cut(surface("1 - x^2 - y^2 - z^2", cube(2)));
+}
+
 TEST(ImplicitSurface, ShapePropertiesOfASphere) {
     const ImplicitSurface s =
         surface("(x - 0.2)^2 + (y + 0.1)^2 + (z - 0.3)^2 - 1.1^2", cube(1.6f));

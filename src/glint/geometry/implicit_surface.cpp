@@ -179,6 +179,52 @@ ImplicitSearch find_first_root(const ImplicitSurface& surface, const Ray& ray, I
     return search;
 }
 
+std::optional<Point3> point_cut_open(const ImplicitSurface& surface) {
+    if (!surface.f) return std::nullopt;
+    const Expression& f = *surface.f;
+    const Bounds3& box = surface.region;
+    constexpr int kMaxLevel = 6;  // squares of 1/64 of the face's sides
+    struct Square {
+        double u0, u1, v0, v1;
+        int level;
+    };
+    for (int axis = 0; axis < 3; ++axis) {
+        // The face's own coordinates: the two other axes.
+        const int a = (axis + 1) % 3, b = (axis + 2) % 3;
+        for (const float fixed : {box.min[axis], box.max[axis]}) {
+            const auto point_at = [&](double u, double v) {
+                double p[3];
+                p[axis] = fixed;
+                p[a] = u;
+                p[b] = v;
+                return Point3(float(p[0]), float(p[1]), float(p[2]));
+            };
+            // Depth first, so the stack holds at most three squares per level.
+            std::array<Square, 4 * (kMaxLevel + 1)> stack;
+            int top = 0;
+            stack[top++] = {box.min[a], box.max[a], box.min[b], box.max[b], 0};
+            while (top > 0) {
+                const Square q = stack[--top];
+                RealInterval range[3];
+                range[axis] = RealInterval::point(fixed);
+                range[a] = {q.u0, q.u1};
+                range[b] = {q.v0, q.v1};
+                const RealInterval value = f.range(range[0], range[1], range[2]);
+                if (value.is_empty() || value.lo >= 0) continue;  // no f < 0 in this square
+                const Point3 centre = point_at(0.5 * (q.u0 + q.u1), 0.5 * (q.v0 + q.v1));
+                if (f.value(centre) < 0) return centre;
+                if (q.level == kMaxLevel) continue;
+                const double um = 0.5 * (q.u0 + q.u1), vm = 0.5 * (q.v0 + q.v1);
+                stack[top++] = {q.u0, um, q.v0, vm, q.level + 1};
+                stack[top++] = {um, q.u1, q.v0, vm, q.level + 1};
+                stack[top++] = {q.u0, um, vm, q.v1, q.level + 1};
+                stack[top++] = {um, q.u1, vm, q.v1, q.level + 1};
+            }
+        }
+    }
+    return std::nullopt;
+}
+
 std::optional<ShapeHit> ImplicitSurface::intersect(const Ray& ray, Interval t_range) const {
     return find_first_root(*this, ray, t_range).hit;
 }

@@ -55,6 +55,14 @@ struct ImplicitSearch {
 
 ImplicitSearch find_first_root(const ImplicitSurface& surface, const Ray& ray, Interval t_range);
 
+// A point of the region's boundary where f < 0, if the search finds one: there the solid f < 0
+// reaches the box, which cuts it open, so the surface inside the box is not closed (not a
+// solid for CSG). Each face is searched in squares, halved down to 1/64 of its sides (at most
+// 6 x 5461 squares): a square where interval arithmetic proves f >= 0 (or f undefined) is
+// dropped, the others are sampled at their centre. Nothing when no sample is negative: a cut
+// narrower than the finest squares, or where f is negative only off the samples, goes unseen.
+std::optional<Point3> point_cut_open(const ImplicitSurface& surface);
+
 // What is wrong with the parameters, for the loader to report; empty when they are valid.
 std::string describe_problem(const ImplicitSurface& surface);
 

@@ -39,7 +39,7 @@ struct IsSolid {
     bool operator()(const Polygon&) const { return false; }
     bool operator()(const TriangleMesh& m) const { return is_closed_surface(*m.data); }
     // Inside is f < 0; the region must enclose the surface for the solid to be closed.
-    bool operator()(const ImplicitSurface&) const { return true; }
+    bool operator()(const ImplicitSurface& s) const { return !point_cut_open(s); }
     bool operator()(const JuliaSet&) const { return true; }
     bool operator()(const Mandelbulb&) const { return true; }
     bool operator()(const Transformed& t) const { return is_solid(*t.shape); }

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <optional>
 #include <string>
 
 #include "glint/scene/yaml/yaml_shapes.h"
@@ -11,6 +12,15 @@
 namespace glint {
 
 namespace {
+
+// Where an implicit surface (placed or not) is cut open by its box, in its own coordinates.
+std::optional<Point3> implicit_cut_open(const Shape& shape) {
+    if (const auto* placed = std::get_if<Transformed>(&shape))
+        return implicit_cut_open(*placed->shape);
+    if (const auto* implicit = std::get_if<ImplicitSurface>(&shape))
+        return point_cut_open(*implicit);
+    return std::nullopt;
+}
 
 // "1 camera", "3 lights".
 std::string count_of(std::size_t n, const char* what) {
@@ -88,11 +98,18 @@ std::shared_ptr<const Shape> ShapeReader::read_operand(const YAML::Node& node, c
                                {"the material of the CSG object applies to all its operands"});
     }
     if (!is_solid(r.shape)) {
+        std::vector<std::string> notes;
+        if (const auto cut = implicit_cut_open(r.shape)) {
+            notes.push_back("the function is negative at " + format_vector(to_vector(*cut)) +
+                            ", on the boundary of the min/max box: the box cuts the solid f < 0 "
+                            "open; a box that encloses the surface makes it a solid");
+        }
+        notes.push_back(
+            "CSG operands are solids: spheres, boxes, capped cylinders and cones, tori, implicit "
+            "surfaces inside their box, fractals, closed meshes, planes (half-spaces), CSG "
+            "shapes, and transforms and instances of these");
         throw source_.error_at(
-            node, r.map.what() + " is not a closed solid, so it cannot be a CSG operand",
-            {"CSG operands are solids: spheres, boxes, capped cylinders and cones, tori, implicit "
-             "surfaces, fractals, closed meshes, planes (half-spaces), CSG shapes, and transforms "
-             "and instances of these"});
+            node, r.map.what() + " is not a closed solid, so it cannot be a CSG operand", notes);
     }
     return std::make_shared<const Shape>(std::move(r.shape));
 }
