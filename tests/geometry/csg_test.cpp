@@ -161,6 +161,33 @@ TEST(Csg, ClosedMeshesAreOperandsToo) {
     expect_matches_membership(combine(CsgOperation::difference, kBall, octa));
 }
 
+// The YAML loader nests lists of operands as little as it can: a difference of [a, b, c] as
+// a - (b merge c). Both give the same hits and normals as (a - b) - c.
+TEST(Csg, DifferenceOfAMergeIsTheSameAsDifferencesInTurn) {
+    const Solid b = sphere({0.6f, 0.3f, 0}, 0.7f),
+                c = box({-1.5f, -0.2f, -0.4f}, {0.2f, 0.3f, 0.4f});
+    const Shape in_turn =
+        Csg{CsgOperation::difference,
+            std::make_shared<const Shape>(Csg{CsgOperation::difference, kCube.shape, b.shape}),
+            c.shape};
+    const Shape at_once =
+        Csg{CsgOperation::difference, kCube.shape,
+            std::make_shared<const Shape>(Csg{CsgOperation::merge, b.shape, c.shape})};
+    testing::RandomRays rays({0, 0, 0}, 1.6f, 3);
+    int hits = 0;
+    for (int i = 0; i < 1000; ++i) {
+        const Ray ray = rays.next();
+        const auto h1 = intersect(in_turn, ray, {});
+        const auto h2 = intersect(at_once, ray, {});
+        ASSERT_EQ(h1.has_value(), h2.has_value()) << "ray " << i;
+        if (!h1) continue;
+        ++hits;
+        EXPECT_EQ(h1->t, h2->t) << "ray " << i;
+        EXPECT_EQ(surface_at(in_turn, ray, *h1).normal, surface_at(at_once, ray, *h2).normal);
+    }
+    EXPECT_GT(hits, 300);
+}
+
 TEST(Csg, UnionKeepsInternalSurfaces) {
     // POV-Ray's union: the first surface of either operand, inside the other or not.
     const Solid u = combine(CsgOperation::union_of, kBall, kCube);

@@ -1,7 +1,9 @@
 // Transforms, CSG and instances in the YAML format: what the loader builds from them.
 #include <gtest/gtest.h>
 
+#include <string>
 #include <variant>
+#include <vector>
 
 #include "glint/scene/yaml/yaml_scene_loader.h"
 
@@ -55,7 +57,8 @@ TEST(YamlPlacement, MatrixIsRowMajorWithTranslationInTheLastColumn) {
     expect_near(placed.world_from_object(Point3{1, 1, 1}), {6, 2, 1});
 }
 
-TEST(YamlPlacement, CsgFoldsItsOperandsFromTheLeft) {
+// A difference of [a, b, c] is a minus the merge of b and c, which is (a - b) - c.
+TEST(YamlPlacement, DifferenceTakesTheMergeOfTheOperandsAfterTheFirst) {
     const Scene scene = parse(R"(objects:
   - type: difference
     objects:
@@ -65,10 +68,35 @@ TEST(YamlPlacement, CsgFoldsItsOperandsFromTheLeft) {
 )");
     const auto& outer = std::get<Csg>(scene.objects[0].shape);
     EXPECT_EQ(outer.operation, CsgOperation::difference);
-    EXPECT_TRUE(std::holds_alternative<Transformed>(*outer.b));
-    const auto& inner = std::get<Csg>(*outer.a);
-    EXPECT_TRUE(std::holds_alternative<Box>(*inner.a));
-    EXPECT_TRUE(std::holds_alternative<Sphere>(*inner.b));
+    EXPECT_TRUE(std::holds_alternative<Box>(*outer.a));
+    const auto& carved = std::get<Csg>(*outer.b);
+    EXPECT_EQ(carved.operation, CsgOperation::merge);
+    EXPECT_TRUE(std::holds_alternative<Sphere>(*carved.a));
+    EXPECT_TRUE(std::holds_alternative<Transformed>(*carved.b));
+}
+
+// Long lists nest in log2 of their length: a union of 40 spheres is 6 levels deep, not 39
+// (beyond kMaxCsgDepth), and every sphere is in it once.
+TEST(YamlPlacement, LongCsgListsFoldIntoABalancedTree) {
+    std::string text = "objects:\n  - type: union\n    objects:\n";
+    for (int i = 0; i < 40; ++i) {
+        text += "      - {type: sphere, center: [" + std::to_string(i) + ", 0, 0], radius: 0.4}\n";
+    }
+    const Scene scene = parse(text);
+    EXPECT_EQ(csg_depth(scene.objects[0].shape), 6);
+    std::vector<float> centres;
+    const auto collect = [&](const auto& self, const Shape& shape) -> void {
+        if (const auto* csg = std::get_if<Csg>(&shape)) {
+            EXPECT_EQ(csg->operation, CsgOperation::union_of);
+            self(self, *csg->a);
+            self(self, *csg->b);
+        } else {
+            centres.push_back(std::get<Sphere>(shape).center.x);
+        }
+    };
+    collect(collect, scene.objects[0].shape);
+    ASSERT_EQ(centres.size(), 40u);
+    for (int i = 0; i < 40; ++i) EXPECT_EQ(centres[std::size_t(i)], float(i));  // in order
 }
 
 TEST(YamlPlacement, InstancesShareTheDefinedShapeAndComposeTransforms) {

@@ -1,11 +1,29 @@
 // Parsers of the shapes made of other shapes: CSG, instances of definitions, and meshes.
 #include <memory>
+#include <vector>
 
 #include "glint/scene/yaml/yaml_shape_parsers.h"
 
 namespace glint {
 
-// A CSG shape folds its operands from the left: difference of [a, b, c] is (a - b) - c.
+namespace {
+
+// Operands [begin, end) joined by `op` in a balanced tree: log2 of their number in levels.
+std::shared_ptr<const Shape> balanced(CsgOperation op,
+                                      const std::vector<std::shared_ptr<const Shape>>& operands,
+                                      std::size_t begin, std::size_t end) {
+    if (end - begin == 1) return operands[begin];
+    const std::size_t middle = begin + (end - begin) / 2;
+    return std::make_shared<const Shape>(
+        Csg{op, balanced(op, operands, begin, middle), balanced(op, operands, middle, end)});
+}
+
+}  // namespace
+
+// A CSG shape of a list of operands, nested as little as the operation allows: each level costs
+// two bits of a hit's CSG path (kMaxCsgDepth). Union, merge and intersection are associative, so
+// the list becomes a balanced tree; a difference of [a, b, c, ...] is a minus the merge of the
+// rest, as (a - b) - c = a - (b merge c). A thousand operands nest ten levels.
 Shape parse_csg(CsgOperation op, const MapReader& object, ShapeReader& shapes) {
     const MapEntry& entry = object.require("objects");
     const auto items = read_sequence(object.source(), entry.value, object.field("objects"),
@@ -15,14 +33,16 @@ Shape parse_csg(CsgOperation op, const MapReader& object, ShapeReader& shapes) {
             entry.value,
             object.what() + " needs at least 2 objects, got " + std::to_string(items.size()));
     }
-    const auto operand = [&](std::size_t i) {
-        return shapes.read_operand(items[i], {object.what(), "objects[" + std::to_string(i) + "]"});
-    };
-    Shape result = Csg{op, operand(0), operand(1)};
-    for (std::size_t i = 2; i < items.size(); ++i) {
-        result = Csg{op, std::make_shared<const Shape>(std::move(result)), operand(i)};
+    std::vector<std::shared_ptr<const Shape>> operands;
+    operands.reserve(items.size());
+    for (std::size_t i = 0; i < items.size(); ++i) {
+        operands.push_back(
+            shapes.read_operand(items[i], {object.what(), "objects[" + std::to_string(i) + "]"}));
     }
-    return result;
+    if (op == CsgOperation::difference) {
+        return Csg{op, operands[0], balanced(CsgOperation::merge, operands, 1, operands.size())};
+    }
+    return *balanced(op, operands, 0, operands.size());
 }
 
 // A defined shape placed again; `transform` moves it. The geometry is shared, not copied.
