@@ -35,7 +35,8 @@ struct Csg {
     SurfacePoint surface_at(const Ray& ray, const ShapeHit& hit) const;
 };
 
-// Each level takes two bits of ShapeHit::csg_path.
+// Each level takes two bits of ShapeHit::csg_path, and intersect() and surface_at() recurse once
+// a level: the cap keeps both bounded (loaders refuse deeper nesting, DESIGN principle 4).
 inline constexpr int kMaxCsgDepth = 32;
 
 }  // namespace glint

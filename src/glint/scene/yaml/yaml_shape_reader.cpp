@@ -84,9 +84,15 @@ ShapeReader::ObjectResult ShapeReader::read_shapes(const YAML::Node& node, const
         const Transform t = read_transform(source_, transform->value, map.field("transform"));
         for (Shape& shape : shapes) shape = place(std::move(shape), t);
     }
-    if (csg_depth(shapes.front()) > kMaxCsgDepth) {
-        throw source_.error_at(node,
-                               "CSG nests deeper than " + std::to_string(kMaxCsgDepth) + " levels");
+    if (const int depth = csg_depth(shapes.front()); depth > kMaxCsgDepth) {
+        throw source_.error_at(
+            node,
+            "CSG nests " + std::to_string(depth) + " levels deep here, more than the " +
+                std::to_string(kMaxCsgDepth) + " glint allows",
+            {"each level takes two bits of the 64-bit record a hit keeps of the CSG operands it "
+             "is on, and the cap bounds the recursion of every ray's intersection",
+             "levels add up through definitions and instances; a list of n operands takes about "
+             "log2 n"});
     }
     return {std::move(shapes), std::move(mesh_model), std::move(map)};
 }
