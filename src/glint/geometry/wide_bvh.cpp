@@ -1,4 +1,5 @@
-// Collapsing the binary BVH into four-wide nodes.
+// Collapsing the binary BVH into wide nodes, and packing leaves of triangles and spheres into
+// blocks.
 #include "glint/geometry/wide_bvh.h"
 
 #include <algorithm>
@@ -14,7 +15,13 @@ public:
     using Slots = std::array<std::uint32_t, kWideBvhWidth>;
 
     Collapser(const std::vector<BvhNode>& binary, std::vector<WideBvhNode>& wide)
-        : binary_(binary), wide_(wide) {}
+        : binary_(binary), wide_(wide), leaves_(binary.size()) {
+        // Children come after their parents in the binary array: count from the end.
+        for (std::size_t i = binary.size(); i-- > 0;) {
+            const BvhNode& node = binary[i];
+            leaves_[i] = node.is_leaf() ? 1 : leaves_[i + 1] + leaves_[node.offset];
+        }
+    }
 
     // Fills wide_[index] from the binary subtree at `root`, then its descendants. The interior
     // children of a node are placed side by side, so that a traversal that visits several of them
@@ -22,12 +29,13 @@ public:
     void collapse(std::uint32_t root, std::uint32_t index) {
         Slots slot{};
         int n = 0;
-        if (binary_[root].is_leaf()) {
-            slot[n++] = root;
+        if (leaves_[root] <= std::uint32_t(kWideBvhWidth)) {
+            gather_leaves(root, slot, n);  // a leaf alone, or a subtree that fits in one node
         } else {
             slot[n++] = root + 1;
             slot[n++] = binary_[root].offset;
-            while (n < kWideBvhWidth && open_largest(slot, n)) ++n;
+            while (open_one(slot, n)) {
+            }
         }
         auto next = std::uint32_t(wide_.size());
         for (int k = 0; k < n; ++k) next += binary_[slot[std::size_t(k)]].is_leaf() ? 0 : 1;
@@ -58,27 +66,53 @@ public:
     }
 
 private:
-    // Replaces the interior child of largest surface area (the lowest slot at equal area) by its
-    // two children, in place; false when every child is a leaf.
-    bool open_largest(Slots& slot, int n) const {
+    // Opens the interior child of largest surface area (the lowest slot at equal area) that can be
+    // opened, in place: one of more than kWideBvhWidth leaves becomes its two children; one of
+    // fewer becomes all its leaves, if they fit in the free slots. So a subtree of up to
+    // kWideBvhWidth leaves is one full node, never a chain of nodes of two (which opening level by
+    // level made of complete binary trees whose depth is not a multiple of three). False when none
+    // can be opened.
+    bool open_one(Slots& slot, int& n) const {
         int best = -1;
         float best_area = -1;
         for (int k = 0; k < n; ++k) {
-            const BvhNode& node = binary_[slot[std::size_t(k)]];
-            if (node.is_leaf()) continue;
-            const float area = node.bounds.surface_area();
+            const std::uint32_t child = slot[std::size_t(k)];
+            if (binary_[child].is_leaf()) continue;
+            const std::uint32_t leaves = leaves_[child];
+            const int grows = leaves > std::uint32_t(kWideBvhWidth) ? 1 : int(leaves) - 1;
+            if (n + grows > kWideBvhWidth) continue;
+            const float area = binary_[child].bounds.surface_area();
             if (best < 0 || area > best_area) best = k, best_area = area;
         }
         if (best < 0) return false;
         const std::uint32_t opened = slot[std::size_t(best)];
-        for (int k = n; k > best + 1; --k) slot[std::size_t(k)] = slot[std::size_t(k - 1)];
-        slot[std::size_t(best)] = opened + 1;
-        slot[std::size_t(best + 1)] = binary_[opened].offset;
+        Slots replacement{};
+        int m = 0;
+        if (leaves_[opened] > std::uint32_t(kWideBvhWidth)) {
+            replacement[m++] = opened + 1;
+            replacement[m++] = binary_[opened].offset;
+        } else {
+            gather_leaves(opened, replacement, m);
+        }
+        for (int k = n - 1; k > best; --k) slot[std::size_t(k + m - 1)] = slot[std::size_t(k)];
+        for (int k = 0; k < m; ++k) slot[std::size_t(best + k)] = replacement[std::size_t(k)];
+        n += m - 1;
         return true;
+    }
+
+    // Appends the leaves of the binary subtree at `node` to slot, in depth-first order.
+    void gather_leaves(std::uint32_t node, Slots& slot, int& n) const {
+        if (binary_[node].is_leaf()) {
+            slot[std::size_t(n++)] = node;
+            return;
+        }
+        gather_leaves(node + 1, slot, n);
+        gather_leaves(binary_[node].offset, slot, n);
     }
 
     const std::vector<BvhNode>& binary_;
     std::vector<WideBvhNode>& wide_;
+    std::vector<std::uint32_t> leaves_;  // of each binary node's subtree
 };
 
 }  // namespace

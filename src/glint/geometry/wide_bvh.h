@@ -69,10 +69,10 @@ struct WideBvh {
 };
 
 // The binary tree collapsed top down: each wide node takes a binary node's two children and keeps
-// opening the one of largest surface area until it has kWideBvhWidth or all are leaves. Leaves,
-// boxes and the primitive order stay as they were, so the wide tree's leaves are the binary tree's.
-// The root is always a node (a lone leaf becomes the root's only child). At most
-// kWideBvhMaxPrimitives primitives.
+// opening the one of largest surface area while they fit; a subtree of at most kWideBvhWidth
+// leaves becomes one node with all of them. Leaves, boxes and the primitive order stay as they
+// were, so the wide tree's leaves are the binary tree's. The root is always a node (a lone leaf
+// becomes the root's only child). At most kWideBvhMaxPrimitives primitives.
 WideBvh collapse_to_wide_bvh(Bvh binary);
 
 // The wide tree's defaults for primitives tested one by one: leaves of up to 8 and a binary node
