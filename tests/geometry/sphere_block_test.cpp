@@ -18,13 +18,12 @@ namespace {
 
 #ifdef GLINT_SPHERE_BLOCK_HAS_SIMD
 // The SIMD form as the AVX2 and AVX-512 traversals compile it.
-__attribute__((target("avx2"))) std::optional<BlockHit> nearest_avx2(const SphereTester& tester,
-                                                                     const SphereBlock& b,
-                                                                     Interval range) {
+__attribute__((target("avx2"))) BlockHit nearest_avx2(const SphereTester& tester,
+                                                      const SphereBlock& b, Interval range) {
     return tester.nearest<true>(b, range, kEveryLane);
 }
-__attribute__((target("avx2,avx512f,avx512vl,avx512bw,avx512dq"))) std::optional<BlockHit>
-nearest_avx512(const SphereTester& tester, const SphereBlock& b, Interval range) {
+__attribute__((target("avx2,avx512f,avx512vl,avx512bw,avx512dq"))) BlockHit nearest_avx512(
+    const SphereTester& tester, const SphereBlock& b, Interval range) {
     return tester.nearest<true>(b, range, kEveryLane);
 }
 #endif
@@ -34,17 +33,17 @@ void expect_lane_equals_scalar(const Sphere& sphere, const Ray& ray, Interval ra
     set_sphere_lane(block, lane, sphere, 3);
     const auto expected = sphere.intersect(ray, range);
     const SphereTester tester(ray);
-    std::vector<std::optional<BlockHit>> got{tester.nearest<false>(block, range, kEveryLane),
-                                             tester.nearest<true>(block, range, kEveryLane)};
+    std::vector<BlockHit> got{tester.nearest<false>(block, range, kEveryLane),
+                              tester.nearest<true>(block, range, kEveryLane)};
 #ifdef GLINT_SPHERE_BLOCK_HAS_SIMD
     if (simd_path_supported(SimdPath::avx2)) got.push_back(nearest_avx2(tester, block, range));
     if (simd_path_supported(SimdPath::avx512)) got.push_back(nearest_avx512(tester, block, range));
 #endif
     for (const auto& hit : got) {
-        ASSERT_EQ(hit.has_value(), expected.has_value());
+        ASSERT_EQ(bool(hit), expected.has_value());
         if (!hit) continue;
-        EXPECT_EQ(hit->lane, lane);
-        EXPECT_EQ(std::bit_cast<std::uint32_t>(hit->t), std::bit_cast<std::uint32_t>(expected->t));
+        EXPECT_EQ(hit.lane, lane);
+        EXPECT_EQ(std::bit_cast<std::uint32_t>(hit.t), std::bit_cast<std::uint32_t>(expected->t));
     }
 }
 
@@ -93,12 +92,12 @@ TEST(SphereBlock, TheNearestLaneWinsAndTheLowestAtEqualT) {
     for (const auto& hit : {tester.nearest<false>(block, {}, kEveryLane),
                             tester.nearest<true>(block, {}, kEveryLane)}) {
         ASSERT_TRUE(hit);
-        EXPECT_EQ(hit->lane, 1);
-        EXPECT_EQ(hit->t, 9);
+        EXPECT_EQ(hit.lane, 1);
+        EXPECT_EQ(hit.t, 9);
     }
     const auto not_one = [](int lane) { return lane != 1; };
-    EXPECT_EQ(tester.nearest<true>(block, {}, not_one)->lane, 3);
-    EXPECT_EQ(tester.nearest<true>(block, {12, 100}, kEveryLane)->lane, 0);
+    EXPECT_EQ(tester.nearest<true>(block, {}, not_one).lane, 3);
+    EXPECT_EQ(tester.nearest<true>(block, {12, 100}, kEveryLane).lane, 0);
     EXPECT_TRUE(tester.any<true>(block, {}, kEveryLane));
     EXPECT_FALSE(tester.any<true>(block, {0, 8}, kEveryLane));
     EXPECT_FALSE(tester.any<false>(block, {}, [](int) { return false; }));

@@ -20,20 +20,19 @@ struct Corners {
 
 // The block test on the path `simd` names (the SIMD form only where this build has one).
 template <bool kSimd>
-std::optional<BlockHit> nearest(const BlockTester& tester, const TriangleBlock& b, Interval range) {
+BlockHit nearest(const BlockTester& tester, const TriangleBlock& b, Interval range) {
     return tester.nearest<kSimd>(b, range, kEveryLane);
 }
 
 #ifdef GLINT_TRIANGLE_BLOCK_HAS_SIMD
 // The SIMD form as the AVX2 traversal compiles it (VEX encoding, the same operations).
-__attribute__((target("avx2"))) std::optional<BlockHit> nearest_avx2(const BlockTester& tester,
-                                                                     const TriangleBlock& b,
-                                                                     Interval range) {
+__attribute__((target("avx2"))) BlockHit nearest_avx2(const BlockTester& tester,
+                                                      const TriangleBlock& b, Interval range) {
     return tester.nearest<true>(b, range, kEveryLane);
 }
 // And as the AVX-512 one does (EVEX encoding).
-__attribute__((target("avx2,avx512f,avx512vl,avx512bw,avx512dq"))) std::optional<BlockHit>
-nearest_avx512(const BlockTester& tester, const TriangleBlock& b, Interval range) {
+__attribute__((target("avx2,avx512f,avx512vl,avx512bw,avx512dq"))) BlockHit nearest_avx512(
+    const BlockTester& tester, const TriangleBlock& b, Interval range) {
     return tester.nearest<true>(b, range, kEveryLane);
 }
 #endif
@@ -44,20 +43,20 @@ void expect_lane_equals_scalar(const Corners& c, const Ray& ray, Interval range,
     set_block_lane(block, lane, c.v0, c.v1, c.v2, 7);
     const auto expected = intersect_watertight(c.v0, c.v1, c.v2, ray, range);
     const BlockTester tester(ray);
-    std::vector<std::optional<BlockHit>> got{nearest<false>(tester, block, range),
-                                             nearest<true>(tester, block, range)};
+    std::vector<BlockHit> got{nearest<false>(tester, block, range),
+                              nearest<true>(tester, block, range)};
 #ifdef GLINT_TRIANGLE_BLOCK_HAS_SIMD
     if (simd_path_supported(SimdPath::avx2)) got.push_back(nearest_avx2(tester, block, range));
     if (simd_path_supported(SimdPath::avx512)) got.push_back(nearest_avx512(tester, block, range));
 #endif
     for (const auto& hit : got) {
-        ASSERT_EQ(hit.has_value(), expected.has_value());
+        ASSERT_EQ(bool(hit), expected.has_value());
         if (!hit) continue;
-        EXPECT_EQ(hit->lane, lane);
+        EXPECT_EQ(hit.lane, lane);
         // Bit for bit: the same operations in the same order.
-        EXPECT_EQ(std::bit_cast<std::uint32_t>(hit->t), std::bit_cast<std::uint32_t>(expected->t));
-        EXPECT_EQ(std::bit_cast<std::uint32_t>(hit->u), std::bit_cast<std::uint32_t>(expected->u));
-        EXPECT_EQ(std::bit_cast<std::uint32_t>(hit->v), std::bit_cast<std::uint32_t>(expected->v));
+        EXPECT_EQ(std::bit_cast<std::uint32_t>(hit.t), std::bit_cast<std::uint32_t>(expected->t));
+        EXPECT_EQ(std::bit_cast<std::uint32_t>(hit.u), std::bit_cast<std::uint32_t>(expected->u));
+        EXPECT_EQ(std::bit_cast<std::uint32_t>(hit.v), std::bit_cast<std::uint32_t>(expected->v));
     }
 }
 
@@ -113,19 +112,19 @@ TEST(TriangleBlock, TheNearestLaneWinsAndTheLowestAtEqualT) {
     const BlockTester tester(ray);
     for (const auto& hit : {nearest<false>(tester, block, {}), nearest<true>(tester, block, {})}) {
         ASSERT_TRUE(hit);
-        EXPECT_EQ(hit->lane, 1);
-        EXPECT_FLOAT_EQ(hit->t, 3);
+        EXPECT_EQ(hit.lane, 1);
+        EXPECT_FLOAT_EQ(hit.t, 3);
     }
     // The range's far end drops the nearer ones only when it excludes them.
     const auto far_only = tester.nearest<true>(block, {3.5f, 10}, kEveryLane);
     ASSERT_TRUE(far_only);
-    EXPECT_EQ(far_only->lane, 0);
+    EXPECT_EQ(far_only.lane, 0);
     // A lane that is not accepted is passed over.
     const auto not_one = [](int lane) { return lane != 1; };
     for (const auto& hit :
          {tester.nearest<false>(block, {}, not_one), tester.nearest<true>(block, {}, not_one)}) {
         ASSERT_TRUE(hit);
-        EXPECT_EQ(hit->lane, 3);
+        EXPECT_EQ(hit.lane, 3);
     }
     EXPECT_TRUE(tester.any<true>(block, {}, kEveryLane));
     EXPECT_FALSE(tester.any<true>(block, {}, [](int) { return false; }));

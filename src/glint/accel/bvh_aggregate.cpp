@@ -112,59 +112,64 @@ BvhAggregate::Reference BvhAggregate::reference(std::uint32_t ref) const {
 std::optional<Hit> BvhAggregate::closest_hit(const Ray& ray, Interval t_range,
                                              std::uint32_t ray_mask) const {
     if (common_visibility_ && (*common_visibility_ & ray_mask) == 0) return std::nullopt;
-    std::optional<Hit> closest;
-    const auto consider = [&](const Hit& candidate) {
-        if (closest && !nearer(candidate, *closest)) return false;
+    // Plain values, not an std::optional, while the search runs: see BlockHit.
+    Hit closest{};
+    bool found = false;
+    // Keeps a hit nearer than the closest so far (or as near, and first in nearer()'s order) and
+    // brings the range's far end to it.
+    const auto consider = [&](const Hit& candidate, Interval& range) {
+        if (found && !nearer(candidate, closest)) return;
         closest = candidate;
-        return true;
+        found = true;
+        range.max = candidate.shape_hit.t;
     };
     for (const std::uint32_t i : unbounded_) {
         if (!visible(i, ray_mask)) continue;
-        const auto hit = glint::intersect(primitives_[i].shape, ray, t_range);
-        if (hit && consider({*hit, i})) t_range.max = hit->t;
+        if (const auto hit = glint::intersect(primitives_[i].shape, ray, t_range))
+            consider({*hit, i}, t_range);
     }
     // Set up when a ray first reaches a leaf of their kind.
     MadeOnFirstUse<BlockTester, Ray> triangles(ray);
     MadeOnFirstUse<SphereTester, Ray> spheres(ray);
     bvh_closest_leaf(
         bvh_, ray, t_range,
-        [&](auto kernel, std::uint32_t leaf, std::uint32_t count,
-            Interval range) GLINT_INLINE_LEAF -> std::optional<float> {
-            constexpr bool kSimd = decltype(kernel)::kSimd;
-            std::optional<float> found;
-            switch (leaf_kind(leaf)) {
-                case kWideTriangleLeaf:
-                    for (const TriangleBlock& block : leaf_blocks(bvh_, leaf, count)) {
-                        const auto lane_visible = [&](int lane) {
-                            return common_visibility_ ||
-                                   visible(reference(block.id[lane]).primitive, ray_mask);
-                        };
-                        const auto hit = triangles.get().nearest<kSimd>(block, range, lane_visible);
-                        if (!hit) continue;
-                        const Reference r = reference(block.id[hit->lane]);
-                        if (consider({{hit->t, hit->u, hit->v, r.triangle}, r.primitive}))
-                            range.max = *(found = hit->t);
-                    }
-                    return found;
-                case kWideSphereLeaf:
-                    for (const SphereBlock& block : leaf_sphere_blocks(bvh_, leaf, count)) {
-                        const auto lane_visible = [&](int lane) {
-                            return common_visibility_ || visible(block.id[lane], ray_mask);
-                        };
-                        const auto hit = spheres.get().nearest<kSimd>(block, range, lane_visible);
-                        if (hit && consider({{hit->t}, block.id[hit->lane]}))
-                            range.max = *(found = hit->t);
-                    }
-                    return found;
-                default:
-                    for (const std::uint32_t i : leaf_primitives(bvh_, leaf, count)) {
-                        if (!visible(i, ray_mask)) continue;
-                        const auto hit = glint::intersect(primitives_[i].shape, ray, range);
-                        if (hit && consider({*hit, i})) range.max = *(found = hit->t);
-                    }
-                    return found;
-            }
-        });
+        [&](auto kernel, std::uint32_t leaf, std::uint32_t count, Interval& range)
+            GLINT_INLINE_LEAF {
+                constexpr bool kSimd = decltype(kernel)::kSimd;
+                switch (leaf_kind(leaf)) {
+                    case kWideTriangleLeaf:
+                        for (const TriangleBlock& block : leaf_blocks(bvh_, leaf, count)) {
+                            const auto lane_visible = [&](int lane) {
+                                return common_visibility_ ||
+                                       visible(reference(block.id[lane]).primitive, ray_mask);
+                            };
+                            const BlockHit hit =
+                                triangles.get().nearest<kSimd>(block, range, lane_visible);
+                            if (!hit) continue;
+                            const Reference r = reference(block.id[hit.lane]);
+                            consider({{hit.t, hit.u, hit.v, r.triangle}, r.primitive}, range);
+                        }
+                        return;
+                    case kWideSphereLeaf:
+                        for (const SphereBlock& block : leaf_sphere_blocks(bvh_, leaf, count)) {
+                            const auto lane_visible = [&](int lane) {
+                                return common_visibility_ || visible(block.id[lane], ray_mask);
+                            };
+                            const BlockHit hit =
+                                spheres.get().nearest<kSimd>(block, range, lane_visible);
+                            if (hit) consider({{hit.t}, block.id[hit.lane]}, range);
+                        }
+                        return;
+                    default:
+                        for (const std::uint32_t i : leaf_primitives(bvh_, leaf, count)) {
+                            if (!visible(i, ray_mask)) continue;
+                            if (const auto hit = glint::intersect(primitives_[i].shape, ray, range))
+                                consider({*hit, i}, range);
+                        }
+                        return;
+                }
+            });
+    if (!found) return std::nullopt;
     return closest;
 }
 

@@ -112,6 +112,7 @@ public:
         bins_ = std::clamp(options.bins, 2, kMaxBins);
         traversal_cost_ = options.traversal_cost;
         block_size_ = std::uint32_t(std::clamp(options.block_size, 1, 16));
+        shape_cost_ = options.shape_cost;
         const auto n = std::uint32_t(bounds.size());
         boxes_.resize(n);
         centroids_.resize(n);
@@ -237,7 +238,7 @@ private:
     }
     // Leaf tests for n primitives of which `blocked` are of kind 1.
     float tests(std::uint32_t n, std::uint32_t blocked) const {
-        return float(n - blocked + (blocked + block_size_ - 1) / block_size_);
+        return shape_cost_ * float(n - blocked) + float((blocked + block_size_ - 1) / block_size_);
     }
 
     static int bin_of(Float4 centroid, int axis, float lo, float scale, int bins) {
@@ -408,6 +409,7 @@ private:
     int bins_ = 16;
     float traversal_cost_ = 0.5f;
     std::uint32_t block_size_ = 1;
+    float shape_cost_ = 1;
 };
 
 std::size_t node_count(const Chunk& chunk) {

@@ -42,6 +42,8 @@ struct BvhBuildOptions {
     // counts n of them as ceil(n / block_size) tests (Embree's blocks of four triangles), in
     // [1, 16].
     int block_size = 1;
+    // SAH cost of testing one primitive of kind 0 relative to one leaf test of the others.
+    float shape_cost = 1;
 };
 
 struct Bvh {

@@ -108,25 +108,25 @@ public:
 
     // The nearest accepted hit within t_range, the lowest lane at equal t.
     template <bool kSimd, typename Accept>
-    [[gnu::always_inline]] std::optional<BlockHit> nearest(const SphereBlock& b, Interval t_range,
-                                                           Accept&& accept) const {
+    [[gnu::always_inline]] BlockHit nearest(const SphereBlock& b, Interval t_range,
+                                            Accept&& accept) const {
 #ifdef GLINT_SPHERE_BLOCK_HAS_SIMD
         if constexpr (kSimd) {
             sphere_simd::Float4 t;
-            std::optional<BlockHit> best;
+            BlockHit best;
             for (unsigned lanes = sphere_simd::candidates(b, ray4_, t_range, t); lanes != 0;
                  lanes &= lanes - 1) {
                 const int k = __builtin_ctz(lanes);
-                if ((!best || t[k] < best->t) && accept(k)) best = BlockHit{t[k], 0, 0, k};
+                if ((!best || t[k] < best.t) && accept(k)) best = BlockHit{t[k], 0, 0, k};
             }
             return best;
         }
 #endif
-        std::optional<BlockHit> best;
+        BlockHit best;
         for (int k = 0; k < 4; ++k) {
             if (b.id[k] == kNoSphere) continue;
             const auto hit = b.sphere(k).intersect(ray_, t_range);
-            if (hit && (!best || hit->t < best->t) && accept(k)) best = BlockHit{hit->t, 0, 0, k};
+            if (hit && (!best || hit->t < best.t) && accept(k)) best = BlockHit{hit->t, 0, 0, k};
         }
         return best;
     }

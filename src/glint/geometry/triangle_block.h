@@ -164,26 +164,26 @@ public:
 
     // The nearest accepted hit within t_range, the lowest lane at equal t.
     template <bool kSimd, typename Accept>
-    [[gnu::always_inline]] std::optional<BlockHit> nearest(const TriangleBlock& b, Interval t_range,
-                                                           Accept&& accept) const {
+    [[gnu::always_inline]] BlockHit nearest(const TriangleBlock& b, Interval t_range,
+                                            Accept&& accept) const {
 #ifdef GLINT_TRIANGLE_BLOCK_HAS_SIMD
         if constexpr (kSimd) {
             block_simd::Float4 t, u, v;
-            std::optional<BlockHit> best;
+            BlockHit best;
             for (unsigned lanes = block_simd::candidates(b, ray4_, t_range, t, u, v); lanes != 0;
                  lanes &= lanes - 1) {
                 const int k = __builtin_ctz(lanes);
-                if ((!best || t[k] < best->t) && accept(k)) best = BlockHit{t[k], u[k], v[k], k};
+                if ((!best || t[k] < best.t) && accept(k)) best = BlockHit{t[k], u[k], v[k], k};
             }
             return best;
         }
 #endif
-        std::optional<BlockHit> best;
+        BlockHit best;
         for (int k = 0; k < 4; ++k) {
             if (b.id[k] == kNoTriangle) continue;
             const auto hit = intersect_watertight(b.corner(k, 0), b.corner(k, 1), b.corner(k, 2),
                                                   ray_.ray, ray_.shear, t_range);
-            if (hit && (!best || hit->t < best->t) && accept(k))
+            if (hit && (!best || hit->t < best.t) && accept(k))
                 best = BlockHit{hit->t, hit->u, hit->v, k};
         }
         return best;

@@ -186,25 +186,24 @@ const WideBvh& MeshBvhCache::get(const MeshData& mesh) const {
 std::optional<ShapeHit> TriangleMesh::intersect(const Ray& ray, Interval t_range) const {
     const WideBvh& bvh = data->bvh();
     const BlockTester tester(ray);
-    std::optional<ShapeHit> nearest;
+    ShapeHit nearest;
+    bool found = false;
     bvh_closest_leaf(bvh, ray, t_range,
-                     [&](auto kernel, std::uint32_t leaf, std::uint32_t count, Interval range)
-                         GLINT_INLINE_LEAF -> std::optional<float> {
-                             std::optional<float> found;
+                     [&](auto kernel, std::uint32_t leaf, std::uint32_t count, Interval& range)
+                         GLINT_INLINE_LEAF {
                              for (const TriangleBlock& block : leaf_blocks(bvh, leaf, count)) {
-                                 const auto hit = tester.nearest<decltype(kernel)::kSimd>(
+                                 const BlockHit hit = tester.nearest<decltype(kernel)::kSimd>(
                                      block, range, kEveryLane);
                                  if (!hit) continue;
-                                 const std::uint32_t part = block.id[hit->lane];
+                                 const std::uint32_t part = block.id[hit.lane];
                                  // At equal t the lower triangle, whatever the order of the leaves.
-                                 if (nearest && hit->t == nearest->t && part > nearest->part)
-                                     continue;
-                                 nearest = ShapeHit{hit->t, hit->u, hit->v, part};
-                                 range.max = hit->t;
-                                 found = hit->t;
+                                 if (found && hit.t == nearest.t && part > nearest.part) continue;
+                                 nearest = ShapeHit{hit.t, hit.u, hit.v, part};
+                                 found = true;
+                                 range.max = hit.t;
                              }
-                             return found;
                          });
+    if (!found) return std::nullopt;
     return nearest;
 }
 

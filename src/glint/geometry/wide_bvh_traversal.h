@@ -46,13 +46,12 @@ struct StackEntry {
 }
 
 template <typename Kernel, typename Visit>
-[[gnu::always_inline]] inline std::optional<float> closest_hit(const WideBvh& bvh, const Ray& ray,
-                                                               Interval t_range, Visit& visit) {
+[[gnu::always_inline]] inline void closest_hit(const WideBvh& bvh, const Ray& ray, Interval t_range,
+                                               Visit& visit) {
     const typename Kernel::Ray r{BvhRay(ray)};
     std::array<StackEntry, kStackSize> stack;
     int top = 0;
     std::uint32_t child = 0, count = 0;  // the root, a node
-    std::optional<float> nearest;
     for (;;) {
         if ((child & kWideLeaf) == 0) {
             const WideBvhNode& node = bvh.nodes[child];
@@ -76,8 +75,9 @@ template <typename Kernel, typename Visit>
                     continue;
                 }
                 // More: sorted, the farthest deepest in the stack, the nearest now.
-                StackEntry hit[kWideBvhWidth] = {{node.child[k], node.count[k], t_near[k]},
-                                                 {node.child[j], node.count[j], t_near[j]}};
+                StackEntry hit[kWideBvhWidth];  // not zero-filled: only n entries are used
+                hit[0] = {node.child[k], node.count[k], t_near[k]};
+                hit[1] = {node.child[j], node.count[j], t_near[j]};
                 int n = 2;
                 for (; mask != 0; mask &= mask - 1, ++n) {
                     j = unsigned(__builtin_ctz(mask));
@@ -89,13 +89,12 @@ template <typename Kernel, typename Visit>
                 count = hit[0].count;
                 continue;
             }
-        } else if (const std::optional<float> t = visit(Kernel{}, child, count, t_range)) {
-            t_range.max = *t;
-            nearest = t;
+        } else {
+            visit(Kernel{}, child, count, t_range);  // may bring t_range.max nearer
         }
         // Entries whose box starts beyond the nearest hit so far hold nothing nearer.
         for (;;) {
-            if (top == 0) return nearest;
+            if (top == 0) return;
             const StackEntry& e = stack[std::size_t(--top)];
             if (e.t_near <= t_range.max) {
                 child = e.child;
@@ -143,24 +142,21 @@ template <typename Kernel, typename Visit>
 // One instantiation per instruction set: the traversal and the callback inline into these, and
 // take their target's instructions.
 template <typename Visit>
-std::optional<float> closest_hit_sse(const WideBvh& bvh, const Ray& ray, Interval t_range,
-                                     Visit& visit) {
-    return closest_hit<SseKernel>(bvh, ray, t_range, visit);
+void closest_hit_sse(const WideBvh& bvh, const Ray& ray, Interval t_range, Visit& visit) {
+    closest_hit<SseKernel>(bvh, ray, t_range, visit);
 }
 template <typename Visit>
-__attribute__((target("avx2"))) std::optional<float> closest_hit_avx2(const WideBvh& bvh,
-                                                                      const Ray& ray,
-                                                                      Interval t_range,
-                                                                      Visit& visit) {
-    return closest_hit<Avx2Kernel>(bvh, ray, t_range, visit);
+__attribute__((target("avx2"))) void closest_hit_avx2(const WideBvh& bvh, const Ray& ray,
+                                                      Interval t_range, Visit& visit) {
+    closest_hit<Avx2Kernel>(bvh, ray, t_range, visit);
 }
 // The AVX2 kernels again, EVEX-encoded: AVX-512's 32 vector registers hold both the node test's
 // ray and a leaf test's without spilling either.
 #define GLINT_AVX512_TARGET __attribute__((target("avx2,avx512f,avx512vl,avx512bw,avx512dq")))
 template <typename Visit>
-GLINT_AVX512_TARGET std::optional<float> closest_hit_avx512(const WideBvh& bvh, const Ray& ray,
-                                                            Interval t_range, Visit& visit) {
-    return closest_hit<Avx2Kernel>(bvh, ray, t_range, visit);
+GLINT_AVX512_TARGET void closest_hit_avx512(const WideBvh& bvh, const Ray& ray, Interval t_range,
+                                            Visit& visit) {
+    closest_hit<Avx2Kernel>(bvh, ray, t_range, visit);
 }
 template <typename Visit>
 bool any_hit_sse(const WideBvh& bvh, const Ray& ray, Interval t_range, Visit& visit) {
@@ -180,16 +176,15 @@ GLINT_AVX512_TARGET bool any_hit_avx512(const WideBvh& bvh, const Ray& ray, Inte
 
 }  // namespace wide_bvh
 
-// Closest hit, leaf by leaf. visit(kernel, leaf, count, Interval) tests the leaf `leaf` (a child
-// reference with kWideLeaf set; `count` its entries) and returns the t of its nearest hit in the
-// interval, or nothing; the interval's max then shrinks to it, so later calls only report nearer
-// (or equally near) hits. `kernel` is the node test's (wide_bvh::ScalarKernel, SseKernel or
-// Avx2Kernel, which the avx512 path runs too): the path this traversal runs on, for leaf tests that
-// have SIMD forms too (its kSimd). Returns the nearest t, or nothing. Allocates nothing.
+// Closest hit, leaf by leaf. visit(kernel, leaf, count, Interval& range) tests the leaf `leaf` (a
+// child reference with kWideLeaf set; `count` its entries) and, when it finds a nearer hit in
+// range, brings range.max to it (so later calls only report nearer, or equally near, hits).
+// `kernel` is the node test's (wide_bvh::ScalarKernel, SseKernel or Avx2Kernel, which the avx512
+// path runs too): the path this traversal runs on, for leaf tests that have SIMD forms too (its
+// kSimd). The caller keeps what it found. Allocates nothing.
 template <typename VisitLeaf>
-std::optional<float> bvh_closest_leaf(const WideBvh& bvh, const Ray& ray, Interval t_range,
-                                      VisitLeaf&& visit) {
-    if (bvh.nodes.empty()) return std::nullopt;
+void bvh_closest_leaf(const WideBvh& bvh, const Ray& ray, Interval t_range, VisitLeaf&& visit) {
+    if (bvh.nodes.empty()) return;
 #ifdef GLINT_WIDE_BVH_HAS_SIMD
     switch (simd_path()) {
         case SimdPath::avx512:
@@ -202,7 +197,7 @@ std::optional<float> bvh_closest_leaf(const WideBvh& bvh, const Ray& ray, Interv
             break;
     }
 #endif
-    return wide_bvh::closest_hit<wide_bvh::ScalarKernel>(bvh, ray, t_range, visit);
+    wide_bvh::closest_hit<wide_bvh::ScalarKernel>(bvh, ray, t_range, visit);
 }
 
 // Any hit, leaf by leaf, for shadow feelers: visit(kernel, leaf, count, Interval) returns whether
@@ -253,17 +248,17 @@ inline std::span<const SphereBlock> leaf_sphere_blocks(const WideBvh& bvh, std::
 template <typename Visit>
 std::optional<float> bvh_closest_hit(const WideBvh& bvh, const Ray& ray, Interval t_range,
                                      Visit&& visit) {
-    return bvh_closest_leaf(bvh, ray, t_range,
-                            [&](auto, std::uint32_t leaf, std::uint32_t count, Interval range) {
-                                std::optional<float> nearest;
-                                for (const std::uint32_t i : leaf_primitives(bvh, leaf, count)) {
-                                    if (const std::optional<float> t = visit(i, range)) {
-                                        range.max = *t;
-                                        nearest = t;
-                                    }
-                                }
-                                return nearest;
-                            });
+    std::optional<float> nearest;
+    bvh_closest_leaf(bvh, ray, t_range,
+                     [&](auto, std::uint32_t leaf, std::uint32_t count, Interval& range) {
+                         for (const std::uint32_t i : leaf_primitives(bvh, leaf, count)) {
+                             if (const std::optional<float> t = visit(i, range)) {
+                                 range.max = *t;
+                                 nearest = t;
+                             }
+                         }
+                     });
+    return nearest;
 }
 
 // Any hit over a tree whose leaves are all of primitives, for shadow feelers.
