@@ -56,7 +56,8 @@ void add_render_command(CLI::App& app, glint::cli::RenderCommand& c) {
         ->check(CLI::IsMember(accels));
     render
         ->add_option("--shadow-accel", c.shadow_accel,
-                     "Shadow feelers: none, light-buffer (the default), or light-buffer+cache")
+                     "Shadow feelers: none (the acceleration structure alone, the default), "
+                     "light-buffer, or light-buffer+cache")
         ->check(CLI::IsMember({"none", "light-buffer", "light-buffer+cache"}));
     render->add_option("--stats", c.stats_file, "Also write the render's figures as JSON here");
     render->add_flag("--ppm-ascii", c.ppm_ascii,

@@ -14,7 +14,7 @@ struct RenderCommand {
     int threads = 0;            // 0: all cores
     std::string accel = "bvh";  // an acceleration structure's name (accel_names())
     // Shadow feelers: "none", "light-buffer", or "light-buffer+cache".
-    std::string shadow_accel = "light-buffer";
+    std::string shadow_accel = "none";
     std::uint64_t seed = 0;
     bool quiet = false;
     bool ppm_ascii = false;

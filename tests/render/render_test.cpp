@@ -43,6 +43,25 @@ TEST(Render, EveryAccelerationStructureGivesTheSameImage) {
     }
 }
 
+TEST(Render, ShadowAccelerationDoesNotChangeTheImage) {
+    // Point lights over spheres and a box (the showcase), and over meshes, which light buffers
+    // list whole when small and leave to the structure when large.
+    for (const char* file : {"/scenes/showcase.yaml", "/scenes/features/meshes.yaml"}) {
+        Scene scene = load_yaml_scene(std::string(GLINT_SOURCE_DIR) + file);
+        scene.settings.width = 64;
+        scene.settings.height = 48;
+        scene.settings.samples_per_pixel = 1;
+        const RenderResult reference = render(World(scene), {});
+        for (const ShadowAcceleration shadows :
+             {ShadowAcceleration{true, false}, ShadowAcceleration{true, true}}) {
+            const RenderResult r = render(World(scene, AccelKind::bvh, shadows), {});
+            EXPECT_TRUE(r.image.pixels == reference.image.pixels)
+                << file << (shadows.occluder_cache ? " with" : " without") << " the cache";
+            EXPECT_EQ(r.rays, reference.rays) << file;
+        }
+    }
+}
+
 TEST(Render, CountsOnePrimaryRayPerSample) {
     Scene scene = showcase(20, 10);
     scene.settings.samples_per_pixel = 4;

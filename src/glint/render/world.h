@@ -18,7 +18,9 @@ namespace glint {
 
 // How shadow feelers are sped up beyond the acceleration structure. Neither changes a result.
 struct ShadowAcceleration {
-    bool light_buffer = true;  // a light buffer per point light (Haines and Greenberg 1986)
+    // A light buffer per point light (Haines and Greenberg 1986). Off by default: against the
+    // wide BVH it no longer pays (bench/README.md, docs/acceleration.md).
+    bool light_buffer = false;
     // With a light buffer: test first the primitive that last shadowed from that light
     // (Haines and Greenberg's shadow cache), per thread. Off by default: measured to cost more
     // than it saves once the acceleration structure answers crowded cells (bench/README.md).
