@@ -37,7 +37,11 @@ ProgressWatcher::ProgressWatcher(RenderProgress& progress, bool show)
 }
 
 ProgressWatcher::~ProgressWatcher() {
-    done_ = true;
+    {
+        const std::lock_guard lock(mutex_);
+        done_ = true;
+    }
+    wake_.notify_one();
     thread_.join();
     std::signal(SIGINT, SIG_DFL);
 }
@@ -47,8 +51,12 @@ void ProgressWatcher::run() {
     const auto start = Clock::now();
     int last_reported_tenth = 0;
     bool drew_bar = false;
-    while (!done_) {
-        std::this_thread::sleep_for(std::chrono::milliseconds(100));
+    for (;;) {
+        {
+            std::unique_lock lock(mutex_);
+            if (wake_.wait_for(lock, std::chrono::milliseconds(100), [this] { return done_; }))
+                break;
+        }
         if (g_interrupted) progress_.cancel = true;
         const int total = progress_.tiles_total;
         if (!show_ || total == 0) continue;

@@ -3,6 +3,8 @@
 #pragma once
 
 #include <atomic>
+#include <condition_variable>
+#include <mutex>
 #include <thread>
 
 #include "glint/render/render.h"
@@ -24,7 +26,11 @@ private:
     RenderProgress& progress_;
     bool show_;
     bool terminal_;
-    std::atomic<bool> done_{false};
+    // The watcher waits on this between updates, so that the end of the render wakes it at once
+    // (a plain sleep kept every render waiting for the rest of the interval: up to 0.1 s).
+    std::mutex mutex_;
+    std::condition_variable wake_;
+    bool done_ = false;  // guarded by mutex_
     std::thread thread_;
 };
 

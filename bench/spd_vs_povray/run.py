@@ -39,7 +39,8 @@ sys.dont_write_bytecode = True  # no __pycache__ in the source tree
 import compare  # noqa: E402
 import nff2pov  # noqa: E402
 
-DATA = "/work/shared/data/spd"
+# The shared data beside the repository, as ../shared/data is for the C++ benchmarks.
+DATA = os.path.join(os.path.dirname(REPO), "shared", "data", "spd")
 QUICK = ["jacks", "sombrero", "tetra", "teapot", "balls"]
 LARGE = 100000  # primitives from which --repeat-large applies
 

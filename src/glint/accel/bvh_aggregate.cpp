@@ -139,12 +139,8 @@ std::optional<Hit> BvhAggregate::closest_hit(const Ray& ray, Interval t_range,
                 switch (leaf_kind(leaf)) {
                     case kWideTriangleLeaf:
                         for (const TriangleBlock& block : leaf_blocks(bvh_, leaf, count)) {
-                            const auto lane_visible = [&](int lane) {
-                                return common_visibility_ ||
-                                       visible(reference(block.id[lane]).primitive, ray_mask);
-                            };
-                            const BlockHit hit =
-                                triangles.get().nearest<kSimd>(block, range, lane_visible);
+                            const BlockHit hit = triangles.get().nearest<kSimd>(
+                                block, range, triangle_lane_visible(block, ray_mask));
                             if (!hit) continue;
                             const Reference r = reference(block.id[hit.lane]);
                             consider({{hit.t, hit.u, hit.v, r.triangle}, r.primitive}, range);
@@ -152,11 +148,8 @@ std::optional<Hit> BvhAggregate::closest_hit(const Ray& ray, Interval t_range,
                         return;
                     case kWideSphereLeaf:
                         for (const SphereBlock& block : leaf_sphere_blocks(bvh_, leaf, count)) {
-                            const auto lane_visible = [&](int lane) {
-                                return common_visibility_ || visible(block.id[lane], ray_mask);
-                            };
-                            const BlockHit hit =
-                                spheres.get().nearest<kSimd>(block, range, lane_visible);
+                            const BlockHit hit = spheres.get().nearest<kSimd>(
+                                block, range, sphere_lane_visible(block, ray_mask));
                             if (hit) consider({{hit.t}, block.id[hit.lane]}, range);
                         }
                         return;
@@ -189,19 +182,16 @@ bool BvhAggregate::any_hit(const Ray& ray, Interval t_range, std::uint32_t ray_m
                 switch (leaf_kind(leaf)) {
                     case kWideTriangleLeaf:
                         for (const TriangleBlock& block : leaf_blocks(bvh_, leaf, count)) {
-                            const auto lane_visible = [&](int lane) {
-                                return common_visibility_ ||
-                                       visible(reference(block.id[lane]).primitive, ray_mask);
-                            };
-                            if (triangles.get().any<kSimd>(block, range, lane_visible)) return true;
+                            if (triangles.get().any<kSimd>(block, range,
+                                                           triangle_lane_visible(block, ray_mask)))
+                                return true;
                         }
                         return false;
                     case kWideSphereLeaf:
                         for (const SphereBlock& block : leaf_sphere_blocks(bvh_, leaf, count)) {
-                            const auto lane_visible = [&](int lane) {
-                                return common_visibility_ || visible(block.id[lane], ray_mask);
-                            };
-                            if (spheres.get().any<kSimd>(block, range, lane_visible)) return true;
+                            if (spheres.get().any<kSimd>(block, range,
+                                                         sphere_lane_visible(block, ray_mask)))
+                                return true;
                         }
                         return false;
                     default:

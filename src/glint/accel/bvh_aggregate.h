@@ -37,6 +37,18 @@ private:
     bool visible(std::uint32_t primitive, std::uint32_t ray_mask) const {
         return (primitives_[primitive].visibility & ray_mask) != 0;
     }
+    // Block tests' accept(lane): whether the lane's primitive is seen by rays of ray_mask. Asked
+    // only of lanes a ray hits, and answered at once when every primitive is seen alike.
+    auto triangle_lane_visible(const TriangleBlock& block, std::uint32_t ray_mask) const {
+        return [this, &block, ray_mask](int lane) {
+            return common_visibility_ || visible(reference(block.id[lane]).primitive, ray_mask);
+        };
+    }
+    auto sphere_lane_visible(const SphereBlock& block, std::uint32_t ray_mask) const {
+        return [this, &block, ray_mask](int lane) {
+            return common_visibility_ || visible(block.id[lane], ray_mask);
+        };
+    }
 
     std::span<const Primitive> primitives_;
     // Leaves of blocks (lanes: references) and of whole primitives (primitive indices).

@@ -113,22 +113,16 @@ public:
 #ifdef GLINT_SPHERE_BLOCK_HAS_SIMD
         if constexpr (kSimd) {
             sphere_simd::Float4 t;
-            BlockHit best;
-            for (unsigned lanes = sphere_simd::candidates(b, ray4_, t_range, t); lanes != 0;
-                 lanes &= lanes - 1) {
-                const int k = __builtin_ctz(lanes);
-                if ((!best || t[k] < best.t) && accept(k)) best = BlockHit{t[k], 0, 0, k};
-            }
-            return best;
+            const unsigned lanes = sphere_simd::candidates(b, ray4_, t_range, t);
+            return nearest_lane(
+                lanes,
+                [&](int k) {
+                    return BlockHit{t[k], 0, 0, k};
+                },
+                accept);
         }
 #endif
-        BlockHit best;
-        for (int k = 0; k < 4; ++k) {
-            if (b.id[k] == kNoSphere) continue;
-            const auto hit = b.sphere(k).intersect(ray_, t_range);
-            if (hit && (!best || hit->t < best.t) && accept(k)) best = BlockHit{hit->t, 0, 0, k};
-        }
-        return best;
+        return nearest_lane(used_lanes(b), scalar_hit(b, t_range), accept);
     }
 
     // Whether an accepted lane is hit within t_range.
@@ -137,20 +131,32 @@ public:
 #ifdef GLINT_SPHERE_BLOCK_HAS_SIMD
         if constexpr (kSimd) {
             sphere_simd::Float4 t;
-            for (unsigned lanes = sphere_simd::candidates(b, ray4_, t_range, t); lanes != 0;
-                 lanes &= lanes - 1)
-                if (accept(__builtin_ctz(lanes))) return true;
-            return false;
+            const unsigned lanes = sphere_simd::candidates(b, ray4_, t_range, t);
+            return any_lane(
+                lanes,
+                [&](int k) {
+                    return BlockHit{t[k], 0, 0, k};
+                },
+                accept);
         }
 #endif
-        for (int k = 0; k < 4; ++k) {
-            if (b.id[k] == kNoSphere) continue;
-            if (b.sphere(k).intersect(ray_, t_range) && accept(k)) return true;
-        }
-        return false;
+        return any_lane(used_lanes(b), scalar_hit(b, t_range), accept);
     }
 
 private:
+    static unsigned used_lanes(const SphereBlock& b) {
+        unsigned lanes = 0;
+        for (int k = 0; k < 4; ++k) lanes |= unsigned(b.id[k] != kNoSphere) << k;
+        return lanes;
+    }
+    // Lane k by Sphere::intersect.
+    auto scalar_hit(const SphereBlock& b, Interval t_range) const {
+        return [&b, t_range, this](int k) {
+            const auto hit = b.sphere(k).intersect(ray_, t_range);
+            return hit ? BlockHit{hit->t, 0, 0, k} : BlockHit{};
+        };
+    }
+
     Ray ray_;
 #ifdef GLINT_SPHERE_BLOCK_HAS_SIMD
     sphere_simd::Ray4 ray4_;

@@ -169,24 +169,16 @@ public:
 #ifdef GLINT_TRIANGLE_BLOCK_HAS_SIMD
         if constexpr (kSimd) {
             block_simd::Float4 t, u, v;
-            BlockHit best;
-            for (unsigned lanes = block_simd::candidates(b, ray4_, t_range, t, u, v); lanes != 0;
-                 lanes &= lanes - 1) {
-                const int k = __builtin_ctz(lanes);
-                if ((!best || t[k] < best.t) && accept(k)) best = BlockHit{t[k], u[k], v[k], k};
-            }
-            return best;
+            const unsigned lanes = block_simd::candidates(b, ray4_, t_range, t, u, v);
+            return nearest_lane(
+                lanes,
+                [&](int k) {
+                    return BlockHit{t[k], u[k], v[k], k};
+                },
+                accept);
         }
 #endif
-        BlockHit best;
-        for (int k = 0; k < 4; ++k) {
-            if (b.id[k] == kNoTriangle) continue;
-            const auto hit = intersect_watertight(b.corner(k, 0), b.corner(k, 1), b.corner(k, 2),
-                                                  ray_.ray, ray_.shear, t_range);
-            if (hit && (!best || hit->t < best.t) && accept(k))
-                best = BlockHit{hit->t, hit->u, hit->v, k};
-        }
-        return best;
+        return nearest_lane(used_lanes(b), scalar_hit(b, t_range), accept);
     }
 
     // Whether an accepted lane is hit within t_range.
@@ -196,23 +188,33 @@ public:
 #ifdef GLINT_TRIANGLE_BLOCK_HAS_SIMD
         if constexpr (kSimd) {
             block_simd::Float4 t, u, v;
-            for (unsigned lanes = block_simd::candidates(b, ray4_, t_range, t, u, v); lanes != 0;
-                 lanes &= lanes - 1)
-                if (accept(__builtin_ctz(lanes))) return true;
-            return false;
+            const unsigned lanes = block_simd::candidates(b, ray4_, t_range, t, u, v);
+            return any_lane(
+                lanes,
+                [&](int k) {
+                    return BlockHit{t[k], u[k], v[k], k};
+                },
+                accept);
         }
 #endif
-        for (int k = 0; k < 4; ++k) {
-            if (b.id[k] == kNoTriangle) continue;
-            if (intersect_watertight(b.corner(k, 0), b.corner(k, 1), b.corner(k, 2), ray_.ray,
-                                     ray_.shear, t_range) &&
-                accept(k))
-                return true;
-        }
-        return false;
+        return any_lane(used_lanes(b), scalar_hit(b, t_range), accept);
     }
 
 private:
+    static unsigned used_lanes(const TriangleBlock& b) {
+        unsigned lanes = 0;
+        for (int k = 0; k < 4; ++k) lanes |= unsigned(b.id[k] != kNoTriangle) << k;
+        return lanes;
+    }
+    // Lane k by the scalar watertight test.
+    auto scalar_hit(const TriangleBlock& b, Interval t_range) const {
+        return [&b, t_range, this](int k) {
+            const auto hit = intersect_watertight(b.corner(k, 0), b.corner(k, 1), b.corner(k, 2),
+                                                  ray_.ray, ray_.shear, t_range);
+            return hit ? BlockHit{hit->t, hit->u, hit->v, k} : BlockHit{};
+        };
+    }
+
     BlockRay ray_;
 #ifdef GLINT_TRIANGLE_BLOCK_HAS_SIMD
     block_simd::Ray4 ray4_;

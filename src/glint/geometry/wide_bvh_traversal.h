@@ -140,41 +140,57 @@ template <typename Kernel, typename Visit>
     }
 }
 
+// Either query with one kernel: closest hit (kAny false) or any hit.
+template <typename Kernel, bool kAny, typename Visit>
+[[gnu::always_inline]] inline bool query(const WideBvh& bvh, const Ray& ray, Interval t_range,
+                                         Visit& visit) {
+    if constexpr (kAny) {
+        return any_hit<Kernel>(bvh, ray, t_range, visit);
+    } else {
+        closest_hit<Kernel>(bvh, ray, t_range, visit);
+        return false;
+    }
+}
+
 #ifdef GLINT_WIDE_BVH_HAS_SIMD
 // One instantiation per instruction set: the traversal and the callback inline into these, and
 // take their target's instructions.
-template <typename Visit>
-void closest_hit_sse(const WideBvh& bvh, const Ray& ray, Interval t_range, Visit& visit) {
-    closest_hit<SseKernel>(bvh, ray, t_range, visit);
+template <bool kAny, typename Visit>
+bool query_sse(const WideBvh& bvh, const Ray& ray, Interval t_range, Visit& visit) {
+    return query<SseKernel, kAny>(bvh, ray, t_range, visit);
 }
-template <typename Visit>
-__attribute__((target("avx2"))) void closest_hit_avx2(const WideBvh& bvh, const Ray& ray,
-                                                      Interval t_range, Visit& visit) {
-    closest_hit<Avx2Kernel>(bvh, ray, t_range, visit);
+template <bool kAny, typename Visit>
+__attribute__((target("avx2"))) bool query_avx2(const WideBvh& bvh, const Ray& ray,
+                                                Interval t_range, Visit& visit) {
+    return query<Avx2Kernel, kAny>(bvh, ray, t_range, visit);
 }
 // The AVX2 kernels again, EVEX-encoded: AVX-512's 32 vector registers hold both the node test's
 // ray and a leaf test's without spilling either.
-#define GLINT_AVX512_TARGET __attribute__((target("avx2,avx512f,avx512vl,avx512bw,avx512dq")))
-template <typename Visit>
-GLINT_AVX512_TARGET void closest_hit_avx512(const WideBvh& bvh, const Ray& ray, Interval t_range,
-                                            Visit& visit) {
-    closest_hit<Avx2Kernel>(bvh, ray, t_range, visit);
-}
-template <typename Visit>
-bool any_hit_sse(const WideBvh& bvh, const Ray& ray, Interval t_range, Visit& visit) {
-    return any_hit<SseKernel>(bvh, ray, t_range, visit);
-}
-template <typename Visit>
-__attribute__((target("avx2"))) bool any_hit_avx2(const WideBvh& bvh, const Ray& ray,
-                                                  Interval t_range, Visit& visit) {
-    return any_hit<Avx2Kernel>(bvh, ray, t_range, visit);
-}
-template <typename Visit>
-GLINT_AVX512_TARGET bool any_hit_avx512(const WideBvh& bvh, const Ray& ray, Interval t_range,
-                                        Visit& visit) {
-    return any_hit<Avx2Kernel>(bvh, ray, t_range, visit);
+template <bool kAny, typename Visit>
+__attribute__((target("avx2,avx512f,avx512vl,avx512bw,avx512dq"))) bool query_avx512(
+    const WideBvh& bvh, const Ray& ray, Interval t_range, Visit& visit) {
+    return query<Avx2Kernel, kAny>(bvh, ray, t_range, visit);
 }
 #endif
+
+// The query on the SIMD path in use.
+template <bool kAny, typename Visit>
+bool query_on_path(const WideBvh& bvh, const Ray& ray, Interval t_range, Visit& visit) {
+    if (bvh.nodes.empty()) return false;
+#ifdef GLINT_WIDE_BVH_HAS_SIMD
+    switch (simd_path()) {
+        case SimdPath::avx512:
+            return query_avx512<kAny>(bvh, ray, t_range, visit);
+        case SimdPath::avx2:
+            return query_avx2<kAny>(bvh, ray, t_range, visit);
+        case SimdPath::sse:
+            return query_sse<kAny>(bvh, ray, t_range, visit);
+        case SimdPath::scalar:
+            break;
+    }
+#endif
+    return query<ScalarKernel, kAny>(bvh, ray, t_range, visit);
+}
 
 }  // namespace wide_bvh
 
@@ -186,40 +202,14 @@ GLINT_AVX512_TARGET bool any_hit_avx512(const WideBvh& bvh, const Ray& ray, Inte
 // kSimd). The caller keeps what it found. Allocates nothing.
 template <typename VisitLeaf>
 void bvh_closest_leaf(const WideBvh& bvh, const Ray& ray, Interval t_range, VisitLeaf&& visit) {
-    if (bvh.nodes.empty()) return;
-#ifdef GLINT_WIDE_BVH_HAS_SIMD
-    switch (simd_path()) {
-        case SimdPath::avx512:
-            return wide_bvh::closest_hit_avx512(bvh, ray, t_range, visit);
-        case SimdPath::avx2:
-            return wide_bvh::closest_hit_avx2(bvh, ray, t_range, visit);
-        case SimdPath::sse:
-            return wide_bvh::closest_hit_sse(bvh, ray, t_range, visit);
-        case SimdPath::scalar:
-            break;
-    }
-#endif
-    wide_bvh::closest_hit<wide_bvh::ScalarKernel>(bvh, ray, t_range, visit);
+    wide_bvh::query_on_path<false>(bvh, ray, t_range, visit);
 }
 
 // Any hit, leaf by leaf, for shadow feelers: visit(kernel, leaf, count, Interval) returns whether
 // the leaf holds a hit within the interval; traversal stops at the first that does.
 template <typename VisitLeaf>
 bool bvh_any_leaf(const WideBvh& bvh, const Ray& ray, Interval t_range, VisitLeaf&& visit) {
-    if (bvh.nodes.empty()) return false;
-#ifdef GLINT_WIDE_BVH_HAS_SIMD
-    switch (simd_path()) {
-        case SimdPath::avx512:
-            return wide_bvh::any_hit_avx512(bvh, ray, t_range, visit);
-        case SimdPath::avx2:
-            return wide_bvh::any_hit_avx2(bvh, ray, t_range, visit);
-        case SimdPath::sse:
-            return wide_bvh::any_hit_sse(bvh, ray, t_range, visit);
-        case SimdPath::scalar:
-            break;
-    }
-#endif
-    return wide_bvh::any_hit<wide_bvh::ScalarKernel>(bvh, ray, t_range, visit);
+    return wide_bvh::query_on_path<true>(bvh, ray, t_range, visit);
 }
 
 // What a leaf holds (kWidePrimitiveLeaf, kWideTriangleLeaf or kWideSphereLeaf).

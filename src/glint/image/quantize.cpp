@@ -1,6 +1,8 @@
 // The shared quantiser of the 8-bit writers, so PNG and PPM of one image hold the same bytes.
 #include "glint/image/quantize.h"
 
+#include <tbb/parallel_for.h>
+
 #include <algorithm>
 #include <cmath>
 
@@ -32,16 +34,18 @@ std::uint8_t quantize_srgb8(float linear, int x, int y, int channel) {
 }
 
 std::vector<std::uint8_t> quantize_srgb8(const Image& image) {
-    std::vector<std::uint8_t> bytes;
-    bytes.reserve(image.pixels.size() * 3);
-    for (int y = 0; y < image.height; ++y) {
+    std::vector<std::uint8_t> bytes(image.pixels.size() * 3);
+    // Rows in parallel: each byte depends on its value and place alone, so the bytes are the same
+    // for any number of threads.
+    tbb::parallel_for(0, image.height, [&](int y) {
+        std::uint8_t* row = bytes.data() + std::size_t(y) * std::size_t(image.width) * 3;
         for (int x = 0; x < image.width; ++x) {
             const Color& c = image.at(x, y);
-            bytes.push_back(quantize_srgb8(c.r, x, y, 0));
-            bytes.push_back(quantize_srgb8(c.g, x, y, 1));
-            bytes.push_back(quantize_srgb8(c.b, x, y, 2));
+            row[3 * x] = quantize_srgb8(c.r, x, y, 0);
+            row[3 * x + 1] = quantize_srgb8(c.g, x, y, 1);
+            row[3 * x + 2] = quantize_srgb8(c.b, x, y, 2);
         }
-    }
+    });
     return bytes;
 }
 
