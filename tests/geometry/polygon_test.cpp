@@ -331,6 +331,38 @@ TEST(Polygon, GearOf144VerticesMatchesBruteForce) {
     }
 }
 
+TEST(Polygon, BandedCrossingCountEqualsTheFullCount) {
+    // The gear, and random outlines of many vertices (self-intersecting ones included), at
+    // random points and at points level with vertices and with the bands' boundaries.
+    std::mt19937 rng(9);
+    std::uniform_real_distribution<float> u(-1, 1);
+    std::vector<std::vector<Point2>> outlines{gear(0.9f, 1)};
+    for (int k = 0; k < 20; ++k) {
+        std::vector<Point2> random(16 + 10 * k);
+        for (Point2& p : random) p = {u(rng), u(rng)};
+        outlines.push_back(random);
+    }
+    for (const auto& outline : outlines) {
+        const Polygon polygon = polygon_of(in_plane_z(outline));
+        ASSERT_FALSE(polygon.bands.start.empty()) << outline.size() << " vertices";
+        std::vector<double> ys;
+        for (const Point2 p : outline) ys.push_back(p.y);
+        const EdgeBands& b = polygon.bands;
+        for (std::size_t k = 0; k + 1 < b.start.size(); ++k)
+            ys.push_back(b.v_min + double(k) / b.scale);
+        for (int i = 0; i < 2000; ++i) ys.push_back(u(rng) * 1.1);
+        for (std::size_t j = 0; j < ys.size(); ++j) {
+            const double y = ys[j];
+            // Anywhere, and level with a vertex on both axes (points on vertices and edges).
+            for (const double x : {double(u(rng)), double(outline[j % outline.size()].x)}) {
+                ASSERT_EQ(crossing_count(polygon.projected, b, x, y),
+                          crossing_count(polygon.projected, x, y))
+                    << outline.size() << " vertices at (" << x << ", " << y << ")";
+            }
+        }
+    }
+}
+
 TEST(Polygon, BadVerticesGiveAMessage) {
     const auto message = [](std::vector<Point3> v) {
         auto result = make_polygon(std::move(v));

@@ -121,26 +121,73 @@ Vector3 newell_normal(std::span<const Point3> vertices) {
 // and a point exactly on an edge's line is on the side of it that q* is. For an edge a -> b
 // through q that side is the sign of e * (b - a).y - e' * (b - a).x, which is the sign of
 // (b - a).y on every edge where it matters (those that cross the line y = q.y).
+namespace {
+
+// Whether the edge a -> b (relative to q) crosses the line through q towards +x, as q* sees it.
+bool crosses(double ax, double ay, double bx, double by) {
+    if ((ay >= 0) == (by >= 0)) return false;
+    // The edge crosses the line y = q.y. It does so right of q* when both ends are right of it;
+    // left when both are left; otherwise when q* is left of the upward edge.
+    if (ax >= 0 && bx >= 0) return true;
+    if (ax < 0 && bx < 0) return false;
+    const double c = by >= 0 ? cross(ax, ay, bx, by) : cross(bx, by, ax, ay);
+    return c >= 0;  // 0: q is on the edge, and q* left of it
+}
+
+}  // namespace
+
 int crossing_count(std::span<const Point2> outline, double x, double y) {
     if (outline.empty()) return 0;
     int count = 0;
     double ax = outline.back().x - x, ay = outline.back().y - y;
     for (const Point2& b : outline) {
         const double bx = b.x - x, by = b.y - y;
-        if ((ay >= 0) != (by >= 0)) {
-            // The edge crosses the line y = q.y. It does so right of q* when both ends are right
-            // of it; left when both are left; otherwise when q* is left of the upward edge.
-            if (ax >= 0 && bx >= 0) {
-                ++count;
-            } else if (ax >= 0 || bx >= 0) {
-                const double c = by >= 0 ? cross(ax, ay, bx, by) : cross(bx, by, ax, ay);
-                if (c >= 0) ++count;  // 0: q is on the edge, and q* left of it
-            }
-        }
+        count += crosses(ax, ay, bx, by);
         ax = bx, ay = by;
     }
     return count;
 }
+
+int crossing_count(std::span<const Point2> outline, const EdgeBands& bands, double x, double y) {
+    const int band = bands.band_of(y);
+    const std::size_t n = outline.size();
+    int count = 0;
+    for (std::uint32_t k = bands.start[std::size_t(band)]; k < bands.start[std::size_t(band) + 1];
+         ++k) {
+        const std::size_t i = bands.edges[k];
+        const Point2 a = outline[(i + n - 1) % n], b = outline[i];
+        count += crosses(a.x - x, a.y - y, b.x - x, b.y - y);
+    }
+    return count;
+}
+
+namespace {
+
+EdgeBands edge_bands(std::span<const Point2> outline, Point2 min, Point2 max) {
+    EdgeBands bands;
+    const std::size_t n = outline.size();
+    if (n < kBandedOutline || !(max.y > min.y)) return bands;
+    const auto count = int(std::clamp<std::size_t>(n / 4, 4, 64));
+    bands.v_min = min.y;
+    bands.scale = count / (double(max.y) - min.y);
+    bands.start.assign(std::size_t(count) + 1, 0);
+    // Count, then fill: an edge is listed in every band its closed v-range reaches, found with
+    // band_of itself, so that the band of any v in the range lists it.
+    const auto reach = [&](std::size_t i, auto&& visit) {
+        const double ay = outline[(i + n - 1) % n].y, by = outline[i].y;
+        for (int b = bands.band_of(std::min(ay, by)); b <= bands.band_of(std::max(ay, by)); ++b)
+            visit(std::size_t(b));
+    };
+    for (std::size_t i = 0; i < n; ++i) reach(i, [&](std::size_t b) { ++bands.start[b + 1]; });
+    for (std::size_t b = 0; b < std::size_t(count); ++b) bands.start[b + 1] += bands.start[b];
+    bands.edges.resize(bands.start.back());
+    std::vector<std::uint32_t> next(bands.start.begin(), bands.start.end() - 1);
+    for (std::size_t i = 0; i < n; ++i)
+        reach(i, [&](std::size_t b) { bands.edges[next[b]++] = std::uint32_t(i); });
+    return bands;
+}
+
+}  // namespace
 
 int winding_number(std::span<const Point2> outline, double x, double y) {
     if (outline.empty()) return 0;
@@ -241,6 +288,7 @@ std::variant<Polygon, std::string> make_polygon(std::vector<Point3> vertices, In
         polygon.projected_max = {std::max(polygon.projected_max.x, q.x),
                                  std::max(polygon.projected_max.y, q.y)};
     }
+    polygon.bands = edge_bands(polygon.projected, polygon.projected_min, polygon.projected_max);
     polygon.vertices = std::move(vertices);
     return polygon;
 }
@@ -267,7 +315,10 @@ std::optional<ShapeHit> Polygon::intersect(const Ray& ray, Interval t_range) con
           v <= projected_max.y)) {
         return std::nullopt;
     }
-    if (!inside_outline(projected, u, v, inside_test)) return std::nullopt;
+    const bool inside = inside_test == InsideTest::even_odd && !bands.start.empty()
+                            ? crossing_count(projected, bands, u, v) % 2 == 1
+                            : inside_outline(projected, u, v, inside_test);
+    if (!inside) return std::nullopt;
     return ShapeHit{float(t)};
 }
 

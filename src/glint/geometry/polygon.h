@@ -2,6 +2,7 @@
 // tests of the lecture notes: the even-odd crossing count and the arc-length (angle-sum) method.
 #pragma once
 
+#include <cstdint>
 #include <optional>
 #include <span>
 #include <string>
@@ -26,6 +27,25 @@ enum class InsideTest {
     angle_sum,
 };
 
+// For outlines of many edges: which edges reach each horizontal band of the outline's bounds.
+// Only an edge whose v-range holds the point's v can cross the horizontal line through it, so the
+// crossing count over the edges of the point's band is the count over all of them, exactly.
+struct EdgeBands {
+    double v_min = 0, scale = 0;       // band of v: floor((v - v_min) * scale), clamped
+    std::vector<std::uint32_t> start;  // bands + 1 offsets into edges; empty: no bands
+    std::vector<std::uint32_t> edges;  // edge i runs from projected[i - 1] (cyclically) to [i]
+
+    int band_of(double v) const {
+        const double f = (v - v_min) * scale;
+        const int last = int(start.size()) - 2;
+        if (!(f > 0)) return 0;  // NaN too
+        return f < double(last) ? int(f) : last;
+    }
+};
+
+// Outlines of at least this many vertices get EdgeBands (the gears' 144-gons).
+inline constexpr std::size_t kBandedOutline = 16;
+
 struct Polygon {
     // Build with make_polygon(); the fields after inside_test are precomputed for intersection.
     std::vector<Point3> vertices;  // as given, in order; the last joins the first
@@ -42,6 +62,7 @@ struct Polygon {
     int axis_u = 0, axis_v = 1;
     std::vector<Point2> projected;        // (vertices[i][axis_u], vertices[i][axis_v])
     Point2 projected_min, projected_max;  // bounds of `projected`, for a quick rejection
+    EdgeBands bands;                      // of `projected`, for large outlines
 
     Bounds3 bounds() const;
     // The notes' plane step t = -(D + N.P0) / (N.R), then the inside test on the projected hit
@@ -87,6 +108,8 @@ Vector3 newell_normal(std::span<const Point3> vertices);
 // The number of edges a ray from the point towards +x crosses (Haines, "Point in Polygon
 // Strategies", Graphics Gems IV, the crossings test).
 int crossing_count(std::span<const Point2> outline, double x, double y);
+// The same count over the edges of the band that holds y: equal to crossing_count's.
+int crossing_count(std::span<const Point2> outline, const EdgeBands& bands, double x, double y);
 // The winding number by the arc-length method: each edge turns the vertex-minus-point vector
 // through the quadrants of the notes' sign-pair table (0, +-pi/2, or +-pi decided by the edge's
 // side of the point); the total is 2 pi times the winding number.
