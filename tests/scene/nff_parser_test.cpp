@@ -319,6 +319,59 @@ TEST(NffParser, MangledInputGivesSceneErrorsOnly) {
     EXPECT_GT(errors, 1000);
 }
 
+// dump() and where each entity starts.
+std::string dump_with_locations(const NffScene& scene) {
+    std::ostringstream out;
+    const auto at = [&](NffLocation l) { out << l.line << ':' << l.column << ' '; };
+    if (scene.view) at(scene.view->location);
+    for (const NffLight& l : scene.lights) at(l.location);
+    for (const NffMaterial& m : scene.materials) at(m.location);
+    for (const NffObject& o : scene.objects) at(o.location);
+    return dump(scene) + out.str();
+}
+
+// What parse_nff makes of text read in pieces of piece_bytes: the scene, or the error.
+std::string parse_in_pieces_of(const std::string& text, std::size_t piece_bytes) {
+    try {
+        return dump_with_locations(parse_nff(text, "t.nff", piece_bytes));
+    } catch (const SceneError& e) {
+        return "error " + std::to_string(e.location().line) + ":" +
+               std::to_string(e.location().column) + " " + e.message();
+    }
+}
+
+TEST(NffParser, PiecesReadInParallelGiveWhatOneParserGives) {
+    std::ifstream in(kJacks, std::ios::binary);
+    const std::string jacks((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    // Materials changing between pieces, objects inheriting them, comments, and lines that
+    // start with a keyword inside a view.
+    std::string text = jacks + "# p 3 in a comment\nf 1 0 0 1 0 0 0 0\n";
+    for (int i = 0; i < 200; ++i) {
+        text += "s " + std::to_string(i) + " 0 0 1\n";
+        if (i % 7 == 0) text += "f 0 " + std::to_string(i) + " 1 1 0 0 0 0\n";
+        if (i % 5 == 0) text += "p 3\n0 0 0\n1 0 0\n0 1 " + std::to_string(i) + "\n";
+        if (i % 11 == 0) text += "c 0 0 0 1\n  0 " + std::to_string(i + 1) + " 0 1\n";
+    }
+    const std::string whole = parse_in_pieces_of(text, kNffPieceBytes);
+    EXPECT_EQ(whole.find("error"), std::string::npos) << whole;
+    for (const std::size_t piece : {1, 16, 64, 200, 1000}) {
+        EXPECT_EQ(parse_in_pieces_of(text, piece), whole) << piece;
+    }
+    // Errors in any piece are those of one parser; so are objects before any material.
+    std::mt19937 rng(99);
+    const std::string alphabet = "0123456789 \n\t-.epcsfvb";
+    for (int i = 0; i < 300; ++i) {
+        std::string mangled = text;
+        for (int k = 0; k < 3; ++k) {
+            mangled[rng() % mangled.size()] = alphabet[rng() % alphabet.size()];
+        }
+        if (i % 10 == 0) mangled.erase(0, jacks.size());
+        ASSERT_EQ(parse_in_pieces_of(mangled, 1 + rng() % 300),
+                  parse_in_pieces_of(mangled, kNffPieceBytes))
+            << mangled;
+    }
+}
+
 // Malformed files in tests/scene/bad_nff/, one error each, stated in the file's first line as
 // `# error: LINE:COL: MESSAGE` (0:0 for an error without a location), with `# note: TEXT` lines
 // after it for text that one of the error's notes must contain. Each file is loaded as a

@@ -1,5 +1,5 @@
 // NFF to Scene: what the conversion makes of the format's conventions that the parser keeps, here
-// the inside-only spheres and cones of negative radii.
+// the inside-only spheres and cones of negative radii, and materials the file repeats.
 #include "glint/scene/nff/nff_to_scene.h"
 
 #include <gtest/gtest.h>
@@ -50,6 +50,28 @@ TEST(NffToScene, NegativeRadiiGiveInsideOnlyShapesDrawnTwoSidedWithAWarning) {
               "two-sided)");
     EXPECT_TRUE(
         nff_to_scene(parse_nff(std::string(kView) + "s 0 0 0 1\n", "a.nff")).warnings.empty());
+}
+
+TEST(NffToScene, RepeatedMaterialsBecomeOne) {
+    // f1 and f3 are equal, f2 differs in its Ks; the triangles go into one mesh per material.
+    const NffScene nff = parse_nff(std::string(kView) +
+                                       "s 0 0 0 1\n"
+                                       "f 1 0.5 0.5 0.7 0.4 10 0 0\ns 2 0 0 1\n"
+                                       "f 1 0.5 0.5 0.7 0.3 10 0 0\ns 4 0 0 1\n"
+                                       "p 3 0 0 0 1 0 0 0 1 0\n",
+                                   "repeat.nff");
+    ASSERT_EQ(nff.materials.size(), 3u);
+    const Scene scene = nff_to_scene(nff);
+    ASSERT_EQ(scene.materials.size(), 2u);
+    EXPECT_EQ(scene.materials[0].name, "f1");
+    EXPECT_EQ(scene.materials[1].name, "f2");
+    EXPECT_EQ(scene.materials[1].reflect, 0.4f);
+    ASSERT_EQ(scene.objects.size(), 4u);
+    EXPECT_EQ(scene.objects[0].material, 0u);
+    EXPECT_EQ(scene.objects[1].material, 1u);
+    EXPECT_EQ(scene.objects[2].material, 0u);
+    EXPECT_TRUE(std::holds_alternative<TriangleMesh>(scene.objects[3].shape));
+    EXPECT_EQ(scene.objects[3].material, 0u);
 }
 
 }  // namespace

@@ -4,8 +4,14 @@
 
 #include <gtest/gtest.h>
 
+#include <bit>
+#include <charconv>
 #include <cmath>
+#include <cstdint>
 #include <limits>
+#include <random>
+#include <string>
+#include <vector>
 
 namespace glint {
 namespace {
@@ -53,6 +59,35 @@ TEST(NffTokenizer, NumbersInEveryFormOfPercentG) {
     EXPECT_EQ(tokens.number(kSphere, f), 100);
     EXPECT_EQ(tokens.number(kSphere, f), std::numeric_limits<float>::max());
     EXPECT_EQ(tokens.number(kSphere, f), 0);  // underflow rounds to zero, as strtof does
+}
+
+// The tokenizer reads plain decimals without std::from_chars (Clinger's fast path); it must
+// give the same float, bit for bit, at the edges of that path too.
+TEST(NffTokenizer, PlainDecimalsReadAsFromCharsReadsThem) {
+    std::mt19937 random(7);
+    std::vector<std::string> texts = {"16777216",  "16777217",     "-16777215",   "0.16777216",
+                                      "1.6777217", "0.0000000001", "1234567.891", "9.999999",
+                                      "0.1",       "-0.3",         "100000",      "00000000012.5",
+                                      "2.",        "-.75"};
+    for (int i = 0; i < 20000; ++i) {
+        std::string text = std::uniform_int_distribution<int>(0, 1)(random) ? "-" : "";
+        const int digits = std::uniform_int_distribution<int>(1, 10)(random);
+        const int point = std::uniform_int_distribution<int>(0, digits)(random);
+        for (int d = 0; d < digits; ++d) {
+            if (d == point) text += '.';
+            text += char('0' + std::uniform_int_distribution<int>(0, 9)(random));
+        }
+        texts.push_back(text);
+    }
+    for (const std::string& text : texts) {
+        NffTokenizer tokens(text, "t.nff");
+        float expected = 0;
+        const char* first = text.data() + (text[0] == '+' ? 1 : 0);
+        std::from_chars(first, text.data() + text.size(), expected);
+        const float read = tokens.number(kSphere, {"radius"});
+        EXPECT_EQ(std::bit_cast<std::uint32_t>(read), std::bit_cast<std::uint32_t>(expected))
+            << text;
+    }
 }
 
 std::string number_error(std::string_view text) {

@@ -243,6 +243,7 @@ std::optional<PolygonProblem> polygon_problem(std::span<const Point3> vertices) 
             "both ways and cancel)",
             {}};
     }
+    if (vertices.size() == 3) return std::nullopt;  // three points are always coplanar
 
     const Vec3d c = centroid(vertices);
     std::size_t worst = 0;

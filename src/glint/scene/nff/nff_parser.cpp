@@ -1,12 +1,17 @@
 // The NFF parser: a loop over entity keywords, each entity read as a run of tokens and checked
 // value by value, so that an error points at the token that is wrong. Sizes are bounded before
-// memory is taken for them.
+// memory is taken for them. Large files are read in pieces on all threads.
 #include "glint/scene/nff/nff_parser.h"
 
+#include <tbb/parallel_for.h>
+
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <new>
+#include <optional>
 #include <utility>
+#include <vector>
 
 #include "glint/geometry/polygon.h"
 #include "glint/scene/gzip_file.h"
@@ -42,12 +47,19 @@ std::string line_note(std::string_view what, const NffToken& token) {
     return std::string(what) + " is at line " + std::to_string(token.line);
 }
 
+// The material of objects that a piece of a file (parse_in_pieces) reads before its first "f":
+// the last one of the pieces before it.
+constexpr std::uint32_t kInheritedMaterial = 0xffffffffu;
+
 class NffParser {
 public:
-    NffParser(std::string_view text, const std::string& file_name) : tokens_(text, file_name) {
+    // A parser of a piece after the first gives the objects before its first "f" the material
+    // kInheritedMaterial rather than calling them an error.
+    NffParser(std::string_view text, const std::string& file_name, bool inherits_material = false)
+        : tokens_(text, file_name), inherits_material_(inherits_material) {
         scene_.file_name = file_name;
-        // About one object per 100 bytes in the SPD files; the vector grows if there are more.
-        scene_.objects.reserve(text.size() / 128);
+        // The SPD's files take 10 to 100 bytes per object; the vector grows if there are more.
+        scene_.objects.reserve(text.size() / 64);
     }
 
     NffScene parse() {
@@ -102,6 +114,7 @@ private:
     }
 
     std::uint32_t object_material(const NffEntity& e) const {
+        if (scene_.materials.empty() && inherits_material_) return kInheritedMaterial;
         if (scene_.materials.empty()) {
             throw tokens_.error_at(
                 e.keyword,
@@ -332,16 +345,119 @@ private:
     }
 
     NffTokenizer tokens_;
+    bool inherits_material_;
     NffScene scene_;
     NffToken previous_;                    // the last entity's keyword
     std::optional<NffToken> background_;   // the `b` keyword, once seen
     std::vector<NffToken> vertex_tokens_;  // where each vertex of the current polygon starts
 };
 
+// Where a piece may start: the beginning of a line whose first token is the keyword of an object
+// or a material. All their values are numbers, so in a valid file such a token starts an entity.
+bool starts_piece(std::string_view text, std::size_t line_start) {
+    for (const std::string_view k : {"s ", "p ", "pp ", "c ", "f ", "s\t", "p\t", "c\t", "f\t"}) {
+        if (text.substr(line_start, k.size()) == k) return true;
+    }
+    return false;
+}
+
+// Piece boundaries near every piece_bytes, each at a piece start (or the end of the text).
+std::vector<std::size_t> piece_starts(std::string_view text, std::size_t piece_bytes) {
+    std::vector<std::size_t> starts{0};
+    for (std::size_t at = piece_bytes; at < text.size(); at += piece_bytes) {
+        std::size_t newline = text.find('\n', std::max(at, starts.back() + 1) - 1);
+        while (newline != std::string_view::npos && !starts_piece(text, newline + 1))
+            newline = text.find('\n', newline + 1);
+        if (newline == std::string_view::npos) break;
+        starts.push_back(newline + 1);
+        at = newline + 1;
+    }
+    return starts;
+}
+
+void shift(NffLocation& location, std::uint32_t lines) { location.line += lines; }
+
+// Parses the text in pieces on all threads and joins them: the same NffScene as one parser gives,
+// for a valid file. Anything a piece cannot settle alone (an error, an object before any
+// material, a second view or background) returns nullopt, and the one parser reads the whole
+// file to say what is wrong where.
+std::optional<NffScene> parse_in_pieces(std::string_view text, const std::string& file_name,
+                                        std::size_t piece_bytes) {
+    const std::vector<std::size_t> starts = piece_starts(text, piece_bytes);
+    const std::size_t n = starts.size();
+    if (n < 2) return std::nullopt;
+    std::vector<NffScene> pieces(n);
+    std::vector<std::uint32_t> newlines(n);
+    std::atomic<bool> failed = false;
+    tbb::parallel_for(std::size_t(0), n, [&](std::size_t k) {
+        const std::size_t end = k + 1 < n ? starts[k + 1] : text.size();
+        const std::string_view piece = text.substr(starts[k], end - starts[k]);
+        try {
+            pieces[k] = NffParser(piece, file_name, k > 0).parse();
+        } catch (const SceneError&) {
+            failed = true;
+        } catch (const std::bad_alloc&) {
+            failed = true;
+        }
+        newlines[k] = std::uint32_t(std::count(piece.begin(), piece.end(), '\n'));
+    });
+    if (failed) return std::nullopt;
+
+    NffScene scene;
+    scene.file_name = file_name;
+    std::uint32_t line_offset = 0;
+    std::size_t objects = 0;
+    for (std::size_t k = 0; k < n; ++k) {
+        NffScene& piece = pieces[k];
+        if ((piece.view && scene.view) || (piece.background && scene.background))
+            return std::nullopt;
+        if (piece.view) {
+            scene.view = piece.view;
+            shift(scene.view->location, line_offset);
+        }
+        if (piece.background) scene.background = piece.background;
+        for (NffLight& l : piece.lights) {
+            shift(l.location, line_offset);
+            scene.lights.push_back(l);
+        }
+        // The piece's own materials follow those of the pieces before it.
+        const auto first_material = std::uint32_t(scene.materials.size());
+        for (NffObject& o : piece.objects) {
+            if (o.material == kInheritedMaterial) {
+                if (first_material == 0) return std::nullopt;
+                o.material = first_material - 1;
+            } else {
+                o.material += first_material;
+            }
+            shift(o.location, line_offset);
+        }
+        for (NffMaterial& m : piece.materials) {
+            shift(m.location, line_offset);
+            scene.materials.push_back(m);
+        }
+        objects += piece.objects.size();
+        line_offset += newlines[k];
+    }
+    scene.objects.resize(objects);
+    std::vector<std::size_t> first_object(n, 0);
+    for (std::size_t k = 1; k < n; ++k)
+        first_object[k] = first_object[k - 1] + pieces[k - 1].objects.size();
+    tbb::parallel_for(std::size_t(0), n, [&](std::size_t k) {
+        std::move(pieces[k].objects.begin(), pieces[k].objects.end(),
+                  scene.objects.begin() + std::ptrdiff_t(first_object[k]));
+        pieces[k].objects = {};
+    });
+    return scene;
+}
+
 }  // namespace
 
-NffScene parse_nff(std::string_view text, const std::string& file_name) {
+NffScene parse_nff(std::string_view text, const std::string& file_name, std::size_t piece_bytes) {
     try {
+        if (text.size() > piece_bytes) {
+            if (auto scene = parse_in_pieces(text, file_name, piece_bytes))
+                return std::move(*scene);
+        }
         return NffParser(text, file_name).parse();
     } catch (const SceneError&) {
         throw;

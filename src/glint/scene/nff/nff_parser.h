@@ -15,6 +15,8 @@ namespace glint {
 // Larger files, or gzipped files that inflate to more, are refused before they fill memory. The
 // SPD's largest file is 92 MB; the next size factors up would be 190 to 370 MB.
 inline constexpr std::uint64_t kMaxNffFileBytes = std::uint64_t(1) << 30;
+// Pieces of text that parse_nff reads in parallel.
+inline constexpr std::size_t kNffPieceBytes = std::size_t(1) << 22;
 // A polygon of more vertices is refused before memory is taken for them.
 inline constexpr std::int64_t kMaxNffPolygonVertices = 1'000'000;
 
@@ -23,7 +25,10 @@ inline constexpr std::int64_t kMaxNffPolygonVertices = 1'000'000;
 // writes a cone's 8 numbers on its `c` line, the spec on two lines after it). Every value is
 // checked: a malformed file gives a SceneError at the offending token. A file without a view
 // parses; require_view() says what is missing. Throws SceneError only.
-NffScene parse_nff(std::string_view text, const std::string& file_name);
+// Text longer than piece_bytes is read in pieces of about that size in parallel, with the same
+// result, errors included (a file with an error is read again in one piece to report it).
+NffScene parse_nff(std::string_view text, const std::string& file_name,
+                   std::size_t piece_bytes = kNffPieceBytes);
 
 // Reads a .nff file, or a gzip-compressed one (.nff.gz, recognised by its content), of at most
 // max_bytes once decompressed, and parses it. Throws SceneError only.

@@ -4,6 +4,7 @@
 // compact and get a BVH of their own.
 #include "glint/scene/nff/nff_to_scene.h"
 
+#include <array>
 #include <cmath>
 #include <map>
 #include <optional>
@@ -47,6 +48,15 @@ Material to_material(const NffMaterial& f, std::size_t index) {
 // Triangles collected per (material, with normals or not), then built into meshes.
 class MeshCollector {
 public:
+    // Room for the triangles that add() will be given, counted beforehand: a million of them
+    // then fill their arrays without copying them as they grow.
+    void reserve(std::uint32_t material, bool with_normals, std::size_t triangles) {
+        MeshData& mesh = meshes_[{material, with_normals}];
+        mesh.positions.reserve(mesh.positions.size() + 3 * triangles);
+        if (with_normals) mesh.normals.reserve(mesh.normals.size() + 3 * triangles);
+        mesh.triangles.reserve(mesh.triangles.size() + triangles);
+    }
+
     void add(std::uint32_t material, const Point3* p, const Normal3* n) {
         MeshData& mesh = meshes_[{material, n != nullptr}];
         const auto base = static_cast<std::uint32_t>(mesh.positions.size());
@@ -176,13 +186,39 @@ Scene nff_to_scene(const NffScene& nff) {
     }
     scene.ambient = Color::gray(intensity);
 
+    // The SPD repeats an "f" line before most objects (the lattice writes 270,641 of them, of
+    // four materials): equal ones become one material, named after the first.
+    std::vector<std::uint32_t> material_of(nff.materials.size());
+    std::map<std::array<float, 8>, std::uint32_t> seen;
     for (std::size_t i = 0; i < nff.materials.size(); ++i) {
-        scene.materials.push_back(to_material(nff.materials[i], i));
+        const NffMaterial& f = nff.materials[i];
+        const std::array<float, 8> key{f.color.r, f.color.g, f.color.b,       f.kd,
+                                       f.ks,      f.shine,   f.transmittance, f.ior};
+        const auto [at, added] = seen.try_emplace(key, std::uint32_t(scene.materials.size()));
+        if (added) scene.materials.push_back(to_material(f, i));
+        material_of[i] = at->second;
     }
     MeshCollector triangles;
+    std::map<std::pair<std::uint32_t, bool>, std::size_t> triangle_counts;
+    std::size_t shapes = 0;
+    for (const NffObject& object : nff.objects) {
+        const auto* p = std::get_if<NffPolygon>(&object.primitive);
+        const auto* patch = std::get_if<NffPatch>(&object.primitive);
+        if (p && p->vertices.size() == 3) {
+            ++triangle_counts[{material_of[object.material], false}];
+        } else if (patch) {
+            triangle_counts[{material_of[object.material], true}] += patch->vertices.size() - 2;
+        } else {
+            ++shapes;
+        }
+    }
+    for (const auto& [key, count] : triangle_counts)
+        triangles.reserve(key.first, key.second, count);
+    scene.objects.reserve(shapes);
     InsideOnly inside_only;
     for (const NffObject& object : nff.objects) {
-        std::visit(ToShapes{object.material, scene.objects, triangles}, object.primitive);
+        std::visit(ToShapes{material_of[object.material], scene.objects, triangles},
+                   object.primitive);
         inside_only.count(object);
     }
     triangles.emit(scene.objects, scene.warnings);

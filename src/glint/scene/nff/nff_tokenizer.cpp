@@ -3,10 +3,13 @@
 // exact, locale-free and fast enough for files of hundreds of megabytes.
 #include "glint/scene/nff/nff_tokenizer.h"
 
+#include <algorithm>
+#include <array>
 #include <charconv>
 #include <cmath>
 #include <cstring>
 #include <limits>
+#include <optional>
 
 namespace glint {
 
@@ -15,8 +18,50 @@ namespace {
 // Longer lines are not quoted whole in errors: a minified file can be one line of megabytes.
 constexpr std::size_t kMaxQuotedLine = 4096;
 
-bool is_space(char c) {
-    return c == ' ' || c == '\t' || c == '\r' || c == '\n' || c == '\f' || c == '\v';
+// Each byte's class, looked up once rather than compared with six spaces: the loops below see
+// every byte of files of hundreds of megabytes.
+enum ByteClass : unsigned char { kTokenByte, kSpace, kNewline, kCommentStart };
+
+constexpr std::array<ByteClass, 256> kByteClass = [] {
+    std::array<ByteClass, 256> classes{};
+    for (const char c : {' ', '\t', '\r', '\f', '\v'})
+        classes[static_cast<unsigned char>(c)] = kSpace;
+    classes['\n'] = kNewline;
+    classes['#'] = kCommentStart;
+    return classes;
+}();
+
+ByteClass class_of(char c) { return kByteClass[static_cast<unsigned char>(c)]; }
+
+// Clinger's fast path: a plain decimal ("-0.996094") whose digits, read as a whole number,
+// are at most 2^24, with at most 10 of them after the point, is that whole number divided by a
+// power of ten: both exact in a float, so the one division rounds correctly and gives the float
+// std::from_chars gives. Anything else (exponents, long mantissas, errors) returns nullopt.
+std::optional<float> plain_decimal(std::string_view text) {
+    constexpr std::uint32_t kExactInFloat = std::uint32_t(1) << 24;
+    constexpr float kPowersOfTen[] = {1e0f, 1e1f, 1e2f, 1e3f, 1e4f, 1e5f,
+                                      1e6f, 1e7f, 1e8f, 1e9f, 1e10f};
+    std::size_t i = 0;
+    const bool negative = !text.empty() && text[0] == '-';
+    if (!text.empty() && (text[0] == '-' || text[0] == '+')) i = 1;
+    std::uint32_t digits = 0;
+    int count = 0, after_point = -1;  // -1 until the point is seen
+    for (; i < text.size(); ++i) {
+        const char c = text[i];
+        if (c >= '0' && c <= '9') {
+            digits = digits * 10 + std::uint32_t(c - '0');
+            if (digits > kExactInFloat) return std::nullopt;
+            ++count;
+            if (after_point >= 0) ++after_point;
+        } else if (c == '.' && after_point < 0) {
+            after_point = 0;
+        } else {
+            return std::nullopt;
+        }
+    }
+    if (count == 0 || after_point > 10) return std::nullopt;
+    const float value = float(digits) / kPowersOfTen[std::max(after_point, 0)];
+    return negative ? -value : value;
 }
 
 // std::from_chars rejects the leading '+' that C's strtod accepts.
@@ -39,14 +84,14 @@ NffTokenizer::NffTokenizer(std::string_view text, std::string file_name)
 
 void NffTokenizer::skip_space() {
     while (pos_ < text_.size()) {
-        const char c = text_[pos_];
-        if (c == '\n') {
+        const ByteClass c = class_of(text_[pos_]);
+        if (c == kNewline) {
             ++pos_;
             ++line_;
             line_start_ = pos_;
-        } else if (is_space(c)) {
+        } else if (c == kSpace) {
             ++pos_;
-        } else if (c == '#') {
+        } else if (c == kCommentStart) {
             const void* newline = std::memchr(text_.data() + pos_, '\n', text_.size() - pos_);
             pos_ = newline ? std::size_t(static_cast<const char*>(newline) - text_.data())
                            : text_.size();
@@ -59,7 +104,7 @@ void NffTokenizer::skip_space() {
 NffToken NffTokenizer::next() {
     skip_space();
     const std::size_t begin = pos_;
-    while (pos_ < text_.size() && !is_space(text_[pos_]) && text_[pos_] != '#') ++pos_;
+    while (pos_ < text_.size() && class_of(text_[pos_]) == kTokenByte) ++pos_;
     NffToken token{text_.substr(begin, pos_ - begin), line_,
                    std::uint32_t(begin - line_start_ + 1)};
     if (!token.at_end()) last_ = token;
@@ -69,7 +114,7 @@ NffToken NffTokenizer::next() {
 NffToken NffTokenizer::peek() {
     skip_space();  // consumes only what next() would skip anyway
     std::size_t end = pos_;
-    while (end < text_.size() && !is_space(text_[end]) && text_[end] != '#') ++end;
+    while (end < text_.size() && class_of(text_[end]) == kTokenByte) ++end;
     return {text_.substr(pos_, end - pos_), line_, std::uint32_t(pos_ - line_start_ + 1)};
 }
 
@@ -85,6 +130,7 @@ NffToken NffTokenizer::require(const NffEntity& entity, const NffField& field) {
 
 float NffTokenizer::number_of(const NffToken& token, const NffEntity& entity,
                               const NffField& field) const {
+    if (const auto plain = plain_decimal(token.text)) return *plain;
     const char* last = token.text.data() + token.text.size();
     const char* first = skip_plus(token.text.data(), last);
     float value = 0;
