@@ -120,6 +120,30 @@ TEST(Cylinder, FarRaysStayAccurate) {
     EXPECT_NEAR(sp.p.x, -0.99498744f, 1e-3f);
 }
 
+TEST(Cylinder, RaysJustInsideTheRimFromAnyDistanceHit) {
+    // The early out for rays that pass the axis farther than the radius must never reject a
+    // ray that passes just inside it: from near and far, straight across and tilted.
+    for (const float distance : {2.0f, 30.0f, 1e3f, 1e5f}) {
+        for (const float tilt : {0.0f, 0.3f, 1.2f}) {
+            for (const float inside : {1e-3f, 1e-5f}) {
+                const float z = 1 - inside;
+                const Vector3 d = normalize(Vector3{1, tilt, 0});
+                const Point3 target{0, 0.5f, z};
+                const Ray ray{target - d * distance, d};
+                const auto hit = kOpen.intersect(ray, {});
+                ASSERT_TRUE(hit) << distance << " " << tilt << " " << inside;
+                EXPECT_NEAR(hit->t, distance - std::sqrt(1 - z * z) / d.x,
+                            2e-6f * distance + 1e-3f);
+                // The same ray just outside the rim misses.
+                const Ray outside{ray.origin + Vector3{0, 0, 2 * inside}, d};
+                if (distance < 1e3f) {
+                    EXPECT_FALSE(kOpen.intersect(outside, {}));
+                }
+            }
+        }
+    }
+}
+
 TEST(Cylinder, BoundsHoldTheEndDisks) {
     const Bounds3 b = Cylinder{{1, 0, 0}, {1, 2, 0}, 0.5f}.bounds();
     EXPECT_NEAR(b.min.x, 0.5f, 1e-5f);

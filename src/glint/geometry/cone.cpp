@@ -38,9 +38,13 @@ Frustum frustum_of(const Cone& cone) {
     const Vector3d base(cone.base), apex(cone.apex);
     const Vector3d along = apex - base;
     const double axis_length = std::sqrt(dot(along, along));
+    // A cylinder's slope is 0 without the division.
+    const double slope = cone.apex_radius == cone.base_radius
+                             ? 0.0
+                             : (double{cone.apex_radius} - cone.base_radius) / axis_length;
     return {(base + apex) * 0.5, along * (1 / axis_length),
             0.5 * axis_length,   cone.base_radius,
-            cone.apex_radius,    (double{cone.apex_radius} - cone.base_radius) / axis_length};
+            cone.apex_radius,    slope};
 }
 
 // One Newton step in double on alpha s^2 + beta s + gamma, kept only when it lowers the
@@ -54,20 +58,21 @@ double polish(double s, double alpha, double beta, double gamma) {
 
 // Whether the ray's line passes the axis' line farther than the wider radius: then it misses the
 // side and the caps, and the solve in double below can be skipped. Most rays that reach a thin
-// cylinder's box pass it by. In float, with a slack far above this test's rounding (a few ulps
-// of |origin - base| / sin(angle to the axis), and of the radius): it never rejects a hit. Rays
-// nearly along the axis are not judged.
+// cylinder's box pass it by. In float, with a slack far above this test's rounding: the reach
+// (widest + 1e-4 (widest + s)), s = |w| |axis| / |n| (a few ulps of |origin - base| / sin(angle
+// to the axis), and of the radius), is bounded without a square root or a division by
+// (a + b)^2 <= 1.01 a^2 + 101 b^2: it never rejects a hit. Rays nearly along the axis are not
+// judged.
 bool passes_clear(const Cone& cone, const Ray& ray) {
     const Vector3 axis = cone.apex - cone.base;
     const Vector3 w = ray.origin - cone.base;
     const Vector3 n = cross(ray.direction, axis);
     const float nn = dot(n, n), aa = dot(axis, axis);
     if (!(nn > 1e-6f * aa)) return false;  // nearly parallel (or NaN): left to the full test
-    const float widest = std::max(cone.base_radius, cone.apex_radius);
-    const float slack = 1e-4f * (widest + std::sqrt(dot(w, w) * aa / nn));
+    const float widest = std::max(cone.base_radius, cone.apex_radius) * (1 + 1e-4f);
     const float wn = dot(w, n);
-    const float reach = widest + slack;
-    return wn * wn > reach * reach * nn;
+    // wn^2 > reach^2 nn, with reach^2 <= 1.01 widest^2 + 101 (1e-4 s)^2.
+    return wn * wn > 1.01f * widest * widest * nn + 1.01e-6f * dot(w, w) * aa;
 }
 
 }  // namespace
@@ -112,9 +117,11 @@ std::optional<ShapeHit> Cone::intersect(const Ray& ray, Interval t_range) const 
                                            static_cast<float>(gamma))) {
         // Parallel to the side (alpha = 0) gives the one root twice; the height test removes
         // the far roots of nearly parallel rays and the mirrored nappe.
+        // The far root is looked at only when the near one is not taken.
         for (const float root : {roots->t0, roots->t1}) {
             const double s = polish(root, alpha, beta, gamma);
             if (std::abs(y0 + s * yd) <= h) consider(s, kSide);
+            if (best) break;
         }
     }
     if (capped && yd != 0) {
