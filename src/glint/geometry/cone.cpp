@@ -42,9 +42,8 @@ Frustum frustum_of(const Cone& cone) {
     const double slope = cone.apex_radius == cone.base_radius
                              ? 0.0
                              : (double{cone.apex_radius} - cone.base_radius) / axis_length;
-    return {(base + apex) * 0.5, along * (1 / axis_length),
-            0.5 * axis_length,   cone.base_radius,
-            cone.apex_radius,    slope};
+    return {(base + apex) * 0.5, along * (1 / axis_length), 0.5 * axis_length,
+            cone.base_radius,    cone.apex_radius,          slope};
 }
 
 // One Newton step in double on alpha s^2 + beta s + gamma, kept only when it lowers the
