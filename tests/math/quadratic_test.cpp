@@ -42,5 +42,32 @@ TEST(Quadratic, LinearAndDegenerateEquations) {
     EXPECT_EQ(zero->t1, 0);
 }
 
+TEST(QuadraticDouble, RootsOfDoubleCoefficientsKeepTheirPrecision) {
+    // (s - 1)(s - 1.0000001) = s^2 - 2.0000001 s + 1.0000001. In float, -2.0000001 rounds to
+    // -2.00000012 and the roots move by about 1e-4; in double both stay within 1e-8.
+    const auto r = solve_quadratic_double(1, -2.0000001, 1.0000001);
+    ASSERT_TRUE(r);
+    EXPECT_NEAR(r->t0, 1.0, 1e-8);
+    EXPECT_NEAR(r->t1, 1.0000001, 1e-8);
+}
+
+TEST(QuadraticDouble, SameCasesAsInFloat) {
+    const auto two = solve_quadratic_double(1, 1, -6);  // (s - 2)(s + 3)
+    ASSERT_TRUE(two);
+    EXPECT_EQ(two->t0, -3);
+    EXPECT_EQ(two->t1, 2);
+    EXPECT_FALSE(solve_quadratic_double(1, 0, 1));
+    // Roots 1e-6 (1 + 1e-12) and 1e6 (1 - 1e-12), to first order.
+    const auto small = solve_quadratic_double(1, -1e6, 1);
+    ASSERT_TRUE(small);
+    EXPECT_NEAR(small->t0, 1e-6 * (1 + 1e-12), 1e-21);
+    EXPECT_NEAR(small->t1, 1e6 * (1 - 1e-12), 1e-9);
+    const auto linear = solve_quadratic_double(0, 2, -4);
+    ASSERT_TRUE(linear);
+    EXPECT_EQ(linear->t0, 2);
+    EXPECT_EQ(linear->t1, 2);
+    EXPECT_FALSE(solve_quadratic_double(0, 0, 1));
+}
+
 }  // namespace
 }  // namespace glint

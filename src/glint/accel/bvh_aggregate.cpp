@@ -30,7 +30,9 @@ BvhAggregate::BvhAggregate(std::span<const Primitive> primitives) : primitives_(
     for (const Primitive& p : primitives) {
         first_reference_.push_back(std::uint32_t(total));
         const MeshData* mesh = mesh_of(p);
-        total += mesh ? mesh->triangles.size() : 1;
+        const std::size_t references = mesh ? mesh->triangles.size() : 1;
+        one_reference_each_ = one_reference_each_ && references == 1;
+        total += references;
         if (total > kWideBvhMaxPrimitives)
             throw std::length_error("more than 2^29 shapes and triangles in one scene");
     }
@@ -104,6 +106,7 @@ BvhAggregate::BvhAggregate(std::span<const Primitive> primitives) : primitives_(
 }
 
 BvhAggregate::Reference BvhAggregate::reference(std::uint32_t ref) const {
+    if (one_reference_each_) return {ref, 0};
     const auto after = std::upper_bound(first_reference_.begin(), first_reference_.end(), ref);
     const auto primitive = std::uint32_t(after - first_reference_.begin() - 1);
     return {primitive, ref - first_reference_[primitive]};

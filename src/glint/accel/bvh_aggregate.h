@@ -54,8 +54,10 @@ private:
     // Leaves of blocks (lanes: references) and of whole primitives (primitive indices).
     WideBvh bvh_;
     std::vector<std::uint32_t> first_reference_;  // of each primitive, and the total at the end
-    std::vector<std::uint32_t> unbounded_;        // primitives with infinite bounds
-    Bounds3 bounds_;                              // of the bounded primitives, not grown
+    // No meshes of other than one triangle: a reference is its primitive, found without a search.
+    bool one_reference_each_ = true;
+    std::vector<std::uint32_t> unbounded_;  // primitives with infinite bounds
+    Bounds3 bounds_;                        // of the bounded primitives, not grown
     // The visibility every primitive has, when they all have the same: lanes need no check.
     std::optional<std::uint32_t> common_visibility_;
 };

@@ -1,5 +1,5 @@
-// The frustum's side as a quadratic along the ray, solved in double near the axis' midpoint and
-// polished by a Newton step; the caps as planes across the axis; normals and uv.
+// The frustum's side as a quadratic along the ray, solved in double near the axis' midpoint; the
+// caps as planes across the axis; normals and uv.
 #include "glint/geometry/cone.h"
 
 #include <algorithm>
@@ -44,15 +44,6 @@ Frustum frustum_of(const Cone& cone) {
                              : (double{cone.apex_radius} - cone.base_radius) / axis_length;
     return {(base + apex) * 0.5, along * (1 / axis_length), 0.5 * axis_length,
             cone.base_radius,    cone.apex_radius,          slope};
-}
-
-// One Newton step in double on alpha s^2 + beta s + gamma, kept only when it lowers the
-// residual: it removes the rounding of the float coefficients that solve_quadratic takes, and
-// leaves a double root (zero slope, a tangent ray) alone.
-double polish(double s, double alpha, double beta, double gamma) {
-    const auto residual = [&](double x) { return (alpha * x + beta) * x + gamma; };
-    const double polished = s - residual(s) / (2 * alpha * s + beta);
-    return std::abs(residual(polished)) < std::abs(residual(s)) ? polished : s;
 }
 
 // Whether the ray's line passes the axis' line farther than the wider radius: then it misses the
@@ -112,13 +103,11 @@ std::optional<ShapeHit> Cone::intersect(const Ray& ray, Interval t_range) const 
         if (t_range.contains(t) && (!best || t < best->t)) best = ShapeHit{t, 0, 0, part};
     };
     const double h = f.half_length * (1 + kSeamTolerance);
-    if (const auto roots = solve_quadratic(static_cast<float>(alpha), static_cast<float>(beta),
-                                           static_cast<float>(gamma))) {
+    if (const auto roots = solve_quadratic_double(alpha, beta, gamma)) {
         // Parallel to the side (alpha = 0) gives the one root twice; the height test removes
         // the far roots of nearly parallel rays and the mirrored nappe.
         // The far root is looked at only when the near one is not taken.
-        for (const float root : {roots->t0, roots->t1}) {
-            const double s = polish(root, alpha, beta, gamma);
+        for (const double s : {roots->t0, roots->t1}) {
             if (std::abs(y0 + s * yd) <= h) consider(s, kSide);
             if (best) break;
         }
