@@ -47,6 +47,9 @@ BvhAggregate::BvhAggregate(std::span<const Primitive> primitives) : primitives_(
     std::vector<std::uint32_t> bounded;  // build index -> reference
     std::vector<Bounds3> boxes;
     std::vector<std::uint8_t> kinds;
+    bounded.reserve(total);
+    boxes.reserve(total);
+    kinds.reserve(total);
     for (std::uint32_t i = 0; i < primitives.size(); ++i) {
         const Primitive& p = primitives[i];
         if (const MeshData* mesh = mesh_of(p)) {

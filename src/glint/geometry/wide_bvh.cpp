@@ -139,13 +139,15 @@ WideBvh build_wide_bvh(std::span<const Bounds3> bounds, const BvhBuildOptions& o
 namespace {
 
 // The leaf's primitives as blocks of one kind, appended to `blocks`; false (and nothing appended)
-// when one of them is not of that kind. Lanes run in ascending id.
+// when one of them is not of that kind. Lanes run in ascending id. `items` is scratch space, kept
+// from leaf to leaf.
 template <typename Item, typename Block, typename EmptyBlock, typename SetLane>
 bool pack_leaf(std::span<const std::uint32_t> leaf,
                const std::function<std::optional<Item>(std::uint32_t)>& item_of,
-               std::vector<Block>& blocks, EmptyBlock&& empty_block, SetLane&& set_lane) {
+               std::vector<Item>& items, std::vector<Block>& blocks, EmptyBlock&& empty_block,
+               SetLane&& set_lane) {
     if (!item_of) return false;
-    std::vector<Item> items;
+    items.clear();
     for (const std::uint32_t p : leaf) {
         const auto item = item_of(p);
         if (!item) return false;
@@ -165,6 +167,8 @@ void pack_block_leaves(WideBvh& bvh,
                        const std::function<std::optional<BlockTriangle>(std::uint32_t)>& triangle,
                        const std::function<std::optional<BlockSphere>(std::uint32_t)>& sphere) {
     std::vector<std::uint32_t> kept;  // primitive_indices of the leaves that stay as they are
+    std::vector<BlockTriangle> triangles;
+    std::vector<BlockSphere> spheres;
     for (WideBvhNode& node : bvh.nodes) {
         for (int k = 0; k < kWideBvhWidth; ++k) {
             if (!node.is_leaf(k) || node.count[k] == 0) continue;
@@ -173,13 +177,13 @@ void pack_block_leaves(WideBvh& bvh,
                 bvh.primitive_indices.data() + (node.child[k] & kWideLeafIndex), node.count[k]);
             const auto first_triangles = std::uint32_t(bvh.blocks.size());
             const auto first_spheres = std::uint32_t(bvh.sphere_blocks.size());
-            if (pack_leaf(leaf, triangle, bvh.blocks, empty_triangle_block,
+            if (pack_leaf(leaf, triangle, triangles, bvh.blocks, empty_triangle_block,
                           [](TriangleBlock& b, int lane, const BlockTriangle& t) {
                               set_block_lane(b, lane, t.v0, t.v1, t.v2, t.id);
                           })) {
                 node.child[k] = kWideLeaf | kWideTriangleLeaf | first_triangles;
                 node.count[k] = std::uint8_t(bvh.blocks.size() - first_triangles);
-            } else if (pack_leaf(leaf, sphere, bvh.sphere_blocks, empty_sphere_block,
+            } else if (pack_leaf(leaf, sphere, spheres, bvh.sphere_blocks, empty_sphere_block,
                                  [](SphereBlock& b, int lane, const BlockSphere& s) {
                                      set_sphere_lane(b, lane, s.sphere, s.id);
                                  })) {
