@@ -66,8 +66,8 @@ struct KdBuildOptions {
 // (leaf cheaper than the best split three times on a path, pbrt's "bad refines"), by depth and
 // by leaf size, so coincident primitives end in one leaf instead of recursing.
 //
-// Exactness: primitives are classified against planes with their bounds grown by 2^-16 of the
-// scene's extent (plus a few ulps of its coordinates). A primitive listed only beyond a plane
+// Exactness: primitives are classified against planes with their bounds grown by 8 ulps of the
+// scene's largest coordinate (rounding_margin.h). A primitive listed only beyond a plane
 // then has its hits farther along the ray than the plane plus that margin, which covers the
 // rounding of t at the plane and in the shapes: so once the nearest hit so far lies before the
 // next node's t interval, no later node can hold a nearer or equally near hit. At equal t the

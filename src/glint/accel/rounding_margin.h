@@ -12,12 +12,14 @@ inline float magnitude(const Bounds3& b) {
     return max_component(max(abs(to_vector(b.min)), abs(to_vector(b.max))));
 }
 
-// 2^-16 of the scene's extent plus 2^-20 of its largest coordinate (8 ulps). A structure whose
-// boxes are grown by this margin sees every hit a shape reports strictly inside the box of that
-// shape, whatever the rounding of t in the shapes and in the slab or plane tests; and a flat
-// scene gets boxes of positive thickness. Never zero: a scene in one point at the origin gets 1.
+// 2^-20 of the scene's largest coordinate (8 ulps). A structure whose boxes are grown by this
+// margin sees every hit a shape reports strictly inside the box of that shape, whatever the
+// rounding of t in the shapes and in the slab or plane tests; and a flat scene gets boxes of
+// positive thickness. Kept well under the offset of a spawned ray (World::ray_epsilon, 1e-5 of
+// the same magnitude or more): a ray leaving a flat face starts outside that face's box, so it is
+// not tested against the face it leaves. Never zero: a scene in one point at the origin gets 1.
 inline float rounding_margin(const Bounds3& scene) {
-    const float margin = max_component(scene.diagonal()) * 0x1p-16f + magnitude(scene) * 0x1p-20f;
+    const float margin = magnitude(scene) * 0x1p-20f;
     return margin > 0 && std::isfinite(margin) ? margin : 1;
 }
 
