@@ -9,6 +9,7 @@
 #include <map>
 #include <string>
 #include <string_view>
+#include <utility>
 
 #include "glint/accel/make_aggregate.h"
 #include "glint/render/accel_benchmark.h"
@@ -124,14 +125,14 @@ CLI::App* add_bench_command(CLI::App& app, BenchCommand& c) {
 int run_bench(const BenchCommand& command) {
     try {
         const std::vector<AccelKind> kinds = chosen_structures(command);
-        const Scene scene = load_scene(command.scene);
+        Scene scene = load_scene(command.scene);
         for (const std::string& warning : scene.warnings)
             std::fprintf(stderr, "glint: warning: %s\n", warning.c_str());
 
         // The BVH finds the surface points the secondary sets start from; every structure then
         // traces the very same rays. No light buffers: they are not measured here, and would
         // build the own BVH of meshes that the structures trace triangle by triangle.
-        const World world(scene, AccelKind::bvh, ShadowAcceleration{false, false});
+        const World world(std::move(scene), AccelKind::bvh, ShadowAcceleration{false, false});
         const RaySets sets = make_ray_sets(world, command.rays);
         const std::span<const Primitive> primitives = world.primitives();
         const std::size_t counted = triangle_counted_primitives(primitives);

@@ -10,6 +10,7 @@
 #include <fstream>
 #include <new>
 #include <string>
+#include <utility>
 
 #include "glint/image/atomic_file.h"
 #include "glint/image/image_error.h"
@@ -127,7 +128,7 @@ int run_render(const RenderCommand& command) {
         ShadowAcceleration shadows;
         shadows.light_buffer = command.shadow_accel != "none";
         shadows.occluder_cache = command.shadow_accel == "light-buffer+cache";
-        const World world(scene, *accel, shadows);
+        const World world(std::move(scene), *accel, shadows);
 
         RenderOptions options;
         options.threads = command.threads;

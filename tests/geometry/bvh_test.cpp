@@ -155,7 +155,7 @@ TEST(Bvh, NonFiniteBoundsDoNotBreakTheBuild) {
     b[11].min.x = std::numeric_limits<float>::quiet_NaN();
     const Bvh bvh = build_bvh(b);
     EXPECT_EQ(bvh.primitive_indices.size(), b.size());
-    std::vector<std::uint32_t> sorted = bvh.primitive_indices;
+    std::vector<std::uint32_t> sorted(bvh.primitive_indices.begin(), bvh.primitive_indices.end());
     std::sort(sorted.begin(), sorted.end());
     for (std::uint32_t i = 0; i < sorted.size(); ++i) ASSERT_EQ(sorted[i], i);
 }

@@ -404,7 +404,7 @@ TEST(WideBvh, SkewedAndNonFiniteInputStaysValid) {
     odd[9] = {{-kInfinity, 0, 0}, {kInfinity, 1, 1}};
     odd[11].min.x = kNaN;
     const WideBvh bvh = build_wide_bvh(odd);
-    std::vector<std::uint32_t> sorted = bvh.primitive_indices;
+    std::vector<std::uint32_t> sorted(bvh.primitive_indices.begin(), bvh.primitive_indices.end());
     std::sort(sorted.begin(), sorted.end());
     for (std::uint32_t i = 0; i < sorted.size(); ++i) ASSERT_EQ(sorted[i], i);
 }

@@ -6,6 +6,7 @@
 
 #include "glint/accel/rounding_margin.h"
 #include "glint/geometry/made_on_first_use.h"
+#include "glint/math/huge_page_allocator.h"
 
 namespace glint {
 
@@ -44,9 +45,9 @@ BvhAggregate::BvhAggregate(std::span<const Primitive> primitives) : primitives_(
     }
 
     // The bounded references, each with its box and kind; unbounded primitives go beside.
-    std::vector<std::uint32_t> bounded;  // build index -> reference
-    std::vector<Bounds3> boxes;
-    std::vector<std::uint8_t> kinds;
+    LargeVector<std::uint32_t> bounded;  // build index -> reference
+    LargeVector<Bounds3> boxes;
+    LargeVector<std::uint8_t> kinds;
     bounded.reserve(total);
     boxes.reserve(total);
     kinds.reserve(total);

@@ -85,7 +85,7 @@ struct Chunk {
         std::uint32_t node;
         std::unique_ptr<Chunk> chunk;
     };
-    std::vector<BvhNode> nodes;
+    LargeVector<BvhNode> nodes;
     std::vector<Remote> remote;
 };
 
@@ -400,11 +400,11 @@ private:
         measure(right);
     }
 
-    std::vector<std::uint32_t>& indices_;
+    LargeVector<std::uint32_t>& indices_;
     std::span<const std::uint8_t> kinds_;
-    std::vector<Box> boxes_;
-    std::vector<Float4> centroids_;
-    std::vector<std::uint32_t> scratch_;
+    LargeVector<Box> boxes_;
+    LargeVector<Float4> centroids_;
+    LargeVector<std::uint32_t> scratch_;
     std::uint32_t max_leaf_ = 4;
     int bins_ = 16;
     float traversal_cost_ = 0.5f;
@@ -420,7 +420,7 @@ std::size_t node_count(const Chunk& chunk) {
 
 // Appends the chunk's nodes and then, in order, each remote chunk's, with second-child indices
 // moved to their final places.
-void flatten(const Chunk& chunk, std::vector<BvhNode>& out) {
+void flatten(const Chunk& chunk, LargeVector<BvhNode>& out) {
     const auto base = std::uint32_t(out.size());
     for (BvhNode node : chunk.nodes) {
         if (!node.is_leaf()) node.offset += base;

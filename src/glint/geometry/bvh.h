@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "glint/math/bounds.h"
+#include "glint/math/huge_page_allocator.h"
 #include "glint/math/interval.h"
 #include "glint/math/ray.h"
 
@@ -47,9 +48,9 @@ struct BvhBuildOptions {
 };
 
 struct Bvh {
-    std::vector<BvhNode> nodes;  // nodes[0] is the root; empty for no primitives
+    LargeVector<BvhNode> nodes;  // nodes[0] is the root; empty for no primitives
     // Leaves refer to ranges of this permutation of the primitives' indices.
-    std::vector<std::uint32_t> primitive_indices;
+    LargeVector<std::uint32_t> primitive_indices;
 
     Bounds3 bounds() const { return nodes.empty() ? Bounds3{} : nodes[0].bounds; }
 };

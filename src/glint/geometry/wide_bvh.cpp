@@ -14,7 +14,7 @@ class Collapser {
 public:
     using Slots = std::array<std::uint32_t, kWideBvhWidth>;
 
-    Collapser(const std::vector<BvhNode>& binary, std::vector<WideBvhNode>& wide)
+    Collapser(const LargeVector<BvhNode>& binary, LargeVector<WideBvhNode>& wide)
         : binary_(binary), wide_(wide), leaves_(binary.size()) {
         // Children come after their parents in the binary array: count from the end.
         for (std::size_t i = binary.size(); i-- > 0;) {
@@ -110,8 +110,8 @@ private:
         gather_leaves(binary_[node].offset, slot, n);
     }
 
-    const std::vector<BvhNode>& binary_;
-    std::vector<WideBvhNode>& wide_;
+    const LargeVector<BvhNode>& binary_;
+    LargeVector<WideBvhNode>& wide_;
     std::vector<std::uint32_t> leaves_;  // of each binary node's subtree
 };
 
@@ -144,7 +144,7 @@ namespace {
 template <typename Item, typename Block, typename EmptyBlock, typename SetLane>
 bool pack_leaf(std::span<const std::uint32_t> leaf,
                const std::function<std::optional<Item>(std::uint32_t)>& item_of,
-               std::vector<Item>& items, std::vector<Block>& blocks, EmptyBlock&& empty_block,
+               std::vector<Item>& items, LargeVector<Block>& blocks, EmptyBlock&& empty_block,
                SetLane&& set_lane) {
     if (!item_of) return false;
     items.clear();
@@ -166,7 +166,7 @@ bool pack_leaf(std::span<const std::uint32_t> leaf,
 void pack_block_leaves(WideBvh& bvh,
                        const std::function<std::optional<BlockTriangle>(std::uint32_t)>& triangle,
                        const std::function<std::optional<BlockSphere>(std::uint32_t)>& sphere) {
-    std::vector<std::uint32_t> kept;  // primitive_indices of the leaves that stay as they are
+    LargeVector<std::uint32_t> kept;  // primitive_indices of the leaves that stay as they are
     std::vector<BlockTriangle> triangles;
     std::vector<BlockSphere> spheres;
     for (WideBvhNode& node : bvh.nodes) {

@@ -15,6 +15,7 @@
 #include "glint/geometry/sphere_block.h"
 #include "glint/geometry/triangle_block.h"
 #include "glint/math/bounds.h"
+#include "glint/math/huge_page_allocator.h"
 
 namespace glint {
 
@@ -51,12 +52,12 @@ struct alignas(64) WideBvhNode {
 static_assert(sizeof(WideBvhNode) == 256, "four cache lines a node");
 
 struct WideBvh {
-    std::vector<WideBvhNode> nodes;  // nodes[0] is the root; empty for no primitives
+    LargeVector<WideBvhNode> nodes;  // nodes[0] is the root; empty for no primitives
     // Leaves of primitives refer to ranges of this permutation of the primitives' indices.
-    std::vector<std::uint32_t> primitive_indices;
+    LargeVector<std::uint32_t> primitive_indices;
     // Leaves of triangles and of spheres refer to ranges of these (see pack_block_leaves).
-    std::vector<TriangleBlock> blocks;
-    std::vector<SphereBlock> sphere_blocks;
+    LargeVector<TriangleBlock> blocks;
+    LargeVector<SphereBlock> sphere_blocks;
     Bounds3 root_bounds;  // the union of every primitive's box
 
     Bounds3 bounds() const { return root_bounds; }

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 namespace glint {
 
@@ -24,20 +25,21 @@ float scene_scale(const Bounds3& bounds, Point3 eye) {
 
 }  // namespace
 
-World::World(const Scene& scene, AccelKind accel, ShadowAcceleration shadows)
+World::World(Scene scene, AccelKind accel, ShadowAcceleration shadows)
     : settings_(scene.settings),
       camera_(scene.camera, scene.settings.width, scene.settings.height),
       ambient_(scene.ambient),
-      materials_(scene.materials),
-      lights_(scene.lights) {
+      materials_(std::move(scene.materials)),
+      lights_(std::move(scene.lights)) {
     primitives_.reserve(scene.objects.size());
     material_of_.reserve(scene.objects.size());
-    for (const SceneObject& object : scene.objects) {
+    for (SceneObject& object : scene.objects) {
         std::uint32_t visibility = kVisibleToCameraRays;
         if (object.casts_shadow) visibility |= kVisibleToShadowRays;
-        primitives_.push_back({object.shape, visibility});
+        primitives_.push_back({std::move(object.shape), visibility});
         material_of_.push_back(object.material);
     }
+    scene.objects = {};  // the moved-from shapes: freed before the structure is built
     aggregate_ = make_aggregate(accel, primitives_);
     scene_scale_ = scene_scale(aggregate_->bounds(), camera_.eye());
     shadows_ = shadows;

@@ -12,6 +12,7 @@
 #include "glint/accel/light_buffer.h"
 #include "glint/accel/make_aggregate.h"
 #include "glint/camera/camera.h"
+#include "glint/math/huge_page_allocator.h"
 #include "glint/scene/scene.h"
 
 namespace glint {
@@ -30,8 +31,8 @@ struct ShadowAcceleration {
 class World {
 public:
     // The scene must be valid as the loaders guarantee (positive radii, known materials, ...).
-    explicit World(const Scene& scene, AccelKind accel = AccelKind::bvh,
-                   ShadowAcceleration shadows = {});
+    // Taken by value: a caller done with its scene moves it in, and the shapes are not copied.
+    explicit World(Scene scene, AccelKind accel = AccelKind::bvh, ShadowAcceleration shadows = {});
 
     const RenderSettings& settings() const { return settings_; }
     const Camera& camera() const { return camera_; }
@@ -75,7 +76,7 @@ private:
     Color ambient_;
     std::vector<Material> materials_;
     std::vector<Light> lights_;
-    std::vector<Primitive> primitives_;
+    LargeVector<Primitive> primitives_;
     std::vector<std::uint32_t> material_of_;  // per primitive
     std::unique_ptr<Aggregate> aggregate_;    // over primitives_
     ShadowAcceleration shadows_;

@@ -10,6 +10,7 @@
 #include "glint/geometry/shape.h"
 #include "glint/image/image_limits.h"  // kMaxImagePixels, shared with image files
 #include "glint/math/color.h"
+#include "glint/math/huge_page_allocator.h"
 #include "glint/sampling/pixel_sampler.h"
 #include "glint/shading/light.h"
 #include "glint/shading/material.h"
@@ -42,7 +43,7 @@ struct Scene {
     Color ambient;  // Ia, the global ambient light
     std::vector<Material> materials;
     std::vector<Light> lights;
-    std::vector<SceneObject> objects;
+    LargeVector<SceneObject> objects;
     // What the loader accepted but the user should know ("3 degenerate triangles dropped").
     std::vector<std::string> warnings;
 };

@@ -406,7 +406,9 @@ std::optional<NffScene> parse_in_pieces(std::string_view text, const std::string
     NffScene scene;
     scene.file_name = file_name;
     std::uint32_t line_offset = 0;
-    std::size_t objects = 0;
+    std::size_t objects = 0, materials = 0;
+    for (const NffScene& piece : pieces) materials += piece.materials.size();
+    scene.materials.reserve(materials);
     for (std::size_t k = 0; k < n; ++k) {
         NffScene& piece = pieces[k];
         if ((piece.view && scene.view) || (piece.background && scene.background))

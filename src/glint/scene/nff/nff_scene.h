@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "glint/math/color.h"
+#include "glint/math/huge_page_allocator.h"
 #include "glint/math/vector.h"
 #include "glint/scene/scene_error.h"
 
@@ -91,8 +92,8 @@ struct NffScene {
     std::optional<NffView> view;         // the renderer needs it: see require_view()
     std::optional<Color> background;     // black when absent
     std::vector<NffLight> lights;        // in file order
-    std::vector<NffMaterial> materials;  // in file order; objects index them
-    std::vector<NffObject> objects;      // in file order
+    LargeVector<NffMaterial> materials;  // in file order; objects index them
+    LargeVector<NffObject> objects;      // in file order
 
     SourceLocation where(NffLocation at) const { return {file_name, int(at.line), int(at.column)}; }
 };

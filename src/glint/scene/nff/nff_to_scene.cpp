@@ -67,7 +67,7 @@ public:
         mesh.triangles.push_back({base, base + 1, base + 2});
     }
 
-    void emit(std::vector<SceneObject>& objects, std::vector<std::string>& warnings) {
+    void emit(LargeVector<SceneObject>& objects, std::vector<std::string>& warnings) {
         for (auto& [key, arrays] : meshes_) {
             MeshBuild built = build_mesh(std::move(arrays));
             if (!built.mesh) {
@@ -126,7 +126,7 @@ struct InsideOnly {
 
 struct ToShapes {
     std::uint32_t material;
-    std::vector<SceneObject>& objects;
+    LargeVector<SceneObject>& objects;
     MeshCollector& triangles;
 
     void operator()(const NffSphere& s) const {

@@ -37,7 +37,7 @@ std::string indexed(std::string_view key, std::size_t i) {
 // An object: one SceneObject, or one per part of a mesh file. A mesh without a `material` key
 // keeps its file's materials.
 void read_object(ShapeReader& shapes, const YAML::Node& node, const Field& field,
-                 MaterialTable& materials, std::size_t index, std::vector<SceneObject>& out) {
+                 MaterialTable& materials, std::size_t index, LargeVector<SceneObject>& out) {
     ShapeReader::ObjectResult r = shapes.read_object(node, field, {"material", "casts_shadow"});
     const MapEntry* material = r.map.find("material");
     const bool casts_shadow = r.map.boolean("casts_shadow", true);
