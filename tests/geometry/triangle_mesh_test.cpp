@@ -95,7 +95,7 @@ TEST(TriangleMesh, ShadingNormalInterpolatesVertexNormals) {
 
 TEST(TriangleMesh, ShadingNormalsAgainstTheWindingAreTurnedOver) {
     MeshData arrays = quad_arrays();
-    arrays.normals = std::vector<Normal3>(4, Normal3{0, 0.6f, -0.8f});
+    arrays.normals.assign(4, Normal3{0, 0.6f, -0.8f});
     const TriangleMesh mesh = build(arrays);
     const Ray ray{{0.5f, 0.25f, 1}, {0, 0, -1}};
     const SurfacePoint sp = mesh.surface_at(ray, *mesh.intersect(ray, {}));
@@ -144,7 +144,7 @@ TEST(TriangleMesh, BadArraysAreClearErrors) {
     EXPECT_EQ(build_mesh(normals).error, "mesh has 1 normals for 4 vertices");
 
     MeshData uvs = quad_arrays();
-    uvs.uvs = std::vector<Point2>(4, Point2{0, INFINITY});
+    uvs.uvs.assign(4, Point2{0, INFINITY});
     EXPECT_NE(build_mesh(uvs).error.find("uv 0"), std::string::npos);
 
     EXPECT_EQ(build_mesh(MeshData{}).error, "mesh has no triangles");
@@ -176,7 +176,7 @@ MeshData sphere_mesh(int subdivisions) {
             next.push_back({mid[2], mid[1], t[2]});
             next.push_back({mid[0], mid[1], mid[2]});
         }
-        m.triangles = next;
+        m.triangles.assign(next.begin(), next.end());
     }
     return m;
 }

@@ -66,7 +66,7 @@ Solid icosphere(int levels) {
             if (fresh) p.push_back(to_point(normalize(to_vector(p[a]) + to_vector(p[b]))));
             return it->second;
         };
-        std::vector<std::array<std::uint32_t, 3>> finer;
+        LargeVector<std::array<std::uint32_t, 3>> finer;
         for (const auto& [a, b, c] : s.arrays.triangles) {
             const std::uint32_t ab = mid(a, b), bc = mid(b, c), ca = mid(c, a);
             finer.insert(finer.end(), {{a, ab, ca}, {b, bc, ab}, {c, ca, bc}, {ab, bc, ca}});

@@ -15,6 +15,7 @@
 #include "glint/geometry/surface_point.h"
 #include "glint/geometry/wide_bvh_traversal.h"
 #include "glint/math/bounds.h"
+#include "glint/math/huge_page_allocator.h"
 #include "glint/math/interval.h"
 #include "glint/math/ray.h"
 
@@ -48,10 +49,10 @@ private:
 // Immutable once built; shared by every object that uses it. Triangles run counter-clockwise
 // seen from their front side, as for Triangle.
 struct MeshData {
-    std::vector<Point3> positions;
-    std::vector<Normal3> normals;  // unit, one per position; or empty for flat shading
-    std::vector<Point2> uvs;       // one per position; or empty
-    std::vector<std::array<std::uint32_t, 3>> triangles;
+    LargeVector<Point3> positions;
+    LargeVector<Normal3> normals;  // unit, one per position; or empty for flat shading
+    LargeVector<Point2> uvs;       // one per position; or empty
+    LargeVector<std::array<std::uint32_t, 3>> triangles;
     Bounds3 bounds;  // of the triangles; set by build_mesh
 
     // The mesh's own BVH over its triangles (in blocks of four; lanes name triangle indices),

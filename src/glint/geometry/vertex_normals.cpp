@@ -6,8 +6,10 @@
 #include <bit>
 #include <cmath>
 #include <numeric>
+#include <span>
 
 #include "glint/math/constants.h"
+#include "glint/math/huge_page_allocator.h"
 
 namespace glint {
 
@@ -48,7 +50,7 @@ Groups group_by(const std::vector<std::uint32_t>& key_of_item, std::size_t keys)
 }
 
 // Ids that are equal exactly for vertices at the same position (bitwise, with -0 == 0).
-std::vector<std::uint32_t> position_ids(const std::vector<Point3>& positions) {
+std::vector<std::uint32_t> position_ids(std::span<const Point3> positions) {
     const auto bits = [](float f) { return std::bit_cast<std::uint32_t>(f == 0 ? 0.0f : f); };
     std::vector<std::uint32_t> order(positions.size());
     std::iota(order.begin(), order.end(), 0u);
@@ -120,9 +122,9 @@ void compute_vertex_normals(MeshData& mesh, float crease_angle_degrees) {
     std::vector<std::uint32_t> corner_vertex(corner_count);
     for (std::size_t c = 0; c < corner_count; ++c) corner_vertex[c] = mesh.triangles[c / 3][c % 3];
     const Groups uses = group_by(corner_vertex, mesh.positions.size());
-    std::vector<Point3> positions;
-    std::vector<Normal3> normals;
-    std::vector<Point2> uvs;
+    LargeVector<Point3> positions;
+    LargeVector<Normal3> normals;
+    LargeVector<Point2> uvs;
     std::vector<std::uint32_t> new_index(corner_count);
     for (std::size_t v = 0; v < mesh.positions.size(); ++v) {
         const std::uint32_t first_new = std::uint32_t(positions.size());
