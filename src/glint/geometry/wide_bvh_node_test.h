@@ -1,5 +1,5 @@
 // The wide BVH's node test: one ray against the eight child boxes of a WideBvhNode, each exactly as
-// slab_hit tests one box (same operations in the same order, t_far widened by kSlabFarWiden, a NaN
+// slab_hit tests one box (same operations in the same order, t_far by the widened reciprocal, a NaN
 // slab bound leaving the interval as it was). Three kernels: a portable scalar one, SSE (two halves
 // of four) and AVX2 (all eight at once), in GCC vector extensions. IEEE arithmetic without
 // contraction gives all three the same bits.
@@ -35,11 +35,14 @@ struct ScalarKernel {
     struct Ray {
         float origin[3];
         float inv_direction[3];
+        float inv_direction_far[3];
         PlaneRows rows;
 
         explicit Ray(const BvhRay& r)
             : origin{r.origin.x, r.origin.y, r.origin.z},
               inv_direction{r.inv_direction.x, r.inv_direction.y, r.inv_direction.z},
+              inv_direction_far{r.inv_direction_far.x, r.inv_direction_far.y,
+                                r.inv_direction_far.z},
               rows(r) {}
     };
 
@@ -52,8 +55,8 @@ struct ScalarKernel {
             for (int axis = 0; axis < 3; ++axis) {
                 const float n =
                     (node.planes[r.rows.near[axis]][k] - r.origin[axis]) * r.inv_direction[axis];
-                const float f = (node.planes[r.rows.far[axis]][k] - r.origin[axis]) *
-                                r.inv_direction[axis] * kSlabFarWiden;
+                const float f =
+                    (node.planes[r.rows.far[axis]][k] - r.origin[axis]) * r.inv_direction_far[axis];
                 lo = n > lo ? n : lo;
                 hi = f < hi ? f : hi;
             }
@@ -104,19 +107,20 @@ struct SseKernel {
     struct Ray {
         Float4 origin[3];
         Float4 inv_direction[3];
+        Float4 inv_direction_far[3];
         RowOffsets rows;
 
         explicit Ray(const BvhRay& r) : rows(r) {
             for (int axis = 0; axis < 3; ++axis) {
                 origin[axis] = splat4(r.origin[axis]);
                 inv_direction[axis] = splat4(r.inv_direction[axis]);
+                inv_direction_far[axis] = splat4(r.inv_direction_far[axis]);
             }
         }
     };
 
     [[gnu::always_inline]] static inline unsigned test(const WideBvhNode& node, const Ray& r,
                                                        float t_min, float t_max, float* t_near) {
-        const Float4 widen = splat4(kSlabFarWiden);
         unsigned mask = 0;
         for (std::size_t half = 0; half < kWideBvhWidth / 4; ++half) {
             const std::size_t at = half * sizeof(Float4);
@@ -125,7 +129,7 @@ struct SseKernel {
                 const Float4 n =
                     (load4(node, r.rows.near[axis] + at) - r.origin[axis]) * r.inv_direction[axis];
                 const Float4 f = (load4(node, r.rows.far[axis] + at) - r.origin[axis]) *
-                                 r.inv_direction[axis] * widen;
+                                 r.inv_direction_far[axis];
                 // Element-wise as in slab_hit; these compile to maxps and minps, whose NaN rule
                 // (the second operand wins) is the same.
                 lo = n > lo ? n : lo;
@@ -157,25 +161,26 @@ struct Avx2Kernel {
     struct Ray {
         Float8 origin[3];
         Float8 inv_direction[3];
+        Float8 inv_direction_far[3];
         RowOffsets rows;
 
         GLINT_AVX2 explicit Ray(const BvhRay& r) : rows(r) {
             for (int axis = 0; axis < 3; ++axis) {
                 origin[axis] = splat8(r.origin[axis]);
                 inv_direction[axis] = splat8(r.inv_direction[axis]);
+                inv_direction_far[axis] = splat8(r.inv_direction_far[axis]);
             }
         }
     };
 
     GLINT_AVX2 static inline unsigned test(const WideBvhNode& node, const Ray& r, float t_min,
                                            float t_max, float* t_near) {
-        const Float8 widen = splat8(kSlabFarWiden);
         Float8 lo = splat8(t_min), hi = splat8(t_max);
         for (int axis = 0; axis < 3; ++axis) {
             const Float8 n =
                 (load8(node, r.rows.near[axis]) - r.origin[axis]) * r.inv_direction[axis];
             const Float8 f =
-                (load8(node, r.rows.far[axis]) - r.origin[axis]) * r.inv_direction[axis] * widen;
+                (load8(node, r.rows.far[axis]) - r.origin[axis]) * r.inv_direction_far[axis];
             lo = n > lo ? n : lo;
             hi = f < hi ? f : hi;
         }
