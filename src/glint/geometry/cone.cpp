@@ -22,8 +22,9 @@ enum Part : std::uint32_t { kSide = 0, kBaseCap = 1, kApexCap = 2 };
 // between them (a ray through the rim is accepted by one or the other).
 constexpr float kSeamTolerance = 1e-6f;
 
-// What intersect and surface_at derive from the description, in the frame of the axis, in
-// double: the side's quadratic cancels for rays nearly parallel to the side or the axis.
+// What surface_at derives from the description, in the frame of the axis, in double. (intersect
+// works in double too, where the side's quadratic cancels for rays nearly parallel to the side or
+// the axis, but without normalising the axis.)
 struct Frustum {
     Vector3d mid;  // the axis' midpoint
     Vector3d axis;
@@ -74,24 +75,31 @@ Bounds3 Cone::bounds() const {
 
 std::optional<ShapeHit> Cone::intersect(const Ray& ray, Interval t_range) const {
     if (passes_clear(*this, ray)) return std::nullopt;
-    const Frustum f = frustum_of(*this);
-    const NearRay near = near_ray(ray, f.mid);
+    // Heights along the axis are taken against the unnormalised axis A = apex - base and scaled
+    // back by 1 / |A|^2 where they pair up: no square root, one division.
+    const Vector3d base_d(base), apex_d(apex);
+    const Vector3d along = apex_d - base_d;
+    const double aa = dot(along, along);  // |A|^2 = (2 h)^2
+    const double inv_aa = 1 / aa;
+    const NearRay near = near_ray(ray, (base_d + apex_d) * 0.5);
     const Vector3d q = near.origin, d = near.direction;
     // The ray's closest approach to the midpoint is outside the bounding sphere: no hit.
-    const double widest = std::max(f.base_radius, f.apex_radius);
-    const double bounding2 = f.half_length * f.half_length + widest * widest;
+    const double widest = std::max<double>(base_radius, apex_radius);
+    const double bounding2 = 0.25 * aa + widest * widest;
     const double qq = dot(q, q);
     if (qq > bounding2 * (1 + 1e-6)) return std::nullopt;
 
-    // Across the axis: q_perp = q - y0 a and d_perp = d - yd a, whose products follow from the
-    // full ones without forming them.
-    const double y0 = dot(q, f.axis), yd = dot(d, f.axis);
-    const double dd_perp = dot(d, d) - yd * yd;
-    const double qd_perp = dot(q, d) - y0 * yd;
-    const double qq_perp = qq - y0 * y0;
-    const double mid_radius = 0.5 * (f.base_radius + f.apex_radius);
-    const double rho0 = mid_radius + f.slope * y0;  // the cone's radius at the origin's height
-    const double k_yd = f.slope * yd;
+    // Across the axis: q_perp = q - y0 a and d_perp = d - yd a (a the unit axis, y0 = Y0 / |A|,
+    // yd = Yd / |A|), whose products follow from the full ones without forming them.
+    const double y0 = dot(q, along), yd = dot(d, along);  // Y0 and Yd: |A| times the heights
+    const double dd_perp = dot(d, d) - yd * yd * inv_aa;
+    const double qd_perp = dot(q, d) - y0 * yd * inv_aa;
+    const double qq_perp = qq - y0 * y0 * inv_aa;
+    const double mid_radius = 0.5 * (double{base_radius} + apex_radius);
+    // The slope k = (apex_radius - base_radius) / |A| times a height, in the scaled heights.
+    const double widening = (double{apex_radius} - base_radius) * inv_aa;
+    const double rho0 = mid_radius + widening * y0;  // the cone's radius at the origin's height
+    const double k_yd = widening * yd;
     // |q_perp + s d_perp|^2 = (rho0 + k yd s)^2, collected by powers of s.
     const double alpha = dd_perp - k_yd * k_yd;
     const double beta = 2 * (qd_perp - k_yd * rho0);
@@ -102,7 +110,9 @@ std::optional<ShapeHit> Cone::intersect(const Ray& ray, Interval t_range) const 
         const auto t = static_cast<float>(near.t_shift + s);
         if (t_range.contains(t) && (!best || t < best->t)) best = ShapeHit{t, 0, 0, part};
     };
-    const double h = f.half_length * (1 + kSeamTolerance);
+    // |height| <= h, scaled: |Y0 + s Yd| <= h |A| = |A|^2 / 2.
+    const double half_aa = 0.5 * aa;
+    const double h = half_aa * (1 + kSeamTolerance);
     if (const auto roots = solve_quadratic_double(alpha, beta, gamma)) {
         // Parallel to the side (alpha = 0) gives the one root twice; the height test removes
         // the far roots of nearly parallel rays and the mirrored nappe.
@@ -119,8 +129,8 @@ std::optional<ShapeHit> Cone::intersect(const Ray& ray, Interval t_range) const 
             const double r2 = qq_perp + s * (2 * qd_perp + s * dd_perp);  // |q_perp + s d_perp|^2
             if (r2 <= radius * radius * (1 + 2 * kSeamTolerance)) consider(s, part);
         };
-        cap(-f.half_length, f.base_radius, kBaseCap);
-        cap(f.half_length, f.apex_radius, kApexCap);
+        cap(-half_aa, base_radius, kBaseCap);
+        cap(half_aa, apex_radius, kApexCap);
     }
     return best;
 }
