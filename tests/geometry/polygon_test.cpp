@@ -344,10 +344,10 @@ TEST(Polygon, BandedCrossingCountEqualsTheFullCount) {
     }
     for (const auto& outline : outlines) {
         const Polygon polygon = polygon_of(in_plane_z(outline));
-        ASSERT_FALSE(polygon.bands.start.empty()) << outline.size() << " vertices";
+        ASSERT_FALSE(polygon.outline->bands.start.empty()) << outline.size() << " vertices";
         std::vector<double> ys;
         for (const Point2 p : outline) ys.push_back(p.y);
-        const EdgeBands& b = polygon.bands;
+        const EdgeBands& b = polygon.outline->bands;
         for (std::size_t k = 0; k + 1 < b.start.size(); ++k)
             ys.push_back(b.v_min + double(k) / b.scale);
         for (int i = 0; i < 2000; ++i) ys.push_back(u(rng) * 1.1);
@@ -355,8 +355,8 @@ TEST(Polygon, BandedCrossingCountEqualsTheFullCount) {
             const double y = ys[j];
             // Anywhere, and level with a vertex on both axes (points on vertices and edges).
             for (const double x : {double(u(rng)), double(outline[j % outline.size()].x)}) {
-                ASSERT_EQ(crossing_count(polygon.projected, b, x, y),
-                          crossing_count(polygon.projected, x, y))
+                ASSERT_EQ(crossing_count(polygon.outline->projected, b, x, y),
+                          crossing_count(polygon.outline->projected, x, y))
                     << outline.size() << " vertices at (" << x << ", " << y << ")";
             }
         }

@@ -33,7 +33,7 @@ TEST(YamlPlacement, TransformStepsApplyInTheWrittenOrder) {
       - translate: [0, 1, 0]
 )");
     const auto& placed = std::get<Transformed>(scene.objects[0].shape);
-    expect_near(placed.world_from_object(Point3{1, 0, 0}), {0, 3, 0});
+    expect_near(placed.world_from_object()(Point3{1, 0, 0}), {0, 3, 0});
     EXPECT_TRUE(std::holds_alternative<Sphere>(*placed.shape));
 }
 
@@ -43,7 +43,7 @@ TEST(YamlPlacement, EulerAnglesTurnAboutXThenYThenZ) {
 )");
     const auto& placed = std::get<Transformed>(scene.objects[0].shape);
     // (0, 1, 0) -> about x: (0, 0, 1) -> about y: (1, 0, 0).
-    expect_near(placed.world_from_object(Point3{0, 1, 0}), {1, 0, 0});
+    expect_near(placed.world_from_object()(Point3{0, 1, 0}), {1, 0, 0});
 }
 
 TEST(YamlPlacement, MatrixIsRowMajorWithTranslationInTheLastColumn) {
@@ -54,7 +54,7 @@ TEST(YamlPlacement, MatrixIsRowMajorWithTranslationInTheLastColumn) {
     transform: [{matrix: [[1, 0, 0, 5], [0, 2, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]]}]
 )");
     const auto& placed = std::get<Transformed>(scene.objects[0].shape);
-    expect_near(placed.world_from_object(Point3{1, 1, 1}), {6, 2, 1});
+    expect_near(placed.world_from_object()(Point3{1, 1, 1}), {6, 2, 1});
 }
 
 // A difference of [a, b, c] is a minus the merge of b and c, which is (a - b) - c.
@@ -118,7 +118,7 @@ objects:
     EXPECT_EQ(a.shape.get(), b.shape.get());  // one pillar, placed twice
     const auto& c = std::get<Transformed>(scene.objects[2].shape);
     EXPECT_EQ(c.shape.get(), a.shape.get());  // the instance of an instance composes
-    expect_near(c.world_from_object(Point3{0, 1, 0}), {0, 2, 3});
+    expect_near(c.world_from_object()(Point3{0, 1, 0}), {0, 2, 3});
 }
 
 }  // namespace

@@ -276,20 +276,22 @@ std::variant<Polygon, std::string> make_polygon(std::vector<Point3> vertices, In
 
     const double a[3] = {std::abs(n.x), std::abs(n.y), std::abs(n.z)};
     const int dominant = a[0] >= a[1] && a[0] >= a[2] ? 0 : (a[1] >= a[2] ? 1 : 2);
-    polygon.axis_u = (dominant + 1) % 3;
-    polygon.axis_v = (dominant + 2) % 3;
-    polygon.projected.reserve(vertices.size());
-    polygon.projected_min = {kInfinity, kInfinity};
-    polygon.projected_max = {-kInfinity, -kInfinity};
+    polygon.axis_u = std::uint8_t((dominant + 1) % 3);
+    polygon.axis_v = std::uint8_t((dominant + 2) % 3);
+    PolygonOutline outline;
+    outline.projected.reserve(vertices.size());
+    outline.projected_min = {kInfinity, kInfinity};
+    outline.projected_max = {-kInfinity, -kInfinity};
     for (const Point3& p : vertices) {
         const Point2 q{p[polygon.axis_u], p[polygon.axis_v]};
-        polygon.projected.push_back(q);
-        polygon.projected_min = {std::min(polygon.projected_min.x, q.x),
-                                 std::min(polygon.projected_min.y, q.y)};
-        polygon.projected_max = {std::max(polygon.projected_max.x, q.x),
-                                 std::max(polygon.projected_max.y, q.y)};
+        outline.projected.push_back(q);
+        outline.projected_min = {std::min(outline.projected_min.x, q.x),
+                                 std::min(outline.projected_min.y, q.y)};
+        outline.projected_max = {std::max(outline.projected_max.x, q.x),
+                                 std::max(outline.projected_max.y, q.y)};
     }
-    polygon.bands = edge_bands(polygon.projected, polygon.projected_min, polygon.projected_max);
+    outline.bands = edge_bands(outline.projected, outline.projected_min, outline.projected_max);
+    polygon.outline = std::make_shared<const PolygonOutline>(std::move(outline));
     polygon.vertices = std::move(vertices);
     return polygon;
 }
@@ -312,13 +314,14 @@ std::optional<ShapeHit> Polygon::intersect(const Ray& ray, Interval t_range) con
     const double u = ray.origin[axis_u] + t * ray.direction[axis_u];
     const double v = ray.origin[axis_v] + t * ray.direction[axis_v];
     // Outside the bounds is outside; a point on them may still be inside (see crossing_count).
-    if (!(u >= projected_min.x && u <= projected_max.x && v >= projected_min.y &&
-          v <= projected_max.y)) {
+    const PolygonOutline& o = *outline;
+    if (!(u >= o.projected_min.x && u <= o.projected_max.x && v >= o.projected_min.y &&
+          v <= o.projected_max.y)) {
         return std::nullopt;
     }
-    const bool inside = inside_test == InsideTest::even_odd && !bands.start.empty()
-                            ? crossing_count(projected, bands, u, v) % 2 == 1
-                            : inside_outline(projected, u, v, inside_test);
+    const bool inside = inside_test == InsideTest::even_odd && !o.bands.start.empty()
+                            ? crossing_count(o.projected, o.bands, u, v) % 2 == 1
+                            : inside_outline(o.projected, u, v, inside_test);
     if (!inside) return std::nullopt;
     return ShapeHit{float(t)};
 }

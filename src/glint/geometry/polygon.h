@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <span>
 #include <string>
@@ -46,6 +47,14 @@ struct EdgeBands {
 // Outlines of at least this many vertices get EdgeBands (the gears' 144-gons).
 inline constexpr std::size_t kBandedOutline = 16;
 
+// The outline projected along the normal's dominant axis, for the 2D inside test: built once by
+// make_polygon and shared by the polygon's copies, so that a Shape stays small.
+struct PolygonOutline {
+    std::vector<Point2> projected;        // (vertices[i][axis_u], vertices[i][axis_v])
+    Point2 projected_min, projected_max;  // bounds of `projected`, for a quick rejection
+    EdgeBands bands;                      // of `projected`, for large outlines
+};
+
 struct Polygon {
     // Build with make_polygon(); the fields after inside_test are precomputed for intersection.
     std::vector<Point3> vertices;  // as given, in order; the last joins the first
@@ -59,10 +68,8 @@ struct Polygon {
     // The 2D test runs on the vertices projected along the normal's dominant axis, keeping axes
     // axis_u and axis_v in cyclic order: projecting scales areas by |normal[dominant]| >= 1/sqrt 3
     // and never folds the outline.
-    int axis_u = 0, axis_v = 1;
-    std::vector<Point2> projected;        // (vertices[i][axis_u], vertices[i][axis_v])
-    Point2 projected_min, projected_max;  // bounds of `projected`, for a quick rejection
-    EdgeBands bands;                      // of `projected`, for large outlines
+    std::uint8_t axis_u = 0, axis_v = 1;
+    std::shared_ptr<const PolygonOutline> outline;  // never null once made
 
     Bounds3 bounds() const;
     // The notes' plane step t = -(D + N.P0) / (N.R), then the inside test on the projected hit

@@ -29,11 +29,11 @@ Bounds3 Transformed::bounds() const {
     if (!b.is_finite()) {
         return {{-kInfinity, -kInfinity, -kInfinity}, {kInfinity, kInfinity, kInfinity}};
     }
-    return world_from_object(b);
+    return world_from_object()(b);
 }
 
 std::optional<ShapeHit> Transformed::intersect(const Ray& ray, Interval t_range) const {
-    const ObjectRay o = to_object(world_from_object, ray);
+    const ObjectRay o = to_object(world_from_object(), ray);
     Interval object_range{t_range.min * o.scale, t_range.max * o.scale};
     // Rounding in the two scalings must not move the hit outside the caller's range. A hit that
     // lands just before it is the one the caller has (a CSG walk asks for the crossing after
@@ -53,13 +53,13 @@ std::optional<ShapeHit> Transformed::intersect(const Ray& ray, Interval t_range)
 }
 
 SurfacePoint Transformed::surface_at(const Ray& ray, const ShapeHit& hit) const {
-    const ObjectRay o = to_object(world_from_object, ray);
+    const ObjectRay o = to_object(world_from_object(), ray);
     ShapeHit object_hit = hit;
     object_hit.t = hit.t * o.scale;
     SurfacePoint sp = glint::surface_at(*shape, o.ray, object_hit);
-    sp.p = world_from_object(sp.p);
-    sp.normal = normalize(world_from_object(sp.normal));
-    sp.shading_normal = normalize(world_from_object(sp.shading_normal));
+    sp.p = world_from_object()(sp.p);
+    sp.normal = normalize(world_from_object()(sp.normal));
+    sp.shading_normal = normalize(world_from_object()(sp.shading_normal));
     return sp;
 }
 

@@ -4,6 +4,7 @@
 
 #include <memory>
 #include <optional>
+#include <utility>
 
 #include "glint/geometry/surface_point.h"
 #include "glint/math/bounds.h"
@@ -16,8 +17,14 @@ namespace glint {
 struct Shape;
 
 struct Transformed {
-    Transform world_from_object;
-    std::shared_ptr<const Shape> shape;  // never null
+    Transformed(const Transform& placement, std::shared_ptr<const Shape> placed)
+        : transform(std::make_shared<const Transform>(placement)), shape(std::move(placed)) {}
+
+    const Transform& world_from_object() const { return *transform; }
+
+    // Held by pointer, as the shape is: two matrices inline would make every Shape 144 bytes.
+    std::shared_ptr<const Transform> transform;  // never null
+    std::shared_ptr<const Shape> shape;          // never null
 
     // The transformed box of the shape's bounds; unbounded shapes stay unbounded.
     Bounds3 bounds() const;

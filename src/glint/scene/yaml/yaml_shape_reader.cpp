@@ -31,7 +31,8 @@ std::string count_of(std::size_t n, const char* what) {
 // nesting another level.
 Shape place(Shape shape, const Transform& world_from_object) {
     if (auto* placed = std::get_if<Transformed>(&shape)) {
-        placed->world_from_object = world_from_object * placed->world_from_object;
+        placed->transform =
+            std::make_shared<const Transform>(world_from_object * placed->world_from_object());
         return shape;
     }
     return Transformed{world_from_object, std::make_shared<const Shape>(std::move(shape))};
