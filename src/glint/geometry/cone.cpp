@@ -22,9 +22,7 @@ enum Part : std::uint32_t { kSide = 0, kBaseCap = 1, kApexCap = 2 };
 // between them (a ray through the rim is accepted by one or the other).
 constexpr float kSeamTolerance = 1e-6f;
 
-// What surface_at derives from the description, in the frame of the axis, in double. (intersect
-// works in double too, where the side's quadratic cancels for rays nearly parallel to the side or
-// the axis, but without normalising the axis.)
+// What surface_at derives from the description, in the frame of the axis, in double.
 struct Frustum {
     Vector3d mid;  // the axis' midpoint
     Vector3d axis;
@@ -39,12 +37,9 @@ Frustum frustum_of(const Cone& cone) {
     const Vector3d base(cone.base), apex(cone.apex);
     const Vector3d along = apex - base;
     const double axis_length = std::sqrt(dot(along, along));
-    // A cylinder's slope is 0 without the division.
-    const double slope = cone.apex_radius == cone.base_radius
-                             ? 0.0
-                             : (double{cone.apex_radius} - cone.base_radius) / axis_length;
-    return {(base + apex) * 0.5, along * (1 / axis_length), 0.5 * axis_length,
-            cone.base_radius,    cone.apex_radius,          slope};
+    return {(base + apex) * 0.5, along * (1 / axis_length),
+            0.5 * axis_length,   cone.base_radius,
+            cone.apex_radius,    (double{cone.apex_radius} - cone.base_radius) / axis_length};
 }
 
 // Whether the ray's line passes the axis' line farther than the wider radius: then it misses the
@@ -75,6 +70,7 @@ Bounds3 Cone::bounds() const {
 
 std::optional<ShapeHit> Cone::intersect(const Ray& ray, Interval t_range) const {
     if (passes_clear(*this, ray)) return std::nullopt;
+    // In double: the side's quadratic cancels for rays nearly parallel to the side or the axis.
     // Heights along the axis are taken against the unnormalised axis A = apex - base and scaled
     // back by 1 / |A|^2 where they pair up: no square root, one division.
     const Vector3d base_d(base), apex_d(apex);
