@@ -17,13 +17,9 @@ namespace glint {
 namespace {
 
 #ifdef GLINT_SPHERE_BLOCK_HAS_SIMD
-// The SIMD form as the AVX2 and AVX-512 traversals compile it.
+// The SIMD form as the AVX2 traversal compiles it.
 __attribute__((target("avx2"))) BlockHit nearest_avx2(const SphereTester& tester,
                                                       const SphereBlock& b, Interval range) {
-    return tester.nearest<true>(b, range, kEveryLane);
-}
-__attribute__((target("avx2,avx512f,avx512vl,avx512bw,avx512dq"))) BlockHit nearest_avx512(
-    const SphereTester& tester, const SphereBlock& b, Interval range) {
     return tester.nearest<true>(b, range, kEveryLane);
 }
 #endif
@@ -37,7 +33,6 @@ void expect_lane_equals_scalar(const Sphere& sphere, const Ray& ray, Interval ra
                               tester.nearest<true>(block, range, kEveryLane)};
 #ifdef GLINT_SPHERE_BLOCK_HAS_SIMD
     if (simd_path_supported(SimdPath::avx2)) got.push_back(nearest_avx2(tester, block, range));
-    if (simd_path_supported(SimdPath::avx512)) got.push_back(nearest_avx512(tester, block, range));
 #endif
     for (const auto& hit : got) {
         ASSERT_EQ(bool(hit), expected.has_value());

@@ -30,11 +30,6 @@ __attribute__((target("avx2"))) BlockHit nearest_avx2(const BlockTester& tester,
                                                       const TriangleBlock& b, Interval range) {
     return tester.nearest<true>(b, range, kEveryLane);
 }
-// And as the AVX-512 one does (EVEX encoding).
-__attribute__((target("avx2,avx512f,avx512vl,avx512bw,avx512dq"))) BlockHit nearest_avx512(
-    const BlockTester& tester, const TriangleBlock& b, Interval range) {
-    return tester.nearest<true>(b, range, kEveryLane);
-}
 #endif
 
 // Each lane alone: the block holds only it, so nearest() reports that lane's own hit.
@@ -47,7 +42,6 @@ void expect_lane_equals_scalar(const Corners& c, const Ray& ray, Interval range,
                               nearest<true>(tester, block, range)};
 #ifdef GLINT_TRIANGLE_BLOCK_HAS_SIMD
     if (simd_path_supported(SimdPath::avx2)) got.push_back(nearest_avx2(tester, block, range));
-    if (simd_path_supported(SimdPath::avx512)) got.push_back(nearest_avx512(tester, block, range));
 #endif
     for (const auto& hit : got) {
         ASSERT_EQ(bool(hit), expected.has_value());

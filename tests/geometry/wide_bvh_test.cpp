@@ -451,11 +451,6 @@ __attribute__((target("avx2"))) unsigned avx2_node_test(const WideBvhNode& node,
                                                         float t_min, float t_max, float* t_near) {
     return wide_bvh::Avx2Kernel::test(node, wide_bvh::Avx2Kernel::Ray(r), t_min, t_max, t_near);
 }
-// The same as the avx512 path compiles it (EVEX encoding).
-__attribute__((target("avx2,avx512f,avx512vl,avx512bw,avx512dq"))) unsigned avx512_node_test(
-    const WideBvhNode& node, const BvhRay& r, float t_min, float t_max, float* t_near) {
-    return wide_bvh::Avx2Kernel::test(node, wide_bvh::Avx2Kernel::Ray(r), t_min, t_max, t_near);
-}
 #endif
 
 TEST(WideBvh, NodeTestKernelsAgreeWithSlabHitBitForBit) {
@@ -505,11 +500,6 @@ TEST(WideBvh, NodeTestKernelsAgreeWithSlabHitBitForBit) {
             alignas(32) float avx2_t[kWideBvhWidth];
             ASSERT_EQ(avx2_node_test(node, r, t_min, t_max, avx2_t), scalar) << "ray " << i;
             ASSERT_EQ(std::memcmp(avx2_t, scalar_t, sizeof scalar_t), 0) << "ray " << i;
-        }
-        if (simd_path_supported(SimdPath::avx512)) {
-            alignas(32) float avx512_t[kWideBvhWidth];
-            ASSERT_EQ(avx512_node_test(node, r, t_min, t_max, avx512_t), scalar) << "ray " << i;
-            ASSERT_EQ(std::memcmp(avx512_t, scalar_t, sizeof scalar_t), 0) << "ray " << i;
         }
 #endif
     }
@@ -639,7 +629,6 @@ TEST(SimdPath, ScalarIsAlwaysSupportedAndSwitchable) {
     EXPECT_TRUE(simd_path_supported(best_simd_path()));
     EXPECT_TRUE(set_simd_path(saved));
     EXPECT_EQ(simd_path_name(SimdPath::avx2), "avx2");
-    EXPECT_EQ(simd_path_name(SimdPath::avx512), "avx512");
 }
 
 }  // namespace

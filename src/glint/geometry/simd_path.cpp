@@ -16,8 +16,6 @@ std::string_view simd_path_name(SimdPath path) {
             return "sse";
         case SimdPath::avx2:
             return "avx2";
-        case SimdPath::avx512:
-            return "avx512";
     }
     return "unknown";
 }
@@ -32,10 +30,6 @@ bool simd_path_supported(SimdPath path) {
             return true;
         case SimdPath::avx2:
             return __builtin_cpu_supports("avx2");
-        case SimdPath::avx512:
-            return __builtin_cpu_supports("avx2") && __builtin_cpu_supports("avx512f") &&
-                   __builtin_cpu_supports("avx512vl") && __builtin_cpu_supports("avx512bw") &&
-                   __builtin_cpu_supports("avx512dq");
     }
     return false;
 #else
@@ -44,7 +38,6 @@ bool simd_path_supported(SimdPath path) {
 }
 
 SimdPath best_simd_path() {
-    if (simd_path_supported(SimdPath::avx512)) return SimdPath::avx512;
     if (simd_path_supported(SimdPath::avx2)) return SimdPath::avx2;
     if (simd_path_supported(SimdPath::sse)) return SimdPath::sse;
     return SimdPath::scalar;

@@ -12,15 +12,13 @@ namespace glint {
 enum class SimdPath : std::uint8_t {
     scalar,  // portable C++, one box at a time; the only path off x86-64
     sse,     // four boxes at once in 128-bit registers (every x86-64 CPU has SSE2)
-    avx2,    // eight boxes at once in 256-bit registers, for CPUs that report AVX2
-    // The AVX2 kernels EVEX-encoded, for CPUs with AVX-512 (F, VL, BW, DQ): 32 vector registers,
-    // so the node and leaf tests' rays both stay in registers. Still 256-bit operations.
-    avx512,
+    // Eight boxes at once in 256-bit registers, for CPUs that report AVX2; also on CPUs with
+    // AVX-512, where the same kernels EVEX-encoded ran 0.9-0.95x as fast (bench/README.md).
+    avx2,
 };
 
 // Every path, slowest first (for tests and benchmarks that try each one this CPU supports).
-inline constexpr SimdPath kSimdPaths[] = {SimdPath::scalar, SimdPath::sse, SimdPath::avx2,
-                                          SimdPath::avx512};
+inline constexpr SimdPath kSimdPaths[] = {SimdPath::scalar, SimdPath::sse, SimdPath::avx2};
 
 std::string_view simd_path_name(SimdPath path);
 

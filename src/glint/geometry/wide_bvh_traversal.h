@@ -182,13 +182,6 @@ __attribute__((target("avx2"))) bool query_avx2(const WideBvh& bvh, const Ray& r
                                                 Interval t_range, Visit& visit) {
     return query<Avx2Kernel, kAny>(bvh, ray, t_range, visit);
 }
-// The AVX2 kernels again, EVEX-encoded: AVX-512's 32 vector registers hold both the node test's
-// ray and a leaf test's without spilling either.
-template <bool kAny, typename Visit>
-__attribute__((target("avx2,avx512f,avx512vl,avx512bw,avx512dq"))) bool query_avx512(
-    const WideBvh& bvh, const Ray& ray, Interval t_range, Visit& visit) {
-    return query<Avx2Kernel, kAny>(bvh, ray, t_range, visit);
-}
 #endif
 
 // The query on the SIMD path in use.
@@ -197,8 +190,6 @@ bool query_on_path(const WideBvh& bvh, const Ray& ray, Interval t_range, Visit& 
     if (bvh.nodes.empty()) return false;
 #ifdef GLINT_WIDE_BVH_HAS_SIMD
     switch (simd_path()) {
-        case SimdPath::avx512:
-            return query_avx512<kAny>(bvh, ray, t_range, visit);
         case SimdPath::avx2:
             return query_avx2<kAny>(bvh, ray, t_range, visit);
         case SimdPath::sse:
@@ -215,9 +206,9 @@ bool query_on_path(const WideBvh& bvh, const Ray& ray, Interval t_range, Visit& 
 // Closest hit, leaf by leaf. visit(kernel, leaf, count, Interval& range) tests the leaf `leaf` (a
 // child reference with kWideLeaf set; `count` its entries) and, when it finds a nearer hit in
 // range, brings range.max to it (so later calls only report nearer, or equally near, hits).
-// `kernel` is the node test's (wide_bvh::ScalarKernel, SseKernel or Avx2Kernel, which the avx512
-// path runs too): the path this traversal runs on, for leaf tests that have SIMD forms too (its
-// kSimd). The caller keeps what it found. Allocates nothing.
+// `kernel` is the node test's (wide_bvh::ScalarKernel, SseKernel or Avx2Kernel): the path this
+// traversal runs on, for leaf tests that have SIMD forms too (its kSimd). The caller keeps what
+// it found. Allocates nothing.
 template <typename VisitLeaf>
 void bvh_closest_leaf(const WideBvh& bvh, const Ray& ray, Interval t_range, VisitLeaf&& visit) {
     wide_bvh::query_on_path<false>(bvh, ray, t_range, visit);
