@@ -13,7 +13,8 @@ enum class SimdPath : std::uint8_t {
     scalar,  // portable C++, one box at a time; the only path off x86-64
     sse,     // four boxes at once in 128-bit registers (every x86-64 CPU has SSE2)
     // Eight boxes at once in 256-bit registers, for CPUs that report AVX2; also on CPUs with
-    // AVX-512, where the same kernels EVEX-encoded ran 0.9-0.95x as fast (bench/README.md).
+    // AVX-512, where the same kernels EVEX-encoded were slower on 71 of the 75 rows of the
+    // Embree benchmark (0.81-0.99x; bench/README.md).
     avx2,
 };
 
