@@ -16,13 +16,18 @@ namespace {
 constexpr std::size_t kHugePage = std::size_t(2) << 20;
 
 std::size_t round_up(std::size_t bytes) { return (bytes + kHugePage - 1) / kHugePage * kHugePage; }
+
+// Which blocks are mapped by hand; the others come from operator new.
+bool on_huge_pages(std::size_t bytes, std::size_t alignment) {
+    return bytes >= kHugePage && alignment <= kHugePage;
+}
 #endif
 
 }  // namespace
 
 void* allocate_large(std::size_t bytes, std::size_t alignment) {
 #ifdef GLINT_HUGE_PAGES
-    if (bytes >= kHugePage && alignment <= kHugePage) {
+    if (on_huge_pages(bytes, alignment)) {
         if (bytes > std::size_t(-1) - 2 * kHugePage) throw std::bad_alloc();
         const std::size_t size = round_up(bytes);
         // One huge page more than needed, so that a 2 MiB boundary lies in the first; the slack
@@ -31,7 +36,7 @@ void* allocate_large(std::size_t bytes, std::size_t alignment) {
                             MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
         if (mapped == MAP_FAILED) throw std::bad_alloc();
         const auto begin = reinterpret_cast<std::uintptr_t>(mapped);
-        const std::uintptr_t start = (begin + kHugePage - 1) / kHugePage * kHugePage;
+        const std::uintptr_t start = round_up(begin);
         if (start > begin) munmap(mapped, start - begin);
         if (const std::size_t after = begin + kHugePage - start; after > 0)
             munmap(reinterpret_cast<void*>(start + size), after);
@@ -45,7 +50,7 @@ void* allocate_large(std::size_t bytes, std::size_t alignment) {
 
 void deallocate_large(void* p, std::size_t bytes, std::size_t alignment) noexcept {
 #ifdef GLINT_HUGE_PAGES
-    if (bytes >= kHugePage && alignment <= kHugePage) {
+    if (on_huge_pages(bytes, alignment)) {
         munmap(p, round_up(bytes));
         return;
     }
