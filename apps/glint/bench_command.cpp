@@ -98,6 +98,11 @@ std::vector<AccelKind> chosen_structures(const BenchCommand& c) {
     return kinds;
 }
 
+// Whether the set is to be traced: all are when none is named.
+bool chosen(const std::vector<std::string>& names, std::string_view set) {
+    return names.empty() || std::find(names.begin(), names.end(), set) != names.end();
+}
+
 }  // namespace
 
 CLI::App* add_bench_command(CLI::App& app, BenchCommand& c) {
@@ -115,6 +120,13 @@ CLI::App* add_bench_command(CLI::App& app, BenchCommand& c) {
         ->delimiter(',')
         ->allow_extra_args(false)  // `--accel bvh SCENE`: SCENE is not a structure
         ->check(CLI::IsMember(names));
+    bench
+        ->add_option("--ray-set", c.ray_sets,
+                     "Ray sets to trace (repeat the option, or separate names with commas); "
+                     "default: all three")
+        ->delimiter(',')
+        ->allow_extra_args(false)
+        ->check(CLI::IsMember({"primary", "incoherent", "shadow"}));
     bench->add_option("--threads", c.threads, "The 'all threads' count; 0 uses every core")
         ->check(CLI::Range(0, 4096));
     bench->add_option("--rays", c.rays, "Rays in each set (primary, incoherent, shadow)")
@@ -169,6 +181,7 @@ int run_bench(const BenchCommand& command) {
                 const std::size_t bytes =
                     build.aggregate->memory_bytes() + (name == "embree" ? 0 : mesh_bytes);
                 for (const RaySet& set : sets.sets) {
+                    if (!chosen(command.ray_sets, set.name)) continue;
                     const TraceMeasure trace =
                         measure_trace(*build.aggregate, set, threads, kRepetitions);
                     const Row row{name,

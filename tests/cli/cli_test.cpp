@@ -270,6 +270,38 @@ TEST_F(Cli, BenchPrintsOneJsonLinePerStructureRaySetAndThreadCount) {
     EXPECT_EQ(r.err, "");
 }
 
+// --ray-set traces only the sets named, and each as in a full run.
+TEST_F(Cli, BenchRaySetTracesOnlyTheSetsNamed) {
+    const std::string jacks = std::string("'") + GLINT_SOURCE_DIR + "/tests/data/spd/jacks.nff'";
+    const std::string common = "bench " + jacks + " --json --rays 1000 --threads 1 --accel bvh";
+    const Outcome all = run_glint(common);
+    const Outcome shadow = run_glint(common + " --ray-set shadow");
+    const Outcome two = run_glint(common + " --ray-set primary,shadow");
+    ASSERT_EQ(all.exit_code, 0) << all.err;
+    ASSERT_EQ(shadow.exit_code, 0) << shadow.err;
+    ASSERT_EQ(two.exit_code, 0) << two.err;
+    const auto hits_by_set = [](const std::string& out) {
+        std::map<std::string, std::string> hits;
+        std::istringstream lines(out);
+        std::string line;
+        while (std::getline(lines, line)) {
+            const auto field = [&](const std::string& key) {
+                const std::size_t at = line.find("\"" + key + "\": ") + key.size() + 4;
+                return line.substr(at, line.find_first_of(",}", at) - at);
+            };
+            hits[field("rays")] = field("hits");
+        }
+        return hits;
+    };
+    const auto every = hits_by_set(all.out);
+    ASSERT_EQ(every.size(), 3u);
+    EXPECT_EQ(hits_by_set(shadow.out),
+              (std::map<std::string, std::string>{{"\"shadow\"", every.at("\"shadow\"")}}));
+    EXPECT_EQ(hits_by_set(two.out),
+              (std::map<std::string, std::string>{{"\"primary\"", every.at("\"primary\"")},
+                                                  {"\"shadow\"", every.at("\"shadow\"")}}));
+}
+
 TEST_F(Cli, BenchTableAndBadInput) {
     const std::string jacks = std::string("'") + GLINT_SOURCE_DIR + "/tests/data/spd/jacks.nff'";
     const Outcome table = run_glint("bench " + jacks + " --rays 500 --threads 1 --accel list");
@@ -278,6 +310,7 @@ TEST_F(Cli, BenchTableAndBadInput) {
     EXPECT_NE(table.out.find("hit counts agree"), std::string::npos) << table.out;
 
     EXPECT_EQ(run_glint("bench " + jacks + " --accel octree").exit_code, 2);
+    EXPECT_EQ(run_glint("bench " + jacks + " --ray-set diffuse").exit_code, 2);
     EXPECT_EQ(run_glint("bench " + jacks + " --rays 0").exit_code, 2);
     write_scene("bad.nff", "v\nfrom 0 0 -5\nat 0 0 0\nup 0 1 0\nangle x\n");
     const Outcome bad = run_glint("bench bad.nff");
