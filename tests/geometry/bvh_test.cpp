@@ -132,6 +132,43 @@ TEST(Bvh, TwoSeparateBoxesAreSplitAlongTheirAxis) {
     expect_valid(bvh, b, 1);
 }
 
+// Two rows of boxes, 4 apart in y and spread over 12 in x: the longest centroid axis is x, but
+// the split that SAH prefers separates the rows, along y. The binning tries every axis.
+TEST(Bvh, SplitsAlongTheCheapestAxisNotJustTheLongest) {
+    std::vector<Bounds3> b;
+    for (int row = 0; row < 2; ++row)
+        for (int i = 0; i < 4; ++i) {
+            const float x = 4.0f * float(i), y = 4.0f * float(row);
+            b.push_back({{x, y, 0}, {x + 1, y + 1, 1}});
+        }
+    BvhBuildOptions options;
+    options.max_leaf_size = 4;
+    const Bvh bvh = build_bvh(b, options);
+    expect_valid(bvh, b);
+    ASSERT_GT(bvh.nodes.size(), 1u);
+    EXPECT_EQ(bvh.nodes[0].axis, 1);
+    const BvhNode& first = bvh.nodes[1];
+    const BvhNode& second = bvh.nodes[bvh.nodes[0].offset];
+    EXPECT_EQ(first.bounds.max.y, 1.0f);   // the row at y = 0 ...
+    EXPECT_EQ(second.bounds.min.y, 4.0f);  // ... and the row at y = 4
+}
+
+// A jack: three thin bars crossing at one point. Their centroids coincide, so no centroid plane
+// separates them; binned by their boxes' lower corners they still go to leaves of their own
+// (one leaf of all three would be tested by every ray through their common box).
+TEST(Bvh, ShapesWithOneCentroidButDifferentBoxesAreSeparated) {
+    const std::vector<Bounds3> b{{{-1, -0.1f, -0.1f}, {1, 0.1f, 0.1f}},
+                                 {{-0.1f, -1, -0.1f}, {0.1f, 1, 0.1f}},
+                                 {{-0.1f, -0.1f, -1}, {0.1f, 0.1f, 1}}};
+    const Bvh bvh = build_bvh(b);
+    expect_valid(bvh, b);
+    for (const BvhNode& n : bvh.nodes) {
+        if (n.is_leaf()) {
+            EXPECT_EQ(n.count, 1);
+        }
+    }
+}
+
 TEST(Bvh, AMillionCoincidentPrimitivesTerminateWithSmallLeaves) {
     const std::vector<Bounds3> b(1'000'000, Bounds3{{1, 2, 3}, {1, 2, 3}});  // zero extent too
     const Bvh bvh = build_bvh(b);

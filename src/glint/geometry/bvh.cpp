@@ -29,6 +29,7 @@ constexpr std::uint32_t kParallelSubtree = 1u << 12;
 // A box in two SIMD registers (GCC vector extensions; lane 3 unused), so that growing one by
 // another is two instructions. grow() takes min and max exactly as merge(Bounds3, Bounds3) does.
 typedef float Float4 __attribute__((vector_size(16)));
+typedef int Int4 __attribute__((vector_size(16)));
 
 Float4 splat(float x) { return Float4{x, x, x, x}; }
 
@@ -63,11 +64,10 @@ struct Box {
 
 struct Bin {
     Box bounds;
-    Box centroids;
     std::uint32_t count;
     std::uint32_t blocked;  // of them, of kind 1
 
-    static Bin empty() { return {Box::empty(), Box::empty(), 0, 0}; }
+    static Bin empty() { return {Box::empty(), 0, 0}; }
 };
 
 // A range of Bvh::primitive_indices with the union of its boxes and of its centroids.
@@ -167,25 +167,34 @@ public:
 
 private:
     // The union of the boxes and of the centroids of r's primitives, into r.
-    void measure(Range& r) const {
-        const auto fold = [&](std::uint32_t b, std::uint32_t e, Box& bounds, Box& cent) {
+    void measure(Range& r) const { fold(r, true); }
+    // The union of the centroids alone (the boxes' is known).
+    void measure_centroids(Range& r) const { fold(r, false); }
+
+    void fold(Range& r, bool with_bounds) const {
+        const auto over = [&](std::uint32_t b, std::uint32_t e, Box& bounds, Box& cent) {
             for (std::uint32_t i = b; i < e; ++i) {
                 const std::uint32_t p = indices_[i];
-                bounds.grow(boxes_[p]);
+                if (with_bounds) bounds.grow(boxes_[p]);
                 cent.grow(centroids_[p]);
             }
         };
-        r.bounds = r.centroids = Box::empty();
-        if (r.size() < kParallelRange) return fold(r.begin, r.end, r.bounds, r.centroids);
-        std::vector<Box> bounds(blocks_of(r.size()), Box::empty()), cents(bounds);
-        for_blocks(r.begin, r.end, [&](std::uint32_t b, std::uint32_t e, std::uint32_t k) {
-            fold(b, e, bounds[k], cents[k]);
-        });
-        // In block order: with NaN coordinates, min and max depend on the order they are taken in.
-        for (std::size_t k = 0; k < bounds.size(); ++k) {
-            r.bounds.grow(bounds[k]);
-            r.centroids.grow(cents[k]);
+        Box bounds = Box::empty(), centroids = Box::empty();
+        if (r.size() < kParallelRange) {
+            over(r.begin, r.end, bounds, centroids);
+        } else {
+            std::vector<Box> block_bounds(blocks_of(r.size()), Box::empty()), cents(block_bounds);
+            for_blocks(r.begin, r.end, [&](std::uint32_t b, std::uint32_t e, std::uint32_t k) {
+                over(b, e, block_bounds[k], cents[k]);
+            });
+            // In block order: with NaN coordinates, min and max depend on the order taken in.
+            for (std::size_t k = 0; k < cents.size(); ++k) {
+                bounds.grow(block_bounds[k]);
+                centroids.grow(cents[k]);
+            }
         }
+        if (with_bounds) r.bounds = bounds;
+        r.centroids = centroids;
     }
 
     static int longest_axis(const Box& b) {
@@ -201,11 +210,8 @@ private:
     bool split(const Range& r, int depth, Range& left, Range& right, int& axis) {
         const std::uint32_t count = r.size();
         if (count <= 1) return false;
+        if (depth < kSahDepthLimit && sah_split(r, left, right, axis)) return true;
         axis = longest_axis(r.centroids);
-        const float extent = r.centroids.hi[axis] - r.centroids.lo[axis];
-        if (depth < kSahDepthLimit && extent > 0 && std::isfinite(extent)) {
-            if (sah_split(r, axis, left, right)) return true;
-        }
         if (count > max_leaf_) {
             median_split(r, axis, left, right);
             return true;
@@ -250,86 +256,143 @@ private:
     }
 
     using Bins = std::array<Bin, kMaxBins>;
+    using AxisBins = std::array<Bins, 3>;
 
-    void bin_block(std::uint32_t b, std::uint32_t e, int axis, float lo, float scale, int count,
-                   Bins& bins) const {
+    // Where the bins of each axis lie: `count` bins over the centroids' extent on that axis. An
+    // axis whose extent is zero (or not finite) has no candidates. Where the centroids coincide,
+    // the boxes' lower corners are binned instead (by_corner): concentric shapes whose boxes
+    // differ, such as a jack's three crossed cylinders, can still be told apart.
+    struct Binning {
+        int count = 0;
+        bool by_corner = false;
+        bool used[3] = {};
+        float lo[3] = {}, scale[3] = {};
+    };
+
+    Float4 key(std::uint32_t p, const Binning& g) const {
+        return g.by_corner ? boxes_[p].lo : centroids_[p];
+    }
+
+    // Sets g's axes over the extent of `points`; false when no axis has one.
+    static bool place_bins(const Box& points, Binning& g) {
+        bool any = false;
+        for (int a = 0; a < 3; ++a) {
+            const float extent = points.hi[a] - points.lo[a];
+            g.used[a] = extent > 0 && std::isfinite(extent);
+            g.lo[a] = points.lo[a];
+            g.scale[a] = g.used[a] ? float(g.count) / extent : 0;
+            any = any || g.used[a];
+        }
+        return any;
+    }
+
+    void bin_block(std::uint32_t b, std::uint32_t e, const Binning& g, AxisBins& bins) const {
+        // bin_of on all three axes at once: the same operations lane by lane.
+        const Float4 lo{g.lo[0], g.lo[1], g.lo[2], 0};
+        const Float4 scale{g.scale[0], g.scale[1], g.scale[2], 0};
+        const Float4 last = splat(float(g.count - 1));
         for (std::uint32_t i = b; i < e; ++i) {
             const std::uint32_t p = indices_[i];
-            Bin& bin = bins[std::size_t(bin_of(centroids_[p], axis, lo, scale, count))];
-            bin.bounds.grow(boxes_[p]);
-            bin.centroids.grow(centroids_[p]);
-            ++bin.count;
-            bin.blocked += blocked(p);
+            const std::uint32_t is_blocked = blocked(p);
+            const Float4 f = (key(p, g) - lo) * scale;
+            const Float4 positive = f > 0 ? f : splat(0);  // NaN too goes to the first bin
+            const Int4 index = __builtin_convertvector(positive < last ? positive : last, Int4);
+            for (int axis = 0; axis < 3; ++axis) {
+                if (!g.used[axis]) continue;
+                Bin& bin = bins[std::size_t(axis)][std::size_t(index[axis])];
+                bin.bounds.grow(boxes_[p]);
+                ++bin.count;
+                bin.blocked += is_blocked;
+            }
         }
     }
 
-    // Partitions r by the cheapest SAH plane and fills in both halves, or returns false when a
-    // leaf is cheaper.
-    bool sah_split(const Range& r, int axis, Range& left, Range& right) {
+    // Partitions r by the cheapest SAH plane of the three axes (in axis order at equal cost;
+    // Embree's binned builder tries all three too) and fills in both halves, setting `axis`, or
+    // returns false when a leaf is cheaper or no axis has an extent.
+    bool sah_split(const Range& r, Range& left, Range& right, int& axis) {
+        Binning g;
         // Small ranges need fewer candidates: most bins would be empty.
-        const int count = std::min(bins_, std::max(4, 2 * int(r.size())));
-        Bins bins;
-        for (int k = 0; k < count; ++k) bins[std::size_t(k)] = Bin::empty();
-        const float lo = r.centroids.lo[axis];
-        const float scale = float(count) / (r.centroids.hi[axis] - lo);
+        g.count = std::min(bins_, std::max(4, 2 * int(r.size())));
+        if (!place_bins(r.centroids, g)) {
+            Box corners = Box::empty();
+            for (std::uint32_t i = r.begin; i < r.end; ++i) corners.grow(boxes_[indices_[i]].lo);
+            g.by_corner = true;
+            if (!place_bins(corners, g)) return false;
+        }
+        const auto clear = [&](AxisBins& bins) {
+            for (int a = 0; a < 3; ++a)
+                for (int k = 0; k < g.count; ++k)
+                    bins[std::size_t(a)][std::size_t(k)] = Bin::empty();
+        };
+        AxisBins bins;
+        clear(bins);
         if (r.size() < kParallelRange) {
-            bin_block(r.begin, r.end, axis, lo, scale, count, bins);
+            bin_block(r.begin, r.end, g, bins);
         } else {
-            std::vector<Bins> partial(blocks_of(r.size()));
+            std::vector<AxisBins> partial(blocks_of(r.size()));
             for_blocks(r.begin, r.end, [&](std::uint32_t b, std::uint32_t e, std::uint32_t k) {
-                for (int j = 0; j < count; ++j) partial[k][std::size_t(j)] = Bin::empty();
-                bin_block(b, e, axis, lo, scale, count, partial[k]);
+                clear(partial[k]);
+                bin_block(b, e, g, partial[k]);
             });
-            for (const Bins& p : partial) {
-                for (int k = 0; k < count; ++k) {
-                    Bin& bin = bins[std::size_t(k)];
-                    bin.bounds.grow(p[std::size_t(k)].bounds);
-                    bin.centroids.grow(p[std::size_t(k)].centroids);
-                    bin.count += p[std::size_t(k)].count;
-                    bin.blocked += p[std::size_t(k)].blocked;
+            for (const AxisBins& p : partial) {
+                for (int a = 0; a < 3; ++a) {
+                    for (int k = 0; k < g.count; ++k) {
+                        Bin& bin = bins[std::size_t(a)][std::size_t(k)];
+                        const Bin& part = p[std::size_t(a)][std::size_t(k)];
+                        bin.bounds.grow(part.bounds);
+                        bin.count += part.count;
+                        bin.blocked += part.blocked;
+                    }
                 }
             }
         }
         // cost(split after bin k) = traversal + (A_left T_left + A_right T_right) / A_node, T the
         // leaf tests of a side, swept from both ends so that each candidate costs O(1).
-        std::array<float, kMaxBins> right_cost;
-        Box acc = Box::empty();
-        std::uint32_t n = 0, nb = 0;
-        for (int k = count - 1; k > 0; --k) {
-            acc.grow(bins[std::size_t(k)].bounds);
-            n += bins[std::size_t(k)].count;
-            nb += bins[std::size_t(k)].blocked;
-            right_cost[std::size_t(k - 1)] = acc.area() * tests(n, nb);
-        }
-        acc = Box::empty();
-        n = nb = 0;
+        const int count = g.count;
         float best_cost = kInfinity;
         int best = -1;
-        for (int k = 0; k < count - 1; ++k) {
-            acc.grow(bins[std::size_t(k)].bounds);
-            n += bins[std::size_t(k)].count;
-            nb += bins[std::size_t(k)].blocked;
-            const float cost = acc.area() * tests(n, nb) + right_cost[std::size_t(k)];
-            if (cost < best_cost) best_cost = cost, best = k;
+        std::uint32_t range_blocked = 0;
+        for (int a = 0; a < 3; ++a) {
+            if (!g.used[a]) continue;
+            const Bins& axis_bins = bins[std::size_t(a)];
+            std::array<float, kMaxBins> right_cost;
+            Box acc = Box::empty();
+            std::uint32_t n = 0, nb = 0;
+            for (int k = count - 1; k > 0; --k) {
+                acc.grow(axis_bins[std::size_t(k)].bounds);
+                n += axis_bins[std::size_t(k)].count;
+                nb += axis_bins[std::size_t(k)].blocked;
+                right_cost[std::size_t(k - 1)] = acc.area() * tests(n, nb);
+            }
+            range_blocked = nb + axis_bins[0].blocked;
+            acc = Box::empty();
+            n = nb = 0;
+            for (int k = 0; k < count - 1; ++k) {
+                acc.grow(axis_bins[std::size_t(k)].bounds);
+                n += axis_bins[std::size_t(k)].count;
+                nb += axis_bins[std::size_t(k)].blocked;
+                const float cost = acc.area() * tests(n, nb) + right_cost[std::size_t(k)];
+                if (cost < best_cost) best_cost = cost, best = k, axis = a;
+            }
         }
         const float area = r.bounds.area();
-        std::uint32_t range_blocked = 0;
-        for (int k = 0; k < count; ++k) range_blocked += bins[std::size_t(k)].blocked;
         const float leaf_cost = tests(r.size(), range_blocked);
         const float split_cost = traversal_cost_ + (area > 0 ? best_cost / area : 0);
         if (best < 0 || !(split_cost < leaf_cost)) return false;
 
-        const std::uint32_t mid = partition(r, [&](std::uint32_t p) {
-            return bin_of(centroids_[p], axis, lo, scale, count) <= best;
-        });
+        const float lo = g.lo[axis], scale = g.scale[axis];
+        const std::uint32_t mid = partition(
+            r, [&](std::uint32_t p) { return bin_of(key(p, g), axis, lo, scale, count) <= best; });
         left = {r.begin, mid};
         right = {mid, r.end};
-        for (int k = 0; k < count; ++k) {
-            Range& side = k <= best ? left : right;
-            side.bounds.grow(bins[std::size_t(k)].bounds);
-            side.centroids.grow(bins[std::size_t(k)].centroids);
+        for (int k = 0; k < count; ++k)
+            (k <= best ? left : right).bounds.grow(bins[std::size_t(axis)][std::size_t(k)].bounds);
+        if (left.size() > 0 && right.size() > 0) {
+            measure_centroids(left);
+            measure_centroids(right);
+            return true;
         }
-        if (left.size() > 0 && right.size() > 0) return true;
         // Every centroid in one bin (rounding of the bin index): halve by count instead.
         median_split(r, axis, left, right);
         return true;
