@@ -12,6 +12,7 @@
 #include <cmath>
 #include <cstring>
 #include <limits>
+#include <map>
 #include <optional>
 #include <random>
 #include <vector>
@@ -292,6 +293,74 @@ TEST(WideBvh, CollapseKeepsTheBinaryLeavesAndFillsNodes) {
     // Opening the largest child until all are used fills most slots; nodes over binary nodes
     // whose children are both leaves keep two.
     EXPECT_GT(double(slots) / double(kWideBvhWidth * wide.nodes.size()), 0.5);
+}
+
+// The summed surface area of the wide nodes' boxes (the root's, and each interior child's as its
+// parent stores it): the SAH cost of the node tests, which the collapse minimises.
+double node_area(const WideBvh& bvh) {
+    double sum = bvh.root_bounds.surface_area();
+    for (const WideBvhNode& n : bvh.nodes)
+        for (int k = 0; k < kWideBvhWidth; ++k)
+            if (!n.is_leaf(k)) sum += n.child_bounds(k).surface_area();
+    return sum;
+}
+
+// The least node_area over every way of cutting the binary tree into wide nodes, by exhaustive
+// search: a wide node made of binary node n has as children a frontier of n's left subtree and
+// one of its right subtree (a frontier of a subtree: its root, or a frontier of each of the
+// root's children), at most kWideBvhWidth in all.
+class LeastNodeArea {
+public:
+    explicit LeastNodeArea(const Bvh& binary) : nodes_(binary.nodes) {}
+
+    double of_root() { return nodes_[0].is_leaf() ? nodes_[0].bounds.surface_area() : as_node(0); }
+
+private:
+    using Frontier = std::vector<std::uint32_t>;
+
+    double as_node(std::uint32_t n) {
+        if (const auto known = memo_.find(n); known != memo_.end()) return known->second;
+        double best = kInfinity;
+        for (const Frontier& left : frontiers(n + 1, kWideBvhWidth - 1))
+            for (const Frontier& right : frontiers(nodes_[n].offset, kWideBvhWidth - left.size())) {
+                double sum = 0;
+                for (const Frontier* side : {&left, &right})
+                    for (const std::uint32_t c : *side)
+                        if (!nodes_[c].is_leaf()) sum += as_node(c);
+                best = std::min(best, sum);
+            }
+        return memo_[n] = double(nodes_[n].bounds.surface_area()) + best;
+    }
+
+    std::vector<Frontier> frontiers(std::uint32_t n, std::size_t limit) const {
+        std::vector<Frontier> out{{n}};
+        if (nodes_[n].is_leaf() || limit < 2) return out;
+        for (const Frontier& left : frontiers(n + 1, limit - 1))
+            for (const Frontier& right : frontiers(nodes_[n].offset, limit - left.size())) {
+                Frontier f = left;
+                f.insert(f.end(), right.begin(), right.end());
+                out.push_back(f);
+            }
+        return out;
+    }
+
+    const LargeVector<BvhNode>& nodes_;
+    std::map<std::uint32_t, double> memo_;
+};
+
+TEST(WideBvh, CollapseMinimisesTheNodesSurfaceArea) {
+    for (const int count : {3, 9, 17, 30, 45}) {
+        for (unsigned seed = 1; seed <= 4; ++seed) {
+            BvhBuildOptions options;
+            options.max_leaf_size = 1 + int(seed % 2);
+            const std::vector<Bounds3> b = random_boxes(count, seed, 10, 1 + float(seed));
+            const Bvh binary = build_bvh(b, options);
+            const double least = LeastNodeArea(binary).of_root();
+            const WideBvh wide = collapse_to_wide_bvh(binary);
+            expect_valid(wide, b);
+            EXPECT_NEAR(node_area(wide), least, 1e-9 * least) << count << " boxes, seed " << seed;
+        }
+    }
 }
 
 TEST(WideBvh, NoLeafMixesKinds) {

@@ -5,37 +5,106 @@
 #include <algorithm>
 #include <array>
 #include <cassert>
+#include <vector>
 
 namespace glint {
 
 namespace {
 
-class Collapser {
+// Which interior binary nodes become wide nodes, chosen to minimise the summed surface area of
+// the wide nodes: the SAH cost of their tests (every leaf is tested under some wide node however
+// the tree is cut, so the leaves' cost is the same for every choice). Dynamic programming over
+// the binary tree (Ylitie, Karras and Laine 2017, "Efficient Incoherent Ray Traversal on GPUs
+// Through Compressed Wide BVHs", section 4.1, without its leaf merging).
+class CollapsePlan {
 public:
-    using Slots = std::array<std::uint32_t, kWideBvhWidth>;
-
-    Collapser(const LargeVector<BvhNode>& binary, LargeVector<WideBvhNode>& wide)
-        : binary_(binary), wide_(wide), leaves_(binary.size()) {
-        // Children come after their parents in the binary array: count from the end.
-        for (std::size_t i = binary.size(); i-- > 0;) {
-            const BvhNode& node = binary[i];
-            leaves_[i] = node.is_leaf() ? 1 : leaves_[i + 1] + leaves_[node.offset];
+    explicit CollapsePlan(const LargeVector<BvhNode>& binary)
+        : binary_(binary),
+          cost_(binary.size() * kWideBvhWidth),
+          split_(binary.size() * kWideBvhWidth),
+          wide_(binary.size() * kWideBvhWidth) {
+        // Children come after their parents in the binary array: solve from the end.
+        for (std::size_t n = binary.size(); n-- > 0;) {
+            const BvhNode& node = binary[n];
+            if (node.is_leaf()) {
+                for (int k = 1; k <= kWideBvhWidth; ++k) set(n, k, 0, 0, true);
+                continue;
+            }
+            const std::size_t left = n + 1, right = node.offset;
+            // dissolved[k]: the least cost of spreading the children over k slots.
+            double dissolved[kWideBvhWidth + 1];
+            int best_split[kWideBvhWidth + 1];
+            for (int k = 2; k <= kWideBvhWidth; ++k) {
+                dissolved[k] = kInfinity;
+                best_split[k] = 1;
+                for (int j = 1; j < k; ++j) {
+                    const double c = cost(left, j) + cost(right, k - j);
+                    if (c < dissolved[k]) dissolved[k] = c, best_split[k] = j;
+                }
+            }
+            const double as_node = double(node.bounds.surface_area()) + dissolved[kWideBvhWidth];
+            set(n, 1, as_node, best_split[kWideBvhWidth], true);
+            for (int k = 2; k <= kWideBvhWidth; ++k) {
+                // Dissolving at equal cost makes fewer nodes.
+                if (dissolved[k] <= as_node) {
+                    set(n, k, dissolved[k], best_split[k], false);
+                } else {
+                    set(n, k, as_node, best_split[kWideBvhWidth], true);
+                }
+            }
         }
     }
 
-    // Fills wide_[index] from the binary subtree at `root`, then its descendants. The interior
-    // children of a node are placed side by side, so that a traversal that visits several of them
-    // touches neighbouring cache lines.
+    // The children of the wide node made of binary node `n`: its subtree cut at the nodes and
+    // leaves the plan keeps whole, in depth-first order.
+    void children(std::uint32_t n, std::array<std::uint32_t, kWideBvhWidth>& slot,
+                  int& count) const {
+        const int j = split_[index(n, 1)];
+        emit(n + 1, j, slot, count);
+        emit(binary_[n].offset, kWideBvhWidth - j, slot, count);
+    }
+
+private:
+    std::size_t index(std::size_t n, int k) const { return n * kWideBvhWidth + std::size_t(k - 1); }
+    double cost(std::size_t n, int k) const { return cost_[index(n, k)]; }
+    void set(std::size_t n, int k, double cost, int split, bool wide) {
+        cost_[index(n, k)] = cost;
+        split_[index(n, k)] = std::uint8_t(split);
+        wide_[index(n, k)] = wide ? 1 : 0;
+    }
+    // Binary node n given k slots: one slot if it stays whole, else its children share them.
+    void emit(std::uint32_t n, int k, std::array<std::uint32_t, kWideBvhWidth>& slot,
+              int& count) const {
+        if (binary_[n].is_leaf() || wide_[index(n, k)]) {
+            slot[std::size_t(count++)] = n;
+            return;
+        }
+        const int j = split_[index(n, k)];
+        emit(n + 1, j, slot, count);
+        emit(binary_[n].offset, k - j, slot, count);
+    }
+
+    const LargeVector<BvhNode>& binary_;
+    std::vector<double> cost_;         // [n][k - 1]: least area of wide nodes when n takes k slots
+    std::vector<std::uint8_t> split_;  // slots given to the first child when n is dissolved
+    std::vector<std::uint8_t> wide_;   // whether n stays whole given k slots
+};
+
+class Collapser {
+public:
+    Collapser(const LargeVector<BvhNode>& binary, LargeVector<WideBvhNode>& wide)
+        : binary_(binary), wide_(wide), plan_(binary) {}
+
+    // Fills wide_[index] from the binary subtree at `root` (a lone leaf becomes the only child),
+    // then its descendants. The interior children of a node are placed side by side, so that a
+    // traversal that visits several of them touches neighbouring cache lines.
     void collapse(std::uint32_t root, std::uint32_t index) {
-        Slots slot{};
+        std::array<std::uint32_t, kWideBvhWidth> slot{};
         int n = 0;
-        if (leaves_[root] <= std::uint32_t(kWideBvhWidth)) {
-            gather_leaves(root, slot, n);  // a leaf alone, or a subtree that fits in one node
+        if (binary_[root].is_leaf()) {
+            slot[std::size_t(n++)] = root;
         } else {
-            slot[n++] = root + 1;
-            slot[n++] = binary_[root].offset;
-            while (open_one(slot, n)) {
-            }
+            plan_.children(root, slot, n);
         }
         auto next = std::uint32_t(wide_.size());
         for (int k = 0; k < n; ++k) next += binary_[slot[std::size_t(k)]].is_leaf() ? 0 : 1;
@@ -66,53 +135,9 @@ public:
     }
 
 private:
-    // Opens the interior child of largest surface area (the lowest slot at equal area) that can be
-    // opened, in place: one of more than kWideBvhWidth leaves becomes its two children; one of
-    // fewer becomes all its leaves, if they fit in the free slots. So a subtree of up to
-    // kWideBvhWidth leaves is one full node, never a chain of nodes of two (which opening level by
-    // level made of complete binary trees whose depth is not a multiple of three). False when none
-    // can be opened.
-    bool open_one(Slots& slot, int& n) const {
-        int best = -1;
-        float best_area = -1;
-        for (int k = 0; k < n; ++k) {
-            const std::uint32_t child = slot[std::size_t(k)];
-            if (binary_[child].is_leaf()) continue;
-            const std::uint32_t leaves = leaves_[child];
-            const int grows = leaves > std::uint32_t(kWideBvhWidth) ? 1 : int(leaves) - 1;
-            if (n + grows > kWideBvhWidth) continue;
-            const float area = binary_[child].bounds.surface_area();
-            if (best < 0 || area > best_area) best = k, best_area = area;
-        }
-        if (best < 0) return false;
-        const std::uint32_t opened = slot[std::size_t(best)];
-        Slots replacement{};
-        int m = 0;
-        if (leaves_[opened] > std::uint32_t(kWideBvhWidth)) {
-            replacement[m++] = opened + 1;
-            replacement[m++] = binary_[opened].offset;
-        } else {
-            gather_leaves(opened, replacement, m);
-        }
-        for (int k = n - 1; k > best; --k) slot[std::size_t(k + m - 1)] = slot[std::size_t(k)];
-        for (int k = 0; k < m; ++k) slot[std::size_t(best + k)] = replacement[std::size_t(k)];
-        n += m - 1;
-        return true;
-    }
-
-    // Appends the leaves of the binary subtree at `node` to slot, in depth-first order.
-    void gather_leaves(std::uint32_t node, Slots& slot, int& n) const {
-        if (binary_[node].is_leaf()) {
-            slot[std::size_t(n++)] = node;
-            return;
-        }
-        gather_leaves(node + 1, slot, n);
-        gather_leaves(binary_[node].offset, slot, n);
-    }
-
     const LargeVector<BvhNode>& binary_;
     LargeVector<WideBvhNode>& wide_;
-    std::vector<std::uint32_t> leaves_;  // of each binary node's subtree
+    CollapsePlan plan_;
 };
 
 }  // namespace

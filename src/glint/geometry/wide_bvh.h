@@ -69,11 +69,13 @@ struct WideBvh {
     }
 };
 
-// The binary tree collapsed top down: each wide node takes a binary node's two children and keeps
-// opening the one of largest surface area while they fit; a subtree of at most kWideBvhWidth
-// leaves becomes one node with all of them. Leaves, boxes and the primitive order stay as they
-// were, so the wide tree's leaves are the binary tree's. The root is always a node (a lone leaf
-// becomes the root's only child). At most kWideBvhMaxPrimitives primitives.
+// The binary tree collapsed into wide nodes: of all the ways to make some of its interior nodes
+// wide nodes of at most kWideBvhWidth children (the subtree below cut at the next wide nodes and
+// leaves), the one whose wide nodes have the least summed surface area, the SAH cost of their
+// tests (dynamic programming, Ylitie et al. 2017). Children are in depth-first order. Leaves,
+// boxes and the primitive order stay as they were, so the wide tree's leaves are the binary
+// tree's. The root is always a node (a lone leaf becomes the root's only child). At most
+// kWideBvhMaxPrimitives primitives.
 WideBvh collapse_to_wide_bvh(Bvh binary);
 
 // The wide tree's defaults for primitives tested one by one: leaves of up to 8 and a binary node
