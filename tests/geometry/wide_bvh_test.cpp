@@ -358,7 +358,8 @@ TEST(WideBvh, CollapseMinimisesTheNodesSurfaceArea) {
             const double least = LeastNodeArea(binary).of_root();
             const WideBvh wide = collapse_to_wide_bvh(binary);
             expect_valid(wide, b);
-            EXPECT_NEAR(node_area(wide), least, 1e-9 * least) << count << " boxes, seed " << seed;
+            // The collapse keeps its sums in float: equal up to their rounding.
+            EXPECT_NEAR(node_area(wide), least, 1e-5 * least) << count << " boxes, seed " << seed;
         }
     }
 }

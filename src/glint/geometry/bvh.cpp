@@ -167,34 +167,25 @@ public:
 
 private:
     // The union of the boxes and of the centroids of r's primitives, into r.
-    void measure(Range& r) const { fold(r, true); }
-    // The union of the centroids alone (the boxes' is known).
-    void measure_centroids(Range& r) const { fold(r, false); }
-
-    void fold(Range& r, bool with_bounds) const {
-        const auto over = [&](std::uint32_t b, std::uint32_t e, Box& bounds, Box& cent) {
+    void measure(Range& r) const {
+        const auto fold = [&](std::uint32_t b, std::uint32_t e, Box& bounds, Box& cent) {
             for (std::uint32_t i = b; i < e; ++i) {
                 const std::uint32_t p = indices_[i];
-                if (with_bounds) bounds.grow(boxes_[p]);
+                bounds.grow(boxes_[p]);
                 cent.grow(centroids_[p]);
             }
         };
-        Box bounds = Box::empty(), centroids = Box::empty();
-        if (r.size() < kParallelRange) {
-            over(r.begin, r.end, bounds, centroids);
-        } else {
-            std::vector<Box> block_bounds(blocks_of(r.size()), Box::empty()), cents(block_bounds);
-            for_blocks(r.begin, r.end, [&](std::uint32_t b, std::uint32_t e, std::uint32_t k) {
-                over(b, e, block_bounds[k], cents[k]);
-            });
-            // In block order: with NaN coordinates, min and max depend on the order taken in.
-            for (std::size_t k = 0; k < cents.size(); ++k) {
-                bounds.grow(block_bounds[k]);
-                centroids.grow(cents[k]);
-            }
+        r.bounds = r.centroids = Box::empty();
+        if (r.size() < kParallelRange) return fold(r.begin, r.end, r.bounds, r.centroids);
+        std::vector<Box> bounds(blocks_of(r.size()), Box::empty()), cents(bounds);
+        for_blocks(r.begin, r.end, [&](std::uint32_t b, std::uint32_t e, std::uint32_t k) {
+            fold(b, e, bounds[k], cents[k]);
+        });
+        // In block order: with NaN coordinates, min and max depend on the order they are taken in.
+        for (std::size_t k = 0; k < bounds.size(); ++k) {
+            r.bounds.grow(bounds[k]);
+            r.centroids.grow(cents[k]);
         }
-        if (with_bounds) r.bounds = bounds;
-        r.centroids = centroids;
     }
 
     static int longest_axis(const Box& b) {
@@ -382,26 +373,28 @@ private:
         if (best < 0 || !(split_cost < leaf_cost)) return false;
 
         const float lo = g.lo[axis], scale = g.scale[axis];
+        Box centroids[2];
         const std::uint32_t mid = partition(
-            r, [&](std::uint32_t p) { return bin_of(key(p, g), axis, lo, scale, count) <= best; });
-        left = {r.begin, mid};
-        right = {mid, r.end};
+            r, [&](std::uint32_t p) { return bin_of(key(p, g), axis, lo, scale, count) <= best; },
+            centroids);
+        left = {r.begin, mid, Box::empty(), centroids[0]};
+        right = {mid, r.end, Box::empty(), centroids[1]};
         for (int k = 0; k < count; ++k)
             (k <= best ? left : right).bounds.grow(bins[std::size_t(axis)][std::size_t(k)].bounds);
-        if (left.size() > 0 && right.size() > 0) {
-            measure_centroids(left);
-            measure_centroids(right);
-            return true;
-        }
+        if (left.size() > 0 && right.size() > 0) return true;
         // Every centroid in one bin (rounding of the bin index): halve by count instead.
         median_split(r, axis, left, right);
         return true;
     }
 
     // Stable partition of r by `goes_left`, through scratch_; returns the first index of the
-    // right part. Large ranges count, then scatter, in blocks: the same order as one pass.
+    // right part. Large ranges count, then scatter, in blocks: the same order as one pass. With
+    // `centroids`, also the union of each part's centroids into centroids[0] and [1].
     template <typename Pred>
-    std::uint32_t partition(const Range& r, Pred&& goes_left) {
+    std::uint32_t partition(const Range& r, Pred&& goes_left, Box* centroids = nullptr) {
+        Box unused[2];
+        Box* sides = centroids ? centroids : unused;
+        sides[0] = sides[1] = Box::empty();
         if (r.size() < kParallelRange) {
             // scratch_ is shared by concurrent tasks; each uses only its own range of it.
             std::uint32_t l = r.begin, g = r.begin;
@@ -409,8 +402,10 @@ private:
                 const std::uint32_t p = indices_[i];
                 if (goes_left(p)) {
                     indices_[l++] = p;
+                    if (centroids) sides[0].grow(centroids_[p]);
                 } else {
                     scratch_[g++] = p;
+                    if (centroids) sides[1].grow(centroids_[p]);
                 }
             }
             std::copy(scratch_.begin() + r.begin, scratch_.begin() + g, indices_.begin() + l);
@@ -431,13 +426,23 @@ private:
             right_at[k] = mid + std::uint32_t(k) * kBlock - left_at[k];
             left_at[k] += r.begin;
         }
+        std::vector<std::array<Box, 2>> block_sides(lefts.size());
         for_blocks(r.begin, r.end, [&](std::uint32_t b, std::uint32_t e, std::uint32_t k) {
             std::uint32_t l = left_at[k], g = right_at[k];
+            std::array<Box, 2> side{Box::empty(), Box::empty()};
             for (std::uint32_t i = b; i < e; ++i) {
                 const std::uint32_t p = indices_[i];
-                scratch_[goes_left(p) ? l++ : g++] = p;
+                const bool left = goes_left(p);
+                scratch_[left ? l++ : g++] = p;
+                if (centroids) side[left ? 0 : 1].grow(centroids_[p]);
             }
+            block_sides[k] = side;
         });
+        // In block order: with NaN coordinates, min and max depend on the order taken in.
+        for (const std::array<Box, 2>& side : block_sides) {
+            sides[0].grow(side[0]);
+            sides[1].grow(side[1]);
+        }
         for_blocks(r.begin, r.end, [&](std::uint32_t b, std::uint32_t e, std::uint32_t) {
             std::copy(scratch_.begin() + b, scratch_.begin() + e, indices_.begin() + b);
         });

@@ -21,8 +21,7 @@ public:
     explicit CollapsePlan(const LargeVector<BvhNode>& binary)
         : binary_(binary),
           cost_(binary.size() * kWideBvhWidth),
-          split_(binary.size() * kWideBvhWidth),
-          wide_(binary.size() * kWideBvhWidth) {
+          choice_(binary.size() * kWideBvhWidth) {
         // Children come after their parents in the binary array: solve from the end.
         for (std::size_t n = binary.size(); n-- > 0;) {
             const BvhNode& node = binary[n];
@@ -59,7 +58,7 @@ public:
     // leaves the plan keeps whole, in depth-first order.
     void children(std::uint32_t n, std::array<std::uint32_t, kWideBvhWidth>& slot,
                   int& count) const {
-        const int j = split_[index(n, 1)];
+        const int j = split(n, 1);
         emit(n + 1, j, slot, count);
         emit(binary_[n].offset, kWideBvhWidth - j, slot, count);
     }
@@ -67,27 +66,34 @@ public:
 private:
     std::size_t index(std::size_t n, int k) const { return n * kWideBvhWidth + std::size_t(k - 1); }
     double cost(std::size_t n, int k) const { return cost_[index(n, k)]; }
+    int split(std::size_t n, int k) const { return choice_[index(n, k)] & kSplit; }
+    bool wide(std::size_t n, int k) const { return (choice_[index(n, k)] & kWide) != 0; }
     void set(std::size_t n, int k, double cost, int split, bool wide) {
-        cost_[index(n, k)] = cost;
-        split_[index(n, k)] = std::uint8_t(split);
-        wide_[index(n, k)] = wide ? 1 : 0;
+        cost_[index(n, k)] = float(cost);
+        choice_[index(n, k)] = std::uint8_t(split | (wide ? kWide : 0));
     }
     // Binary node n given k slots: one slot if it stays whole, else its children share them.
     void emit(std::uint32_t n, int k, std::array<std::uint32_t, kWideBvhWidth>& slot,
               int& count) const {
-        if (binary_[n].is_leaf() || wide_[index(n, k)]) {
+        if (binary_[n].is_leaf() || wide(n, k)) {
             slot[std::size_t(count++)] = n;
             return;
         }
-        const int j = split_[index(n, k)];
+        const int j = split(n, k);
         emit(n + 1, j, slot, count);
         emit(binary_[n].offset, k - j, slot, count);
     }
 
+    // A choice: the slots given to the first child when n is split (low bits), and whether n
+    // stays whole given k slots.
+    static constexpr std::uint8_t kSplit = 0x0f;
+    static constexpr std::uint8_t kWide = 0x80;
+
     const LargeVector<BvhNode>& binary_;
-    std::vector<double> cost_;         // [n][k - 1]: least area of wide nodes when n takes k slots
-    std::vector<std::uint8_t> split_;  // slots given to the first child when n is dissolved
-    std::vector<std::uint8_t> wide_;   // whether n stays whole given k slots
+    // [n][k - 1]: the least area of wide nodes when n takes k slots (kept in float, 32 bytes a
+    // node, and summed in double), and the choice that reaches it.
+    LargeVector<float> cost_;
+    LargeVector<std::uint8_t> choice_;
 };
 
 class Collapser {
