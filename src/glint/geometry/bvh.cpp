@@ -222,7 +222,7 @@ private:
         }
         if (lowest == highest) return false;
         const std::uint32_t mid =
-            partition(r, [&](std::uint32_t p) { return kinds_[p] == lowest; });
+            partition(r, [&](std::uint32_t p) { return kinds_[p] == lowest; }).mid;
         left = {r.begin, mid};
         right = {mid, r.end};
         measure(left);
@@ -373,12 +373,10 @@ private:
         if (best < 0 || !(split_cost < leaf_cost)) return false;
 
         const float lo = g.lo[axis], scale = g.scale[axis];
-        Box centroids[2];
-        const std::uint32_t mid = partition(
-            r, [&](std::uint32_t p) { return bin_of(key(p, g), axis, lo, scale, count) <= best; },
-            centroids);
-        left = {r.begin, mid, Box::empty(), centroids[0]};
-        right = {mid, r.end, Box::empty(), centroids[1]};
+        const Parts parts = partition(
+            r, [&](std::uint32_t p) { return bin_of(key(p, g), axis, lo, scale, count) <= best; });
+        left = {r.begin, parts.mid, Box::empty(), parts.centroids[0]};
+        right = {parts.mid, r.end, Box::empty(), parts.centroids[1]};
         for (int k = 0; k < count; ++k)
             (k <= best ? left : right).bounds.grow(bins[std::size_t(axis)][std::size_t(k)].bounds);
         if (left.size() > 0 && right.size() > 0) return true;
@@ -387,29 +385,31 @@ private:
         return true;
     }
 
-    // Stable partition of r by `goes_left`, through scratch_; returns the first index of the
-    // right part. Large ranges count, then scatter, in blocks: the same order as one pass. With
-    // `centroids`, also the union of each part's centroids into centroids[0] and [1].
+    // The two parts of a partitioned range: where the right one starts, and the union of each
+    // part's centroids (left, right).
+    struct Parts {
+        std::uint32_t mid;
+        std::array<Box, 2> centroids{Box::empty(), Box::empty()};
+    };
+
+    // Stable partition of r by `goes_left`, through scratch_. Large ranges count, then scatter,
+    // in blocks: the same order as one pass.
     template <typename Pred>
-    std::uint32_t partition(const Range& r, Pred&& goes_left, Box* centroids = nullptr) {
-        Box unused[2];
-        Box* sides = centroids ? centroids : unused;
-        sides[0] = sides[1] = Box::empty();
+    Parts partition(const Range& r, Pred&& goes_left) {
+        Parts parts{r.begin};
+        std::array<Box, 2>& sides = parts.centroids;
         if (r.size() < kParallelRange) {
             // scratch_ is shared by concurrent tasks; each uses only its own range of it.
             std::uint32_t l = r.begin, g = r.begin;
             for (std::uint32_t i = r.begin; i < r.end; ++i) {
                 const std::uint32_t p = indices_[i];
-                if (goes_left(p)) {
-                    indices_[l++] = p;
-                    if (centroids) sides[0].grow(centroids_[p]);
-                } else {
-                    scratch_[g++] = p;
-                    if (centroids) sides[1].grow(centroids_[p]);
-                }
+                const bool left = goes_left(p);
+                (left ? indices_[l++] : scratch_[g++]) = p;
+                sides[left ? 0 : 1].grow(centroids_[p]);
             }
             std::copy(scratch_.begin() + r.begin, scratch_.begin() + g, indices_.begin() + l);
-            return l;
+            parts.mid = l;
+            return parts;
         }
         std::vector<std::uint32_t> lefts(blocks_of(r.size()));
         for_blocks(r.begin, r.end, [&](std::uint32_t b, std::uint32_t e, std::uint32_t k) {
@@ -434,7 +434,7 @@ private:
                 const std::uint32_t p = indices_[i];
                 const bool left = goes_left(p);
                 scratch_[left ? l++ : g++] = p;
-                if (centroids) side[left ? 0 : 1].grow(centroids_[p]);
+                side[left ? 0 : 1].grow(centroids_[p]);
             }
             block_sides[k] = side;
         });
@@ -446,7 +446,8 @@ private:
         for_blocks(r.begin, r.end, [&](std::uint32_t b, std::uint32_t e, std::uint32_t) {
             std::copy(scratch_.begin() + b, scratch_.begin() + e, indices_.begin() + b);
         });
-        return mid;
+        parts.mid = mid;
+        return parts;
     }
 
     // Halves r by count, ordered along the axis; works whatever the centroids are.
