@@ -1,4 +1,5 @@
-# Thin wrapper over the CMake presets. `make demo` and `make test` are the README's quick start.
+# Thin wrapper over the CMake presets. `make demo` and `make test` are the README's quick start:
+# both install the Debian packages that are missing first, so either works on a fresh machine.
 PRESET ?= release
 BUILD := build/$(PRESET)
 JOBS ?= $(shell nproc)
@@ -19,7 +20,7 @@ demo: deps build
 	$(GLINT) render scenes/showcase.yaml -o showcase.png
 	@echo "The showcase image is in $(CURDIR)/showcase.png"
 
-test: build
+test: deps build
 	ctest --preset $(PRESET) -j $(JOBS)
 
 format:

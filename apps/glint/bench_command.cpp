@@ -15,8 +15,8 @@
 #include "glint/render/accel_benchmark.h"
 #include "glint/render/ray_sets.h"
 #include "glint/render/world.h"
+#include "glint/scene/load_scene.h"
 #include "glint/scene/scene_error.h"
-#include "load_scene.h"
 
 namespace glint::cli {
 

@@ -1,5 +1,5 @@
 // The scene formats by extension: YAML, NFF (also gzipped) and the model files Assimp reads.
-#include "load_scene.h"
+#include "glint/scene/load_scene.h"
 
 #include <algorithm>
 #include <string>
@@ -9,7 +9,7 @@
 #include "glint/scene/scene_error.h"
 #include "glint/scene/yaml/yaml_scene_loader.h"
 
-namespace glint::cli {
+namespace glint {
 
 Scene load_scene(const std::filesystem::path& file) {
     std::string extension = file.extension().string();
@@ -24,4 +24,4 @@ Scene load_scene(const std::filesystem::path& file) {
                       ".obj, .ply, .gltf, .glb, .stl (models)"});
 }
 
-}  // namespace glint::cli
+}  // namespace glint
