@@ -19,6 +19,10 @@ namespace {
 
 using glint::cli::whole_number;
 
+std::vector<std::string> names(std::span<const std::string_view> list) {
+    return {list.begin(), list.end()};
+}
+
 constexpr const char* kExamples = R"(
 Examples:
   glint render scenes/showcase.yaml                     writes showcase.png
@@ -41,8 +45,15 @@ void add_render_command(CLI::App& app, glint::cli::RenderCommand& c) {
         ->check(whole_number(1, glint::kMaxImageSide));
     render->add_option("--height", c.height, "Image height in pixels (keeps the aspect alone)")
         ->check(whole_number(1, glint::kMaxImageSide));
-    render->add_option("--spp", c.spp, "Samples per pixel (a square number: n x n grid)")
+    render
+        ->add_option("--spp", c.spp, "Samples per pixel (a square number for the regular sampler)")
         ->check(whole_number(1, glint::kMaxSamplesPerPixel));
+    render->add_option("--integrator", c.integrator, "Integrator, overriding the scene's")
+        ->check(CLI::IsMember(names(glint::integrator_names())));
+    render->add_option("--sampler", c.sampler, "Sampler, overriding the scene's")
+        ->check(CLI::IsMember(names(glint::sampler_names())));
+    render->add_option("--filter", c.filter, "Reconstruction filter with its default radius")
+        ->check(CLI::IsMember(names(glint::filter_names())));
     render->add_option("--threads", c.threads, "Worker threads; 0 uses every core")
         ->check(whole_number(0, 4096));
     render->add_option("--max-depth", c.max_depth, "Deepest level of the ray tree (eye rays are 1)")

@@ -56,14 +56,21 @@ void apply_overrides(const RenderCommand& c, RenderSettings& s) {
         throw UsageError{"image of " + std::to_string(s.width) + "x" + std::to_string(s.height) +
                          " pixels is larger than the limit of " + std::to_string(kMaxImagePixels) +
                          " pixels"};
-    if (c.spp) {
-        if (!is_valid_sample_count(s.sampler, *c.spp))
-            throw UsageError{
-                "--spp must be a square number (1, 4, 9, 16, ...) for the regular "
-                "sampler, got " +
-                std::to_string(*c.spp)};
-        s.samples_per_pixel = *c.spp;
+    if (!c.integrator.empty()) s.integrator = *integrator_from_name(c.integrator);
+    if (!c.sampler.empty()) s.sampler = *sampler_from_name(c.sampler);
+    if (!c.filter.empty()) {
+        FilterSpec filter;
+        filter.kind = *filter_from_name(c.filter);
+        filter.radius = default_filter_radius(filter.kind);
+        s.filter = filter;
     }
+    if (c.spp) s.samples_per_pixel = *c.spp;
+    if (!is_valid_sample_count(sampler_of(s), s.samples_per_pixel))
+        throw UsageError{
+            "samples per pixel must be a square number (1, 4, 9, 16, ...) for the "
+            "regular sampler, got " +
+            std::to_string(s.samples_per_pixel) +
+            " (the jittered and sobol samplers take any number)"};
     if (c.max_depth) s.max_depth = *c.max_depth;
 }
 
@@ -82,11 +89,13 @@ void print_summary(const std::string& output, const RenderSettings& s, const Ren
     std::printf("glint: wrote %s (%dx%d, %d spp) in %.2f s\n", output.c_str(), s.width, s.height,
                 s.samples_per_pixel, r.seconds);
     std::printf("  rays       %15s  %.2f Mrays/s\n", with_thousands(rays.total()).c_str(), mrays);
-    std::printf("  primary    %15s  (%s hit)\n", with_thousands(rays.primary).c_str(),
-                with_thousands(rays.primary_hits).c_str());
-    std::printf("  shadow     %15s\n", with_thousands(rays.shadow).c_str());
-    std::printf("  reflected  %15s\n", with_thousands(rays.reflected).c_str());
-    std::printf("  refracted  %15s\n", with_thousands(rays.refracted).c_str());
+    for (std::size_t kind = 0; kind < kRayKindCount; ++kind) {
+        std::printf("  %-10s %15s", std::string(kRayKindNames[kind]).c_str(),
+                    with_thousands(rays.traced[kind]).c_str());
+        if (RayKind(kind) == RayKind::primary)
+            std::printf("  (%s hit)", with_thousands(rays.primary_hits).c_str());
+        std::printf("\n");
+    }
 }
 
 void report_bad_samples(const BadSamples& bad, std::uint64_t seed) {

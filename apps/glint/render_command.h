@@ -11,6 +11,9 @@ struct RenderCommand {
     std::string scene;
     std::string output;  // empty: the scene's name with .png, in the current directory
     std::optional<int> width, height, spp, max_depth;
+    std::string integrator;     // empty: the scene's
+    std::string sampler;        // empty: the scene's (or its integrator's default)
+    std::string filter;         // empty: likewise; else a filter's name with its default radius
     int threads = 0;            // 0: all cores
     std::string accel = "bvh";  // an acceleration structure's name (accel_names())
     // Shadow feelers: "none", "light-buffer", or "light-buffer+cache".

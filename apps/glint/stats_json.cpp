@@ -41,13 +41,13 @@ std::string stats_json(const RenderReport& report) {
          << "  \"threads\": " << report.threads << ",\n"
          << "  \"complete\": " << (r.complete ? "true" : "false") << ",\n"
          << "  \"seconds\": " << r.seconds << ",\n"
-         << "  \"rays\": {\n"
-         << "    \"primary\": " << r.rays.primary << ",\n"
-         << "    \"primary_hits\": " << r.rays.primary_hits << ",\n"
-         << "    \"shadow\": " << r.rays.shadow << ",\n"
-         << "    \"reflected\": " << r.rays.reflected << ",\n"
-         << "    \"refracted\": " << r.rays.refracted << ",\n"
-         << "    \"total\": " << r.rays.total() << "\n"
+         << "  \"rays\": {\n";
+    for (std::size_t kind = 0; kind < kRayKindCount; ++kind) {
+        json << "    \"" << kRayKindNames[kind] << "\": " << r.rays.traced[kind] << ",\n";
+        if (RayKind(kind) == RayKind::primary)
+            json << "    \"primary_hits\": " << r.rays.primary_hits << ",\n";
+    }
+    json << "    \"total\": " << r.rays.total() << "\n"
          << "  },\n"
          << "  \"mrays_per_second\": " << mrays << ",\n"
          << "  \"bad_samples\": " << r.bad_samples.count << "\n"

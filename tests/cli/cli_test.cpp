@@ -327,10 +327,14 @@ TEST_F(Cli, BadNffExitsWithTwoAtTheOffendingToken) {
     EXPECT_NE(r.err.find("bad.nff:9:9: error:"), std::string::npos) << r.err;
 }
 
-TEST_F(Cli, NonSquareSampleCountIsRejected) {
+TEST_F(Cli, NonSquareSampleCountIsRejectedForTheRegularSamplerOnly) {
     const Outcome r = run_glint("render " + scene("showcase.yaml") + " --spp 5");
     EXPECT_EQ(r.exit_code, 2);
-    EXPECT_NE(r.err.find("--spp must be a square number"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("samples per pixel must be a square number"), std::string::npos) << r.err;
+    const Outcome jittered =
+        run_glint("render " + scene("showcase.yaml") +
+                  " --spp 5 --sampler jittered --width 16 -q -o " + (dir_ / "five.png").string());
+    EXPECT_EQ(jittered.exit_code, 0) << jittered.err;
 }
 
 // The output is checked before the scene is even read (here it does not exist), so a path that

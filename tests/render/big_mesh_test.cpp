@@ -96,7 +96,7 @@ TEST(BigMesh, AMillionTrianglePlyLoadsAndRenders) {
     EXPECT_EQ(result.bad_samples.count, 0u);
     // Not empty: the framed height field (a square in the sphere the camera frames) covers a
     // fifth of the image or more, and is lit.
-    EXPECT_GT(result.rays.primary_hits, result.rays.primary / 5);
+    EXPECT_GT(result.rays.primary_hits, result.rays[RayKind::primary] / 5);
     float brightest = 0;
     for (const Color& c : result.image.pixels) brightest = std::max({brightest, c.r, c.g, c.b});
     EXPECT_GT(brightest, 0.05f);

@@ -38,9 +38,9 @@ TEST(PerRayPath, TracingAllocatesNothing) {
         for (int x = 0; x < 64; ++x)
             integrator.trace_eye_ray(world.camera().generate_ray({x + 0.5f, y + 0.5f}), stats);
     EXPECT_EQ(g_allocations - before, 0);
-    EXPECT_GT(stats.reflected, 0u);
-    EXPECT_GT(stats.refracted, 0u);
-    EXPECT_GT(stats.shadow, 0u);
+    EXPECT_GT(stats[RayKind::reflected], 0u);
+    EXPECT_GT(stats[RayKind::refracted], 0u);
+    EXPECT_GT(stats[RayKind::shadow], 0u);
 }
 
 }  // namespace

@@ -53,9 +53,9 @@ TEST_P(SpdStatistics, RayCountsAreWithinTenPercentOfThePublishedOnes) {
     const RenderResult r = render(World(load_nff_scene(kSpd / p.file)), {});
     ASSERT_EQ(r.image.width, 512);
     expect_within_ten_percent(r.rays.primary_hits, p.eye_hits, "eye rays that hit");
-    expect_within_ten_percent(r.rays.reflected, p.reflected, "reflection rays");
-    expect_within_ten_percent(r.rays.refracted, p.refracted, "refraction rays");
-    expect_within_ten_percent(r.rays.shadow, p.shadow, "shadow rays");
+    expect_within_ten_percent(r.rays[RayKind::reflected], p.reflected, "reflection rays");
+    expect_within_ten_percent(r.rays[RayKind::refracted], p.refracted, "refraction rays");
+    expect_within_ten_percent(r.rays[RayKind::shadow], p.shadow, "shadow rays");
 }
 
 INSTANTIATE_TEST_SUITE_P(Databases, SpdStatistics, ::testing::ValuesIn(kPublished),

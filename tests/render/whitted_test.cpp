@@ -29,6 +29,15 @@ Scene base_scene() {
     return scene;
 }
 
+// Rays traced by kind, and eye rays that hit.
+RayStats counts(std::uint64_t primary, std::uint64_t primary_hits, std::uint64_t shadow,
+                std::uint64_t reflected, std::uint64_t refracted) {
+    RayStats stats;
+    stats.traced = {primary, shadow, reflected, refracted};
+    stats.primary_hits = primary_hits;
+    return stats;
+}
+
 const Ray kEyeRay{{0, 0, -5}, {0, 0, 1}};
 
 TEST(Whitted, MissingRaySeesTheBackground) {
@@ -36,7 +45,7 @@ TEST(Whitted, MissingRaySeesTheBackground) {
     const World world(scene);
     RayStats stats;
     expect_near(WhittedIntegrator(world).trace_eye_ray(kEyeRay, stats), {0.2f, 0.4f, 0.6f});
-    EXPECT_EQ(stats, (RayStats{1, 0, 0, 0, 0}));
+    EXPECT_EQ(stats, (counts(1, 0, 0, 0, 0)));
 }
 
 TEST(Whitted, LocalTermIsAmbientPlusDiffusePlusHighlight) {
@@ -54,7 +63,7 @@ TEST(Whitted, LocalTermIsAmbientPlusDiffusePlusHighlight) {
         RayStats stats;
         const Color c = WhittedIntegrator(world).trace_eye_ray(kEyeRay, stats);
         expect_near(c, {0.05f + 0.8f * 0.9f, 0.025f + 0.8f * 0.6f, 0.0125f + 0.8f * 0.45f});
-        EXPECT_EQ(stats, (RayStats{1, 1, 1, 0, 0}));
+        EXPECT_EQ(stats, (counts(1, 1, 1, 0, 0)));
     }
 }
 
@@ -65,7 +74,7 @@ TEST(Whitted, LightBehindTheSurfaceSendsNoFeelerAndAddsNothing) {
     const World world(scene);
     RayStats stats;
     expect_near(WhittedIntegrator(world).trace_eye_ray(kEyeRay, stats), Color::gray(0.05f));
-    EXPECT_EQ(stats.shadow, 0u);
+    EXPECT_EQ(stats[RayKind::shadow], 0u);
 }
 
 // A floor y = 0 seen from above, a point light above it and a small occluder between.
@@ -88,7 +97,7 @@ TEST(Whitted, ShadowFeelerBlockedLeavesOnlyAmbient) {
     // From just above the floor, under the occluder (an eye ray would hit the occluder).
     const Ray down{{0, 0.05f, 0}, {0, -1, 0}};
     expect_near(WhittedIntegrator(world).trace(down, 2, 1, stats), Color::gray(0.1f));
-    EXPECT_EQ(stats.shadow, 1u);
+    EXPECT_EQ(stats[RayKind::shadow], 1u);
 }
 
 TEST(Whitted, ObjectThatCastsNoShadowLetsTheLightThrough) {
@@ -112,7 +121,7 @@ TEST(Whitted, TransparentShadowsMultiplyTheTransmitOfEachSurfaceCrossed) {
     const Ray down{{0, 0.05f, 0}, {0, -1, 0}};
     // The feeler crosses the sphere twice: 0.1 + 0.25 * 0.5.
     expect_near(WhittedIntegrator(world).trace(down, 2, 1, stats), Color::gray(0.225f));
-    EXPECT_EQ(stats.shadow, 3u);  // to the sphere, through it, and on to the light
+    EXPECT_EQ(stats[RayKind::shadow], 3u);  // to the sphere, through it, and on to the light
 }
 
 TEST(Whitted, MirrorAddsKrTimesTheReflectedColour) {
@@ -125,7 +134,7 @@ TEST(Whitted, MirrorAddsKrTimesTheReflectedColour) {
     RayStats stats;
     const Color c = WhittedIntegrator(world).trace_eye_ray(kEyeRay, stats);
     expect_near(c, Color::gray(0.1f) + 0.5f * Color{0.2f, 0.4f, 0.6f});
-    EXPECT_EQ(stats, (RayStats{1, 1, 0, 1, 0}));
+    EXPECT_EQ(stats, (counts(1, 1, 0, 1, 0)));
 }
 
 // Two parallel mirrors facing each other, the eye between them: the ray bounces until cut.
@@ -146,7 +155,7 @@ TEST(Whitted, RayTreeIsCutAtMaxDepth) {
     const World world(scene);
     RayStats stats;
     expect_near(WhittedIntegrator(world).trace_eye_ray(kEyeRay, stats), Color::gray(1.875f));
-    EXPECT_EQ(stats.reflected, 3u);
+    EXPECT_EQ(stats[RayKind::reflected], 3u);
 }
 
 TEST(Whitted, RayTreeIsCutWhenTheWeightFallsBelowTheMinimum) {
@@ -155,7 +164,7 @@ TEST(Whitted, RayTreeIsCutWhenTheWeightFallsBelowTheMinimum) {
     const World world(scene);
     RayStats stats;
     expect_near(WhittedIntegrator(world).trace_eye_ray(kEyeRay, stats), Color::gray(1.875f));
-    EXPECT_EQ(stats.reflected, 3u);
+    EXPECT_EQ(stats[RayKind::reflected], 3u);
 }
 
 TEST(Whitted, NormalIncidenceThroughAGlassSphereReachesTheBackground) {
@@ -168,7 +177,7 @@ TEST(Whitted, NormalIncidenceThroughAGlassSphereReachesTheBackground) {
     RayStats stats;
     expect_near(WhittedIntegrator(world).trace_eye_ray(kEyeRay, stats),
                 0.64f * Color{0.2f, 0.4f, 0.6f});
-    EXPECT_EQ(stats, (RayStats{1, 1, 0, 0, 2}));
+    EXPECT_EQ(stats, (counts(1, 1, 0, 0, 2)));
 }
 
 TEST(Whitted, TotalInternalReflectionSendsTheTransmittedEnergyToTheReflectedRay) {
@@ -187,8 +196,8 @@ TEST(Whitted, TotalInternalReflectionSendsTheTransmittedEnergyToTheReflectedRay)
     const Ray inside{{0, -std::sin(radians(60.0f)), 0}, {1, 0, 0}};
     const Color c = WhittedIntegrator(world).trace(inside, 1, 1, stats);
     expect_near(c, Color::gray(1 + 0.8f * 1));
-    EXPECT_EQ(stats.reflected, 1u);
-    EXPECT_EQ(stats.refracted, 0u);
+    EXPECT_EQ(stats[RayKind::reflected], 1u);
+    EXPECT_EQ(stats[RayKind::refracted], 0u);
 }
 
 }  // namespace

@@ -88,6 +88,31 @@ TEST(YamlScene, DefaultsFillWhatTheFileLeavesOut) {
     EXPECT_TRUE(scene.objects[0].casts_shadow);
 }
 
+TEST(YamlScene, SamplerAndFilterDefaultToTheIntegratorsChoice) {
+    const Scene scene = parse(std::string(kCamera));
+    EXPECT_EQ(scene.settings.integrator, IntegratorKind::whitted);
+    EXPECT_FALSE(scene.settings.sampler);
+    EXPECT_FALSE(scene.settings.filter);
+    EXPECT_EQ(sampler_of(scene.settings), SamplerKind::regular);
+    EXPECT_EQ(filter_of(scene.settings), FilterSpec{});
+}
+
+TEST(YamlScene, SamplerAndFilterAreRead) {
+    const Scene named =
+        parse(std::string(kCamera) + "image: {samples: 5, sampler: sobol, filter: mitchell}\n");
+    EXPECT_EQ(named.settings.sampler, SamplerKind::sobol);
+    EXPECT_EQ(named.settings.samples_per_pixel, 5);  // any count for sobol
+    EXPECT_EQ(named.settings.filter->kind, FilterKind::mitchell);
+    EXPECT_EQ(named.settings.filter->radius, 2);  // mitchell's default
+    const Scene mapped =
+        parse(std::string(kCamera) +
+              "image: {sampler: jittered, filter: {type: gaussian, radius: 2, sigma: 0.75}}\n");
+    EXPECT_EQ(mapped.settings.sampler, SamplerKind::jittered);
+    EXPECT_EQ(mapped.settings.filter->kind, FilterKind::gaussian);
+    EXPECT_EQ(mapped.settings.filter->radius, 2);
+    EXPECT_EQ(mapped.settings.filter->sigma, 0.75f);
+}
+
 TEST(YamlScene, ImageSettingsAreRead) {
     const Scene scene = parse(std::string(kCamera) +
                               "image:\n  width: 64\n  height: 32\n  samples: 16\n"

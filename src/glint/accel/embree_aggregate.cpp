@@ -143,9 +143,15 @@ struct QueryContext {
     RTCIntersectContext embree;
     const Scene* scene;
     ShapeHit user_hit;  // the glint hit of the last user primitive accepted
+    // The glint ray's time and wavelength for user geometry (moving shapes): Embree's own time
+    // field stays 0, as its static scene has no motion of its own.
+    float time = 0, wavelength = 0;
 };
 
-Ray to_ray(const RTCRay& r) { return {{r.org_x, r.org_y, r.org_z}, {r.dir_x, r.dir_y, r.dir_z}}; }
+Ray to_ray(const RTCRay& r, const QueryContext& context) {
+    return {
+        {r.org_x, r.org_y, r.org_z}, {r.dir_x, r.dir_y, r.dir_z}, context.time, context.wavelength};
+}
 
 void user_bounds(const RTCBoundsFunctionArguments* args) {
     const auto& scene = *static_cast<const Scene*>(args->geometryUserPtr);
@@ -168,8 +174,8 @@ void user_intersect(const RTCIntersectFunctionNArguments* args) {
     const std::uint32_t index = scene.geometries[args->geomID].primitives[args->primID];
     const Primitive& primitive = scene.primitives[index];
     if ((primitive.visibility & rayhit.ray.mask) == 0) return;
-    const auto hit =
-        glint::intersect(primitive.shape, to_ray(rayhit.ray), {rayhit.ray.tnear, rayhit.ray.tfar});
+    const auto hit = glint::intersect(primitive.shape, to_ray(rayhit.ray, context),
+                                      {rayhit.ray.tnear, rayhit.ray.tfar});
     if (!hit) return;
     // nearer()'s rule at equal t: the lower primitive index wins.
     if (hit->t == rayhit.ray.tfar && rayhit.hit.geomID != RTC_INVALID_GEOMETRY_ID &&
@@ -192,7 +198,7 @@ void user_occluded(const RTCOccludedFunctionNArguments* args) {
     const Primitive& primitive =
         context.scene->primitives[context.scene->geometries[args->geomID].primitives[args->primID]];
     if ((primitive.visibility & ray.mask) == 0) return;
-    if (glint::intersect(primitive.shape, to_ray(ray), {ray.tnear, ray.tfar}))
+    if (glint::intersect(primitive.shape, to_ray(ray, context), {ray.tnear, ray.tfar}))
         ray.tfar = -kInfinity;  // Embree's mark of an occluded ray
 }
 
@@ -344,6 +350,8 @@ std::optional<Hit> EmbreeAggregate::closest_hit(const Ray& ray, Interval t_range
     QueryContext context;
     rtcInitIntersectContext(&context.embree);
     context.scene = scene_.get();
+    context.time = ray.time;
+    context.wavelength = ray.wavelength;
     RTCRayHit rayhit;
     rayhit.ray = {ray.origin.x,
                   ray.origin.y,
@@ -389,6 +397,8 @@ bool EmbreeAggregate::any_hit(const Ray& ray, Interval t_range, std::uint32_t ra
     QueryContext context;
     rtcInitIntersectContext(&context.embree);
     context.scene = scene_.get();
+    context.time = ray.time;
+    context.wavelength = ray.wavelength;
     RTCRay r{ray.origin.x,
              ray.origin.y,
              ray.origin.z,

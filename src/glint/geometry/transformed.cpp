@@ -19,7 +19,7 @@ ObjectRay to_object(const Transform& world_from_object, const Ray& ray) {
     const Transform object_from_world = world_from_object.inverse();
     const Vector3 d = object_from_world(ray.direction);
     const float scale = length(d);
-    return {{object_from_world(ray.origin), d / scale}, scale};
+    return {{object_from_world(ray.origin), d / scale, ray.time, ray.wavelength}, scale};
 }
 
 }  // namespace

@@ -1,6 +1,7 @@
-// A ray P(t) = origin + t * direction. By design it holds no t range of its own: every query
-// takes the ray and an Interval of t beside it (as pbrt-v4 passes tMax beside its Ray), so one
-// ray serves closest-hit, shadow and shrinking-range queries without being copied or mutated.
+// A ray P(t) = origin + t * direction, at a moment of time and, when split, of one wavelength. By
+// design it holds no t range of its own: every query takes the ray and an Interval of t beside it
+// (as pbrt-v4 passes tMax beside its Ray), so one ray serves closest-hit, shadow and
+// shrinking-range queries without being copied or mutated.
 #pragma once
 
 #include "glint/math/vector.h"
@@ -12,6 +13,12 @@ namespace glint {
 struct Ray {
     Point3 origin;
     Vector3 direction;
+    // When the ray is traced, in the camera's shutter interval: moving shapes take their place
+    // at that time.
+    float time = 0;
+    // The wavelength the ray carries, in nanometres, once a dispersive surface has split it;
+    // 0 for a ray that carries every wavelength (RGB).
+    float wavelength = 0;
 
     constexpr Point3 at(float t) const { return origin + direction * t; }
 };

@@ -49,8 +49,10 @@ public:
     Vector3 operator()(Vector3 v) const;
     // Normals map by the inverse transpose so they stay perpendicular to the surface.
     Normal3 operator()(Normal3 n) const;
-    // The direction is transformed as a vector, not renormalised.
-    Ray operator()(const Ray& r) const { return {(*this)(r.origin), (*this)(r.direction)}; }
+    // The direction is transformed as a vector, not renormalised; time and wavelength stay.
+    Ray operator()(const Ray& r) const {
+        return {(*this)(r.origin), (*this)(r.direction), r.time, r.wavelength};
+    }
     Bounds3 operator()(const Bounds3& b) const;
 
     bool operator==(const Transform&) const = default;

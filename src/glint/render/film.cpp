@@ -1,8 +1,43 @@
-// The film's box-filtered accumulation of samples per pixel, with NaN and infinite samples left
-// out and counted.
+// Splatting samples through the reconstruction filter into fixed-point sums, and resolving them.
 #include "glint/render/film.h"
 
+#include <cmath>
+
 namespace glint {
+
+namespace {
+
+constexpr double kFixedOne = 0x1p32;
+
+// The product of a float weight and a float value is exact in double (24 + 24 bits < 53), and
+// its rounding to the fixed-point unit depends on nothing else: the same sample adds the same
+// integer wherever and whenever it is added.
+FixedSum to_fixed(float weight, float value) {
+    return FixedSum(std::llrint(double(weight) * double(value) * kFixedOne));
+}
+
+void add(PixelSum& sum, float weight, Color c) {
+    sum.r += to_fixed(weight, c.r);
+    sum.g += to_fixed(weight, c.g);
+    sum.b += to_fixed(weight, c.b);
+    sum.weight += to_fixed(weight, 1);
+}
+
+// The pixels along one axis whose centres i + 1/2 lie within the filter's support around the
+// sample coordinate p: -radius < i + 1/2 - p <= radius (the box's own convention; the other
+// filters are 0 at the edge anyway).
+struct Span {
+    int first, last;  // inclusive
+};
+
+Span reach(float p, float radius) {
+    return {int(std::floor(p - 0.5f - radius)) + 1, int(std::floor(p - 0.5f + radius))};
+}
+
+// At most this many pixels along one axis: 2 * kMaxFilterRadius + 1.
+constexpr int kMaxReach = 2 * int(kMaxFilterRadius) + 1;
+
+}  // namespace
 
 void BadSamples::add(SampleLocation where) {
     ++count;
@@ -15,20 +50,62 @@ BadSamples& BadSamples::operator+=(const BadSamples& o) {
     return *this;
 }
 
-void Film::add_sample(SampleLocation where, Color c, BadSamples& bad) {
-    if (!is_finite(c)) {
-        bad.add(where);
-        return;
+bool is_valid_sample(Color c) {
+    return std::abs(c.r) < kMaxSampleValue && std::abs(c.g) < kMaxSampleValue &&
+           std::abs(c.b) < kMaxSampleValue;  // false for NaN too
+}
+
+FilmTile::FilmTile(const Tile& tile, int image_width, int image_height, const Filter& filter)
+    : filter_(&filter) {
+    const float r = filter.radius();
+    const Span x = {reach(float(tile.x0), r).first, reach(float(tile.x1), r).last};
+    const Span y = {reach(float(tile.y0), r).first, reach(float(tile.y1), r).last};
+    region_ = {std::max(x.first, 0), std::max(y.first, 0), std::min(x.last + 1, image_width),
+               std::min(y.last + 1, image_height)};
+    sums_.resize(std::size_t(width()) * std::size_t(region_.y1 - region_.y0));
+}
+
+void FilmTile::add_sample(Point2 p, Color c) {
+    const float r = filter_->radius();
+    const Span xs = reach(p.x, r), ys = reach(p.y, r);
+    const int x0 = std::max(xs.first, region_.x0), x1 = std::min(xs.last, region_.x1 - 1);
+    const int y0 = std::max(ys.first, region_.y0), y1 = std::min(ys.last, region_.y1 - 1);
+    float wx[kMaxReach];
+    for (int x = x0; x <= x1; ++x) wx[x - x0] = filter_->evaluate(float(x) + 0.5f - p.x);
+    for (int y = y0; y <= y1; ++y) {
+        const float wy = filter_->evaluate(float(y) + 0.5f - p.y);
+        if (wy == 0) continue;
+        PixelSum* row = sums_.data() + std::size_t(y - region_.y0) * width();
+        for (int x = x0; x <= x1; ++x)
+            if (wx[x - x0] != 0) add(row[x - region_.x0], wx[x - x0] * wy, c);
     }
-    const std::size_t i = std::size_t(where.y) * width_ + where.x;
-    sum_[i] += c;
-    weight_[i] += 1;
+}
+
+Film::Film(int width, int height, const FilterSpec& filter)
+    : width_(width), height_(height), filter_(filter), sums_(std::size_t(width) * height) {}
+
+void Film::merge(const FilmTile& tile) {
+    const Tile& r = tile.region();
+    const std::lock_guard lock(merge_mutex_);
+    for (int y = r.y0; y < r.y1; ++y)
+        for (int x = r.x0; x < r.x1; ++x) {
+            PixelSum& sum = sums_[std::size_t(y) * width_ + x];
+            const PixelSum& add = tile.at(x, y);
+            sum.r += add.r;
+            sum.g += add.g;
+            sum.b += add.b;
+            sum.weight += add.weight;
+        }
 }
 
 Image Film::resolve() const {
     Image image(width_, height_);
-    for (std::size_t i = 0; i < sum_.size(); ++i)
-        if (weight_[i] > 0) image.pixels[i] = sum_[i] / weight_[i];
+    for (std::size_t i = 0; i < sums_.size(); ++i) {
+        const PixelSum& s = sums_[i];
+        if (s.weight <= 0) continue;
+        const double w = double(s.weight);
+        image.pixels[i] = {float(double(s.r) / w), float(double(s.g) / w), float(double(s.b) / w)};
+    }
     return image;
 }
 

@@ -1,13 +1,19 @@
-// The film: accumulates each pixel's weighted samples and resolves them to an image. It also
-// keeps the first non-finite sample, so that a NaN is reported, not painted.
+// The film: every pixel's sum of filter-weighted samples, its own and its neighbours' across
+// pixel and tile borders, resolved to an image. The sums are kept in fixed point, so that adding
+// is exact and the image is the same bit for bit whatever order the tiles, threads, passes or
+// machines add their samples in.
 #pragma once
 
 #include <cstdint>
+#include <mutex>
 #include <optional>
 #include <vector>
 
 #include "glint/image/image.h"
 #include "glint/math/color.h"
+#include "glint/math/vector.h"
+#include "glint/render/tiles.h"
+#include "glint/sampling/filter.h"
 
 namespace glint {
 
@@ -19,7 +25,7 @@ struct SampleLocation {
     }
 };
 
-// Non-finite samples met while rendering; they are left out of the image.
+// Samples left out of the image: NaN, infinite, or beyond kMaxSampleValue.
 struct BadSamples {
     std::uint64_t count = 0;
     std::optional<SampleLocation> first;
@@ -28,28 +34,66 @@ struct BadSamples {
     BadSamples& operator+=(const BadSamples& o);
 };
 
-// A box reconstruction filter over each pixel's own samples. Distinct pixels may be written
-// from distinct threads concurrently.
+// The brightest channel value a sample may have: fixed-point sums hold 32 fractional bits in a
+// 64-bit product of weight and value. A brighter sample is treated as a non-finite one.
+inline constexpr float kMaxSampleValue = 0x1p30f;
+
+// Whether a sample may enter the film: finite, no channel beyond kMaxSampleValue either way.
+bool is_valid_sample(Color c);
+
+// An exact sum of weighted channel values, 2^-32 its unit.
+__extension__ using FixedSum = __int128;
+
+struct PixelSum {
+    FixedSum r = 0, g = 0, b = 0, weight = 0;
+};
+
+// One tile's private part of the film: the pixels its samples reach, which extend past the tile
+// by the filter's radius. A render thread fills it without locks; Film::merge adds it in.
+class FilmTile {
+public:
+    FilmTile(const Tile& tile, int image_width, int image_height, const Filter& filter);
+
+    // Adds sample c taken at film position p (pixels; p is inside the tile) to every pixel whose
+    // centre lies within the filter's radius, weighted by the filter. c must be valid
+    // (is_valid_sample).
+    void add_sample(Point2 p, Color c);
+
+    const Tile& region() const { return region_; }  // pixels covered, clipped to the image
+    const PixelSum& at(int x, int y) const {
+        return sums_[std::size_t(y - region_.y0) * width() + (x - region_.x0)];
+    }
+
+private:
+    int width() const { return region_.x1 - region_.x0; }
+
+    const Filter* filter_;
+    Tile region_;
+    std::vector<PixelSum> sums_;
+};
+
 class Film {
 public:
-    Film(int width, int height)
-        : width_(width), height_(height), sum_(std::size_t(width) * height) {
-        weight_.assign(sum_.size(), 0.0f);
-    }
+    // The spec must be valid (describe_problem(spec) is empty).
+    Film(int width, int height, const FilterSpec& filter);
 
     int width() const { return width_; }
     int height() const { return height_; }
+    const Filter& filter() const { return filter_; }
 
-    // Adds a finite sample; a non-finite one is recorded in bad instead.
-    void add_sample(SampleLocation where, Color c, BadSamples& bad);
+    FilmTile make_tile(const Tile& tile) const { return {tile, width_, height_, filter_}; }
+    // Adds a finished tile's sums. Thread-safe; the order of merges does not matter.
+    void merge(const FilmTile& tile);
 
-    // Pixels without samples (an interrupted render) resolve to black.
+    // Each pixel's weighted sum over its sum of weights; black where no weight arrived (pixels
+    // of an interrupted render). Not concurrent with merge().
     Image resolve() const;
 
 private:
     int width_, height_;
-    std::vector<Color> sum_;
-    std::vector<float> weight_;
+    Filter filter_;
+    std::vector<PixelSum> sums_;
+    std::mutex merge_mutex_;
 };
 
 }  // namespace glint

@@ -1,25 +1,43 @@
-// Counts of the rays a render traced, by kind, as the lecture notes name them.
+// Counts of the rays a render traced, by kind, as the lecture notes name them. A new kind of ray
+// (an integrator's own) is one more RayKind and its name: the summary and the statistics file
+// list every kind.
 #pragma once
 
+#include <array>
+#include <cstddef>
 #include <cstdint>
+#include <string_view>
 
 namespace glint {
 
-struct RayStats {
-    std::uint64_t primary = 0;       // eye rays
-    std::uint64_t primary_hits = 0;  // eye rays that hit something
-    std::uint64_t shadow = 0;        // shadow feelers (each segment through transparent objects)
-    std::uint64_t reflected = 0;
-    std::uint64_t refracted = 0;
+enum class RayKind : std::uint8_t {
+    primary,    // eye rays, through the pixel (and the lens)
+    shadow,     // shadow feelers, towards a light or a point on one (each segment through
+                // transparent objects counts)
+    reflected,  // mirror or glossy reflection
+    refracted,  // refraction or translucency
+};
+inline constexpr std::size_t kRayKindCount = 4;
+// Names by RayKind, as the summary and the JSON statistics show them.
+inline constexpr std::array<std::string_view, kRayKindCount> kRayKindNames = {
+    "primary", "shadow", "reflected", "refracted"};
 
-    std::uint64_t total() const { return primary + shadow + reflected + refracted; }
+struct RayStats {
+    std::array<std::uint64_t, kRayKindCount> traced{};  // by RayKind
+    std::uint64_t primary_hits = 0;                     // eye rays that hit something
+
+    void count(RayKind kind) { ++traced[std::size_t(kind)]; }
+    std::uint64_t operator[](RayKind kind) const { return traced[std::size_t(kind)]; }
+
+    std::uint64_t total() const {
+        std::uint64_t sum = 0;
+        for (const std::uint64_t n : traced) sum += n;
+        return sum;
+    }
 
     RayStats& operator+=(const RayStats& o) {
-        primary += o.primary;
+        for (std::size_t i = 0; i < kRayKindCount; ++i) traced[i] += o.traced[i];
         primary_hits += o.primary_hits;
-        shadow += o.shadow;
-        reflected += o.reflected;
-        refracted += o.refracted;
         return *this;
     }
     bool operator==(const RayStats&) const = default;

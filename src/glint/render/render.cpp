@@ -1,5 +1,7 @@
 // The render loop: tiles as oneTBB tasks in an arena of the requested size, one integrator per
-// tile, totals merged under a lock, and a cancel flag checked before each tile.
+// tile, each tile's samples splatted into its own part of the film and merged when done, totals
+// merged under a lock, and a cancel flag checked before each tile. The integrator is a template
+// argument, chosen once per render: no virtual call per ray.
 #include "glint/render/render.h"
 
 #include <tbb/blocked_range.h>
@@ -13,7 +15,7 @@
 
 #include "glint/render/tiles.h"
 #include "glint/render/whitted.h"
-#include "glint/sampling/pixel_sampler.h"
+#include "glint/sampling/sampler.h"
 
 namespace glint {
 
@@ -24,31 +26,36 @@ struct TileTotals {
     BadSamples bad;
 };
 
-void render_tile(const Tile& tile, const World& world, const PixelSampler& sampler, Film& film,
+template <class Integrator>
+void render_tile(const Tile& tile, const World& world, const Sampler& sampler, Film& film,
                  TileTotals& totals) {
     const Camera& camera = world.camera();
-    WhittedIntegrator integrator(world);  // one per tile: it holds per-thread caches
+    const int width = world.settings().width;
+    Integrator integrator(world);  // one per tile: it holds per-thread caches
+    FilmTile film_tile = film.make_tile(tile);
     for (int y = tile.y0; y < tile.y1; ++y)
         for (int x = tile.x0; x < tile.x1; ++x)
             for (int s = 0; s < sampler.samples_per_pixel(); ++s) {
-                const Point2 offset = sampler.offset(s);
-                const Ray ray = camera.generate_ray({float(x) + offset.x, float(y) + offset.y});
-                film.add_sample({x, y, s}, integrator.trace_eye_ray(ray, totals.rays), totals.bad);
+                SampleStream stream(sampler, std::uint64_t(y) * std::uint64_t(width) + x,
+                                    std::uint32_t(s));
+                const Point2 offset = stream.get_2d(kPixelDimension);
+                const Point2 p{float(x) + offset.x, float(y) + offset.y};
+                const Color c =
+                    integrator.trace_eye_ray(camera.generate_ray(p), stream, totals.rays);
+                if (is_valid_sample(c)) {
+                    film_tile.add_sample(p, c);
+                } else {
+                    totals.bad.add({x, y, s});
+                }
             }
+    film.merge(film_tile);
 }
 
-}  // namespace
-
-RenderResult render(const World& world, const RenderOptions& options, RenderProgress* progress) {
-    const auto start = std::chrono::steady_clock::now();
+template <class Integrator>
+void render_tiles(const World& world, const RenderOptions& options, const std::vector<Tile>& tiles,
+                  Film& film, RenderProgress* progress, RenderResult& result) {
     const RenderSettings& settings = world.settings();
-    const std::vector<Tile> tiles = make_tiles(settings.width, settings.height, options.tile_size);
-    if (progress) progress->tiles_total = static_cast<int>(tiles.size());
-
-    Film film(settings.width, settings.height);
-    const PixelSampler sampler(settings.sampler, settings.samples_per_pixel, options.seed);
-
-    RenderResult result;
+    const Sampler sampler(sampler_of(settings), settings.samples_per_pixel, options.seed);
     std::mutex totals_mutex;
     std::atomic<bool> skipped{false};
     // An explicit thread count may exceed the cores (to check determinism, say): lift TBB's
@@ -68,7 +75,7 @@ RenderResult render(const World& world, const RenderOptions& options, RenderProg
                         continue;
                     }
                     TileTotals totals;
-                    render_tile(tiles[i], world, sampler, film, totals);
+                    render_tile<Integrator>(tiles[i], world, sampler, film, totals);
                     {
                         const std::lock_guard lock(totals_mutex);
                         result.rays += totals.rays;
@@ -79,9 +86,25 @@ RenderResult render(const World& world, const RenderOptions& options, RenderProg
             },
             tbb::simple_partitioner());
     });
-
-    result.image = film.resolve();
     result.complete = !skipped;
+}
+
+}  // namespace
+
+RenderResult render(const World& world, const RenderOptions& options, RenderProgress* progress) {
+    const auto start = std::chrono::steady_clock::now();
+    const RenderSettings& settings = world.settings();
+    const std::vector<Tile> tiles = make_tiles(settings.width, settings.height, options.tile_size);
+    if (progress) progress->tiles_total = static_cast<int>(tiles.size());
+
+    Film film(settings.width, settings.height, filter_of(settings));
+    RenderResult result;
+    switch (settings.integrator) {
+        case IntegratorKind::whitted:
+            render_tiles<WhittedIntegrator>(world, options, tiles, film, progress, result);
+            break;
+    }
+    result.image = film.resolve();
     result.seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return result;

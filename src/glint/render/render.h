@@ -1,6 +1,7 @@
-// Renders a World into an image: tiles in parallel (oneTBB), samples per pixel from the pixel
-// sampler, colours from the Whitted integrator. The image is a pure function of the world and
-// the seed, whatever the thread count, tile size or tile order.
+// Renders a World into an image: tiles in parallel (oneTBB), samples per pixel from the sampler,
+// colours from the scene's integrator, through the reconstruction filter into the film. The image
+// is a pure function of the world and the seed, whatever the thread count, tile size or tile
+// order.
 #pragma once
 
 #include <atomic>

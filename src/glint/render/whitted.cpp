@@ -8,7 +8,7 @@
 namespace glint {
 
 Color WhittedIntegrator::trace_eye_ray(const Ray& ray, RayStats& stats) {
-    ++stats.primary;
+    stats.count(RayKind::primary);
     return trace(ray, 1, 1, stats);
 }
 
@@ -54,12 +54,12 @@ Color WhittedIntegrator::trace(const Ray& ray, int depth, float weight, RayStats
         }
     }
     if (kr > 0 && weight * kr >= settings.min_weight) {
-        ++stats.reflected;
+        stats.count(RayKind::reflected);
         const Ray r = world_.spawn_ray(sp.p, ng, normalize(reflect(ray.direction, n)), sp.error);
         color += kr * trace(r, depth + 1, weight * kr, stats);
     }
     if (kt > 0 && weight * kt >= settings.min_weight) {
-        ++stats.refracted;
+        stats.count(RayKind::refracted);
         const Ray t = world_.spawn_ray(sp.p, ng, refracted, sp.error);
         color += kt * trace(t, depth + 1, weight * kt, stats);
     }
@@ -72,13 +72,13 @@ float WhittedIntegrator::shadow_factor(std::size_t light, const SurfacePoint& sp
     // The offset origin is slightly nearer to or farther from the light; stop just short of it.
     float remaining = light_distance - distance(sp.p, feeler.origin);
     if (!world_.settings().transparent_shadows) {
-        ++stats.shadow;
+        stats.count(RayKind::shadow);
         return world_.occluded_towards(light, feeler, {0, remaining}, last_occluder_[light]) ? 0.0f
                                                                                              : 1.0f;
     }
     float factor = 1;
     for (int crossing = 0; crossing < kMaxShadowCrossings; ++crossing) {
-        ++stats.shadow;
+        stats.count(RayKind::shadow);
         const auto hit = world_.intersect(feeler, {0, remaining}, kVisibleToShadowRays);
         if (!hit) return factor;
         factor *= world_.material_of(hit->primitive).transmit;

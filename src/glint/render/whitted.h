@@ -12,6 +12,7 @@
 #include "glint/math/ray.h"
 #include "glint/render/ray_stats.h"
 #include "glint/render/world.h"
+#include "glint/sampling/sampler.h"
 
 namespace glint {
 
@@ -24,6 +25,10 @@ public:
 
     // The colour seen along an eye ray. Counts every ray it traces, the eye ray included.
     Color trace_eye_ray(const Ray& ray, RayStats& stats);
+    // The render loop's form: Whitted's ray tracer draws no random numbers of its own.
+    Color trace_eye_ray(const Ray& ray, SampleStream&, RayStats& stats) {
+        return trace_eye_ray(ray, stats);
+    }
 
     // The colour seen along a ray at the given depth of the ray tree (eye rays are depth 1)
     // whose contribution to the pixel is scaled by weight (the product of kr and kt above it).

@@ -3,7 +3,10 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
+#include <span>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "glint/camera/camera_spec.h"
@@ -11,18 +14,30 @@
 #include "glint/image/image_limits.h"  // kMaxImagePixels, shared with image files
 #include "glint/math/color.h"
 #include "glint/math/huge_page_allocator.h"
-#include "glint/sampling/pixel_sampler.h"
+#include "glint/sampling/filter.h"
+#include "glint/sampling/sampler.h"
 #include "glint/shading/light.h"
 #include "glint/shading/material.h"
 
 namespace glint {
 
+// The algorithms of the slides that turn an eye ray into a colour: Whitted's recursive ray
+// tracing (1980) and Cook, Porter and Carpenter's distributed ray tracing (1984).
+enum class IntegratorKind { whitted };
+
+// The integrators' names, sorted, as scene files and the command line write them.
+std::span<const std::string_view> integrator_names();
+std::optional<IntegratorKind> integrator_from_name(std::string_view name);
+
 // What the scene asks of the image and of the ray tree.
 struct RenderSettings {
     int width = 640;
     int height = 480;
+    IntegratorKind integrator = IntegratorKind::whitted;
     int samples_per_pixel = 1;
-    SamplerKind sampler = SamplerKind::regular;
+    // Unset: the integrator's own choice (sampler_of, filter_of).
+    std::optional<SamplerKind> sampler;
+    std::optional<FilterSpec> filter;
     int max_depth = 5;          // eye rays are depth 1; rays deeper than this are not traced
     float min_weight = 0.001f;  // rays whose product of weights falls below this are not traced
     Color background;           // what rays that hit nothing see
@@ -30,6 +45,11 @@ struct RenderSettings {
     // instead of stopping at them.
     bool transparent_shadows = false;
 };
+
+// The sampler and filter a render uses: the scene's, or its integrator's default (whitted: the
+// regular grid and a box over each pixel, its samples averaged).
+SamplerKind sampler_of(const RenderSettings& settings);
+FilterSpec filter_of(const RenderSettings& settings);
 
 struct SceneObject {
     Shape shape;

@@ -3,18 +3,51 @@
 #include "glint/scene/yaml/yaml_settings.h"
 
 #include <cmath>
+#include <vector>
 
 namespace glint {
 
 namespace {
-constexpr std::string_view kSamplers[] = {"regular"};
 constexpr std::string_view kCameraTypes[] = {"orthographic", "perspective"};
+
+// `filter: gaussian`, or a map with the type and its parameters.
+FilterSpec read_filter(const YamlSource& source, const YAML::Node& node, const Field& field) {
+    FilterSpec spec;
+    if (!node.IsMap() && !node.IsScalar())
+        throw type_error(source, node, field, "a filter name or map");
+    if (!node.IsMap()) {
+        const std::string name = read_string(source, node, field);
+        const auto kind = filter_from_name(name);
+        if (!kind) throw unknown_name(source, node, "filter", "filters", name, filter_names());
+        spec.kind = *kind;
+        spec.radius = default_filter_radius(spec.kind);
+        return spec;
+    }
+    auto entries = read_map(source, node, field);
+    const std::string type = read_type(source, node, entries, "filter", filter_names());
+    spec.kind = *filter_from_name(type);
+    std::vector<std::string_view> keys = {"type", "radius"};
+    if (spec.kind == FilterKind::gaussian) keys.push_back("sigma");
+    if (spec.kind == FilterKind::mitchell) keys.insert(keys.end(), {"b", "c"});
+    const MapReader map(source, node, std::move(entries), type + " filter", keys);
+    spec.radius = map.number("radius", {kMinFilterRadius, kMaxFilterRadius},
+                             default_filter_radius(spec.kind));
+    spec.sigma = map.number("sigma", kPositive, spec.sigma);
+    spec.b = map.number("b", kAnyNumber, spec.b);
+    spec.c = map.number("c", kAnyNumber, spec.c);
+    if (const std::string problem = describe_problem(spec); !problem.empty()) {
+        const MapEntry* at = map.find(spec.kind == FilterKind::gaussian ? "sigma" : "b");
+        throw source.error_at(at ? at->value : node, problem);
+    }
+    return spec;
+}
+
 }  // namespace
 
 RenderSettings read_image(const YamlSource& source, const YAML::Node& node, const Field& field) {
     const MapReader map(source, node, field, "image",
-                        {"width", "height", "samples", "sampler", "max_depth", "min_weight",
-                         "background", "transparent_shadows"});
+                        {"width", "height", "integrator", "samples", "sampler", "filter",
+                         "max_depth", "min_weight", "background", "transparent_shadows"});
     RenderSettings s;
     s.width = map.integer("width", {1, kMaxImageSide}, s.width);
     s.height = map.integer("height", {1, kMaxImageSide}, s.height);
@@ -23,14 +56,21 @@ RenderSettings read_image(const YamlSource& source, const YAML::Node& node, cons
                                         std::to_string(s.height) + " pixels, more than the " +
                                         "limit of " + std::to_string(kMaxImagePixels));
     }
-    map.choice("sampler", kSamplers, "sampler", "samplers", "regular");
-    s.sampler = SamplerKind::regular;
+    const std::string integrator =
+        map.choice("integrator", integrator_names(), "integrator", "integrators", "whitted");
+    s.integrator = *integrator_from_name(integrator);
+    if (map.has("sampler"))
+        s.sampler =
+            sampler_from_name(map.choice("sampler", sampler_names(), "sampler", "samplers", ""));
+    if (const MapEntry* filter = map.find("filter"))
+        s.filter = read_filter(source, filter->value, map.field("filter"));
     s.samples_per_pixel = map.integer("samples", {1, kMaxSamplesPerPixel}, s.samples_per_pixel);
-    if (!is_valid_sample_count(s.sampler, s.samples_per_pixel)) {
+    if (!is_valid_sample_count(sampler_of(s), s.samples_per_pixel)) {
         throw source.error_at(map.require("samples").value,
                               "samples must be a square number (1, 4, 9, 16, …) for the "
                               "regular sampler, got " +
-                                  std::to_string(s.samples_per_pixel));
+                                  std::to_string(s.samples_per_pixel),
+                              {"the jittered and sobol samplers take any number"});
     }
     s.max_depth = map.integer("max_depth", {1, kMaxDepth}, s.max_depth);
     s.min_weight = map.number("min_weight", kUnitInterval, s.min_weight);

@@ -1,0 +1,184 @@
+// The three point patterns behind Sampler: regular grid centres, correlated multi-jittered
+// points (Kensler 2013) and shuffled, Owen-scrambled Sobol points (Burley 2020). Each pattern is
+// keyed by (seed, pixel, dimension), so that every dimension of every pixel gets its own.
+#include "glint/sampling/sampler.h"
+
+#include <bit>
+#include <cmath>
+
+#include "glint/sampling/random.h"
+
+namespace glint {
+
+namespace {
+
+// The key of one dimension's pattern in one pixel.
+std::uint64_t pattern_key(std::uint64_t seed, std::uint64_t pixel, std::uint32_t dimension) {
+    std::uint64_t h = mix64(seed + 0x9e3779b97f4a7c15ull);
+    h = mix64(h ^ pixel);
+    return mix64(h ^ (std::uint64_t(dimension) * 0x8cb92ba72f3d8dd7ull));
+}
+
+// A uniform float in [0, 1) from a key and an index.
+float jitter(std::uint64_t key, std::uint32_t index) {
+    return float(mix64(key ^ (std::uint64_t(index) * 0x632be59bd9b4e019ull)) >> 40) * 0x1.0p-24f;
+}
+
+// A permutation of [0, size) chosen by key: a keyed bijection of the smallest power-of-two range
+// that holds size (multiplication by an odd number and xor-shifts are both invertible modulo
+// 2^bits), walked along its cycle until it lands inside [0, size).
+std::uint32_t permute(std::uint32_t i, std::uint32_t size, std::uint64_t key) {
+    if (size <= 1) return 0;
+    const std::uint32_t mask = std::bit_ceil(size) - 1;
+    const int shift = std::max(1, std::popcount(mask) / 2);
+    const std::uint64_t k1 = mix64(key), k2 = mix64(k1);
+    do {
+        i = (i ^ std::uint32_t(k1)) & mask;
+        i = (i * (std::uint32_t(k1 >> 32) | 1)) & mask;
+        i ^= i >> shift;
+        i = (i ^ std::uint32_t(k2)) & mask;
+        i = (i * (std::uint32_t(k2 >> 32) | 1)) & mask;
+        i ^= i >> shift;
+        i = (i * 0x2c1b3c6du) & mask;
+        i ^= i >> 1;
+    } while (i >= size);
+    return i;
+}
+
+// The grid of a pattern of `count` points: `columns` x `rows` cells, the last row partly empty
+// when count is not a product of the two (Kensler's layout for any count).
+struct Grid {
+    std::uint32_t columns, rows;
+};
+
+Grid grid_for(std::uint32_t count) {
+    auto columns = std::uint32_t(std::ceil(std::sqrt(double(count))));
+    while (std::uint64_t(columns) * columns < count) ++columns;  // if sqrt rounded down
+    while (columns > 1 && std::uint64_t(columns - 1) * (columns - 1) >= count) --columns;
+    return {columns, (count + columns - 1) / columns};
+}
+
+Point2 regular_2d(std::uint32_t index, std::uint32_t count, std::uint32_t dimension,
+                  std::uint64_t key) {
+    const Grid g = grid_for(count);
+    // The pixel position keeps scanline order (sample i in cell (i mod n, i div n)); the other
+    // dimensions shuffle the cells, so that dimensions do not move in lockstep.
+    const std::uint32_t cell = dimension == kPixelDimension ? index : permute(index, count, key);
+    return {(float(cell % g.columns) + 0.5f) / float(g.columns),
+            (float(cell / g.columns) + 0.5f) / float(g.rows)};
+}
+
+// Kensler's correlated multi-jitter: point s lies in cell (s mod m, s div m) of the m x n grid,
+// and inside it in the sub-cell that permutations of the rows and columns choose, so that the
+// points also stratify the m n x m n fine grid's rows and columns.
+Point2 jittered_2d(std::uint32_t index, std::uint32_t count, std::uint64_t key) {
+    const Grid g = grid_for(count);
+    const std::uint32_t s = permute(index, count, key);
+    const std::uint32_t column = s % g.columns, row = s / g.columns;
+    const std::uint32_t sx = permute(column, g.columns, key ^ 0xa511e9b3a511e9b3ull);
+    const std::uint32_t sy = permute(row, g.rows, key ^ 0x63d8359563d83595ull);
+    const float jx = jitter(key ^ 0x1b873593ull, s), jy = jitter(key ^ 0xcc9e2d51ull, s);
+    const float x = (float(column) + (float(sy) + jx) / float(g.rows)) / float(g.columns);
+    const float y = (float(row) + (float(sx) + jy) / float(g.columns)) / float(g.rows);
+    // Rounding may reach 1 for the last cell; the contract is [0, 1).
+    return {std::min(x, 0x1.fffffep-1f), std::min(y, 0x1.fffffep-1f)};
+}
+
+std::uint32_t reverse_bits(std::uint32_t x) {
+    x = (x << 16) | (x >> 16);
+    x = ((x & 0x00ff00ffu) << 8) | ((x & 0xff00ff00u) >> 8);
+    x = ((x & 0x0f0f0f0fu) << 4) | ((x & 0xf0f0f0f0u) >> 4);
+    x = ((x & 0x33333333u) << 2) | ((x & 0xccccccccu) >> 2);
+    return ((x & 0x55555555u) << 1) | ((x & 0xaaaaaaaau) >> 1);
+}
+
+// Laine and Karras' hash, in Burley's (2020) improved form: each output bit depends only on the
+// bits below it, which makes reverse_bits(hash(reverse_bits(x))) a nested uniform (Owen)
+// scramble.
+std::uint32_t laine_karras_permutation(std::uint32_t x, std::uint32_t seed) {
+    x += seed;
+    x ^= x * 0x6c50b47cu;
+    x ^= x * 0xb82f1e52u;
+    x ^= x * 0xc7afe638u;
+    x ^= x * 0x8d22f6e6u;
+    return x;
+}
+
+std::uint32_t nested_uniform_scramble(std::uint32_t x, std::uint32_t seed) {
+    return reverse_bits(laine_karras_permutation(reverse_bits(x), seed));
+}
+
+// The first two dimensions of the Sobol sequence: the van der Corput sequence, and the one whose
+// generator matrix is Pascal's triangle modulo 2.
+std::uint32_t sobol_0(std::uint32_t index) { return reverse_bits(index); }
+std::uint32_t sobol_1(std::uint32_t index) {
+    std::uint32_t x = 0;
+    for (std::uint32_t v = 1u << 31; index != 0; index >>= 1, v ^= v >> 1)
+        if (index & 1) x ^= v;
+    return x;
+}
+
+float to_unit(std::uint32_t x) { return float(x >> 8) * 0x1.0p-24f; }
+
+// Burley's shuffled scrambled Sobol: the index is Owen-scrambled too, which keeps every aligned
+// block of 2^k indices a (0,k,2)-net while decorrelating the dimensions.
+Point2 sobol_2d(std::uint32_t index, std::uint64_t key) {
+    const std::uint32_t i = nested_uniform_scramble(index, std::uint32_t(key));
+    const std::uint64_t k = mix64(key);
+    return {to_unit(nested_uniform_scramble(sobol_0(i), std::uint32_t(k))),
+            to_unit(nested_uniform_scramble(sobol_1(i), std::uint32_t(k >> 32)))};
+}
+
+}  // namespace
+
+namespace {
+constexpr std::string_view kSamplerNames[] = {"jittered", "regular", "sobol"};
+constexpr SamplerKind kSamplerKinds[] = {SamplerKind::jittered, SamplerKind::regular,
+                                         SamplerKind::sobol};
+}  // namespace
+
+std::span<const std::string_view> sampler_names() { return kSamplerNames; }
+
+std::optional<SamplerKind> sampler_from_name(std::string_view name) {
+    for (std::size_t i = 0; i < std::size(kSamplerNames); ++i)
+        if (kSamplerNames[i] == name) return kSamplerKinds[i];
+    return std::nullopt;
+}
+
+bool is_valid_sample_count(SamplerKind kind, int samples_per_pixel) {
+    if (samples_per_pixel < 1) return false;
+    if (kind != SamplerKind::regular) return true;
+    const auto n = std::lround(std::sqrt(double(samples_per_pixel)));
+    return n * n == samples_per_pixel;
+}
+
+Point2 Sampler::get_2d(std::uint64_t pixel, std::uint32_t index, std::uint32_t count,
+                       std::uint32_t dimension) const {
+    const std::uint64_t key = pattern_key(seed_, pixel, dimension);
+    switch (kind_) {
+        case SamplerKind::regular:
+            return regular_2d(index, count, dimension, key);
+        case SamplerKind::jittered:
+            return jittered_2d(index, count, key);
+        case SamplerKind::sobol:
+            return sobol_2d(index, key);
+    }
+    return {0.5f, 0.5f};
+}
+
+float Sampler::get_1d(std::uint64_t pixel, std::uint32_t index, std::uint32_t count,
+                      std::uint32_t dimension) const {
+    const std::uint64_t key = pattern_key(seed_, pixel, dimension);
+    switch (kind_) {
+        case SamplerKind::regular:
+            return (float(permute(index, count, key)) + 0.5f) / float(count);
+        case SamplerKind::jittered:
+            return std::min((float(permute(index, count, key)) + jitter(key, index)) / float(count),
+                            0x1.fffffep-1f);
+        case SamplerKind::sobol:
+            return sobol_2d(index, key).x;
+    }
+    return 0.5f;
+}
+
+}  // namespace glint

@@ -1,0 +1,98 @@
+// The numbers every pixel sample draws, dimension after dimension (pixel position, lens, time,
+// wavelength, then lights and lobes): each a pure function of (pixel, sample index, dimension,
+// seed), so an image does not depend on threads, tiles or machines (DESIGN principle 2).
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <span>
+#include <string_view>
+
+#include "glint/math/vector.h"
+
+namespace glint {
+
+// regular: the points of each dimension at the centres of a grid of cells, no randomness (for the
+//   pixel position, today's n x n supersampling); jittered: one random point in each cell of a
+//   grid, correlated multi-jittered so that rows and columns are stratified too (Kensler 2013);
+//   sobol: the Sobol (0,2)-sequence, Owen-scrambled and shuffled per dimension (Burley 2020), good
+//   for any count and for every prefix of it (adaptive sampling).
+enum class SamplerKind { regular, jittered, sobol };
+
+// The samplers' names, sorted, as scene files and the command line write them.
+std::span<const std::string_view> sampler_names();
+std::optional<SamplerKind> sampler_from_name(std::string_view name);
+
+// The regular grid of the pixel position needs a square number of samples (1, 4, 9, 16, ...);
+// the other kinds take any count >= 1.
+bool is_valid_sample_count(SamplerKind kind, int samples_per_pixel);
+
+// The dimensions every sample reserves, whether or not the scene uses them, so that a dimension
+// means the same thing in every sample of a pixel.
+inline constexpr std::uint32_t kPixelDimension = 0;       // where in the pixel (2D)
+inline constexpr std::uint32_t kLensDimension = 1;        // where on the lens (2D)
+inline constexpr std::uint32_t kTimeDimension = 2;        // when in the shutter interval (1D)
+inline constexpr std::uint32_t kWavelengthDimension = 3;  // which wavelength (1D)
+inline constexpr std::uint32_t kFirstFreeDimension = 4;
+
+class Sampler {
+public:
+    // samples_per_pixel is the size of each dimension's pattern: the count the pixels take (or
+    // the most they may take); it must satisfy is_valid_sample_count(kind, samples_per_pixel).
+    Sampler(SamplerKind kind, int samples_per_pixel, std::uint64_t seed)
+        : kind_(kind), spp_(samples_per_pixel), seed_(seed) {}
+
+    SamplerKind kind() const { return kind_; }
+    int samples_per_pixel() const { return spp_; }
+    std::uint64_t seed() const { return seed_; }
+
+    // Point `index` of the pattern of `count` points that dimension `dimension` of `pixel`
+    // spreads over [0,1)^2. A sample with n sub-samples in one dimension (n shadow rays) takes
+    // points sample * n + j of a pattern of samples_per_pixel * n points, so that they are
+    // stratified across the pixel's samples together.
+    Point2 get_2d(std::uint64_t pixel, std::uint32_t index, std::uint32_t count,
+                  std::uint32_t dimension) const;
+    // The same in one dimension, over [0,1).
+    float get_1d(std::uint64_t pixel, std::uint32_t index, std::uint32_t count,
+                 std::uint32_t dimension) const;
+
+private:
+    SamplerKind kind_;
+    int spp_;
+    std::uint64_t seed_;
+};
+
+// One sample of one pixel: the camera's dimensions, and fresh dimensions handed out in the order
+// an integrator asks for them. Cheap to copy; allocates nothing.
+class SampleStream {
+public:
+    SampleStream(const Sampler& sampler, std::uint64_t pixel, std::uint32_t index)
+        : sampler_(&sampler), pixel_(pixel), index_(index) {}
+
+    std::uint32_t index() const { return index_; }
+
+    // A reserved dimension (kPixelDimension, ...) of this sample.
+    Point2 get_2d(std::uint32_t dimension) const { return get_2d(dimension, 0, 1); }
+    float get_1d(std::uint32_t dimension) const {
+        return sampler_->get_1d(pixel_, index_, spp(), dimension);
+    }
+    // Sub-sample j of n in one dimension (see Sampler::get_2d).
+    Point2 get_2d(std::uint32_t dimension, std::uint32_t j, std::uint32_t n) const {
+        return sampler_->get_2d(pixel_, index_ * n + j, spp() * n, dimension);
+    }
+
+    // A dimension of its own for the caller, different from every other one of this sample.
+    std::uint32_t next_dimension() { return next_++; }
+    Point2 next_2d() { return get_2d(next_dimension()); }
+    float next_1d() { return get_1d(next_dimension()); }
+
+private:
+    std::uint32_t spp() const { return std::uint32_t(sampler_->samples_per_pixel()); }
+
+    const Sampler* sampler_;
+    std::uint64_t pixel_;
+    std::uint32_t index_;
+    std::uint32_t next_ = kFirstFreeDimension;
+};
+
+}  // namespace glint

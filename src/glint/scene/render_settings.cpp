@@ -1,0 +1,28 @@
+// The integrators' names, and the sampler and filter each takes unless the scene says otherwise.
+#include "glint/scene/scene.h"
+
+namespace glint {
+
+namespace {
+// Sorted by name, for the messages that list them.
+constexpr std::string_view kIntegratorNames[] = {"whitted"};
+constexpr IntegratorKind kIntegratorKinds[] = {IntegratorKind::whitted};
+}  // namespace
+
+std::span<const std::string_view> integrator_names() { return kIntegratorNames; }
+
+std::optional<IntegratorKind> integrator_from_name(std::string_view name) {
+    for (std::size_t i = 0; i < std::size(kIntegratorNames); ++i)
+        if (kIntegratorNames[i] == name) return kIntegratorKinds[i];
+    return std::nullopt;
+}
+
+SamplerKind sampler_of(const RenderSettings& settings) {
+    return settings.sampler.value_or(SamplerKind::regular);
+}
+
+FilterSpec filter_of(const RenderSettings& settings) {
+    return settings.filter.value_or(FilterSpec{});
+}
+
+}  // namespace glint
