@@ -138,6 +138,8 @@ int run_render(const RenderCommand& command) {
         shadows.light_buffer = command.shadow_accel != "none";
         shadows.occluder_cache = command.shadow_accel == "light-buffer+cache";
         const World world(std::move(scene), *accel, shadows);
+        for (const std::string& warning : world.warnings())
+            std::fprintf(stderr, "glint: warning: %s\n", warning.c_str());
 
         RenderOptions options;
         options.threads = command.threads;

@@ -64,7 +64,8 @@ TEST(Filter, ProblemsAreDescribed) {
     spec.radius = 1.5f;
     spec.kind = FilterKind::gaussian;
     spec.sigma = 2;
-    EXPECT_EQ(describe_problem(spec), "gaussian filter sigma must be in (0, radius] = (0, 1.5], got 2");
+    EXPECT_EQ(describe_problem(spec),
+              "gaussian filter sigma must be in (0, radius] = (0, 1.5], got 2");
     spec.sigma = 0.5f;
     EXPECT_EQ(describe_problem(spec), "");
 }

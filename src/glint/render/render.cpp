@@ -13,6 +13,7 @@
 #include <mutex>
 #include <optional>
 
+#include "glint/render/distributed.h"
 #include "glint/render/tiles.h"
 #include "glint/render/whitted.h"
 #include "glint/sampling/sampler.h"
@@ -102,6 +103,9 @@ RenderResult render(const World& world, const RenderOptions& options, RenderProg
     switch (settings.integrator) {
         case IntegratorKind::whitted:
             render_tiles<WhittedIntegrator>(world, options, tiles, film, progress, result);
+            break;
+        case IntegratorKind::distributed:
+            render_tiles<DistributedIntegrator>(world, options, tiles, film, progress, result);
             break;
     }
     result.image = film.resolve();

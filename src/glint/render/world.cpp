@@ -36,6 +36,7 @@ World::World(Scene scene, AccelKind accel, ShadowAcceleration shadows)
     for (SceneObject& object : scene.objects) {
         std::uint32_t visibility = kVisibleToCameraRays;
         if (object.casts_shadow) visibility |= kVisibleToShadowRays;
+        add_object_light(object, std::uint32_t(primitives_.size()));
         primitives_.push_back({std::move(object.shape), visibility});
         material_of_.push_back(object.material);
     }
@@ -55,6 +56,19 @@ World::World(Scene scene, AccelKind accel, ShadowAcceleration shadows)
     // light buffers list) get their own BVH now rather than on a render thread's first ray.
     for (const Primitive& p : primitives_)
         prepare_mesh_bvhs(p.shape, any_buffer && LightBuffer::tests_whole(p.shape));
+}
+
+void World::add_object_light(const SceneObject& object, std::uint32_t primitive) {
+    const Color emission = materials_[object.material].emission;
+    if (!object.emits_light || is_black(emission)) return;
+    if (auto surface = SurfaceSampler::of(object.shape)) {
+        object_lights_.push_back({std::move(*surface), emission, primitive});
+    } else if (settings_.integrator != IntegratorKind::whitted) {
+        warnings_.push_back("object " + std::to_string(primitive) + " (" +
+                            std::string(shape_name(object.shape)) +
+                            ") emits light but cannot light the scene: only spheres, disks, "
+                            "triangles, convex polygons, boxes, cylinders and meshes can");
+    }
 }
 
 bool World::occluded_towards(std::size_t light, const Ray& ray, Interval t_range,

@@ -14,6 +14,7 @@
 #include "glint/camera/camera.h"
 #include "glint/math/huge_page_allocator.h"
 #include "glint/scene/scene.h"
+#include "glint/shading/object_light.h"
 
 namespace glint {
 
@@ -37,7 +38,12 @@ public:
     const RenderSettings& settings() const { return settings_; }
     const Camera& camera() const { return camera_; }
     Color ambient() const { return ambient_; }
+    // The scene's lights, in scene order (light buffers and shadow caches are indexed by it).
     std::span<const Light> lights() const { return lights_; }
+    // The objects whose material emits light and whose surface can be drawn on, in scene order.
+    std::span<const ObjectLight> object_lights() const { return object_lights_; }
+    // What the user should know about the world as built ("an emitting torus cannot light").
+    const std::vector<std::string>& warnings() const { return warnings_; }
     // What the acceleration structure is built over, in scene order (to build others beside it).
     std::span<const Primitive> primitives() const { return primitives_; }
 
@@ -71,11 +77,15 @@ public:
     Ray spawn_ray(Point3 p, Normal3 n, Vector3 d, float error = 0) const;
 
 private:
+    void add_object_light(const SceneObject& object, std::uint32_t primitive);
+
     RenderSettings settings_;
     Camera camera_;
     Color ambient_;
     std::vector<Material> materials_;
     std::vector<Light> lights_;
+    std::vector<ObjectLight> object_lights_;
+    std::vector<std::string> warnings_;
     LargeVector<Primitive> primitives_;
     std::vector<std::uint32_t> material_of_;  // per primitive
     std::unique_ptr<Aggregate> aggregate_;    // over primitives_

@@ -5,8 +5,9 @@ namespace glint {
 
 namespace {
 // Sorted by name, for the messages that list them.
-constexpr std::string_view kIntegratorNames[] = {"whitted"};
-constexpr IntegratorKind kIntegratorKinds[] = {IntegratorKind::whitted};
+constexpr std::string_view kIntegratorNames[] = {"distributed", "whitted"};
+constexpr IntegratorKind kIntegratorKinds[] = {IntegratorKind::distributed,
+                                               IntegratorKind::whitted};
 }  // namespace
 
 std::span<const std::string_view> integrator_names() { return kIntegratorNames; }
@@ -18,11 +19,16 @@ std::optional<IntegratorKind> integrator_from_name(std::string_view name) {
 }
 
 SamplerKind sampler_of(const RenderSettings& settings) {
-    return settings.sampler.value_or(SamplerKind::regular);
+    if (settings.sampler) return *settings.sampler;
+    return settings.integrator == IntegratorKind::whitted ? SamplerKind::regular
+                                                          : SamplerKind::jittered;
 }
 
 FilterSpec filter_of(const RenderSettings& settings) {
-    return settings.filter.value_or(FilterSpec{});
+    if (settings.filter) return *settings.filter;
+    if (settings.integrator == IntegratorKind::whitted) return FilterSpec{};
+    // The notes' "stochastic sampling with Gaussian weighting".
+    return {FilterKind::gaussian, default_filter_radius(FilterKind::gaussian)};
 }
 
 }  // namespace glint

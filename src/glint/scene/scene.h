@@ -23,7 +23,7 @@ namespace glint {
 
 // The algorithms of the slides that turn an eye ray into a colour: Whitted's recursive ray
 // tracing (1980) and Cook, Porter and Carpenter's distributed ray tracing (1984).
-enum class IntegratorKind { whitted };
+enum class IntegratorKind { whitted, distributed };
 
 // The integrators' names, sorted, as scene files and the command line write them.
 std::span<const std::string_view> integrator_names();
@@ -44,10 +44,13 @@ struct RenderSettings {
     // Shadow feelers pass through transparent objects, attenuated by their transmit weight,
     // instead of stopping at them.
     bool transparent_shadows = false;
+    // Shadow rays each sample sends to each area light and emitting object (distributed).
+    int shadow_rays = 1;
 };
 
 // The sampler and filter a render uses: the scene's, or its integrator's default (whitted: the
-// regular grid and a box over each pixel, its samples averaged).
+// regular grid and a box over each pixel, its samples averaged; distributed: jittered samples
+// and a Gaussian).
 SamplerKind sampler_of(const RenderSettings& settings);
 FilterSpec filter_of(const RenderSettings& settings);
 
@@ -55,6 +58,10 @@ struct SceneObject {
     Shape shape;
     std::uint32_t material = 0;  // index into Scene::materials
     bool casts_shadow = true;
+    // With an emitting material: whether the object lights the scene (an ObjectLight, for the
+    // integrators that sample areas). Off for the visible face of an area light, which is lit by
+    // its Light already.
+    bool emits_light = true;
 };
 
 struct Scene {
@@ -72,5 +79,6 @@ struct Scene {
 inline constexpr int kMaxImageSide = 65536;
 inline constexpr int kMaxSamplesPerPixel = 65536;
 inline constexpr int kMaxDepth = 64;
+inline constexpr int kMaxShadowRays = 4096;
 
 }  // namespace glint

@@ -1,26 +1,100 @@
-// What a point receives from each kind of light: direction, distance and attenuated intensity.
+// What a point receives from each kind of light: direction, distance and attenuated intensity,
+// from the light's centre or from a point drawn on it.
 #include "glint/shading/light.h"
 
+#include <algorithm>
+#include <cmath>
+
 #include "glint/math/interval.h"
+#include "glint/sampling/warp.h"
 
 namespace glint {
 
 namespace {
-struct Sample {
+
+Color attenuated(Color color, const Attenuation& a, float d) {
+    return color / (a.constant + d * (a.linear + d * a.quadratic));
+}
+
+// From p towards the point q of a light of the given colour.
+LightSample towards(Point3 p, Point3 q, Color color, const Attenuation& a) {
+    const Vector3 offset = q - p;
+    const float d = length(offset);
+    if (!(d > 0)) return {{0, 1, 0}, 0, Color{}};  // on the light itself: nothing to trace
+    return {offset / d, d, attenuated(color, a, d)};
+}
+
+// pbrt-v4's smoothstep of cos(angle) between the cone's edge and the falloff's start.
+float spot_factor(const SpotLight& light, Vector3 to_light) {
+    const float c = -dot(to_light, light.direction);
+    if (c >= light.cos_falloff) return 1;
+    if (c <= light.cos_cone) return 0;
+    const float t = (c - light.cos_cone) / (light.cos_falloff - light.cos_cone);
+    return t * t * (3 - 2 * t);
+}
+
+Point3 center_of(const AreaLight& light) {
+    return std::visit([](const auto& shape) { return shape.center; }, light.shape);
+}
+
+// A point of the light's shape, as seen from p.
+struct DrawPoint {
+    Point3 p;
+    Point2 u;
+
+    Point3 operator()(const SphereLight& s) const {
+        const Vector3 to_center = s.center - p;
+        const float d2 = length_squared(to_center);
+        const float r2 = s.radius * s.radius;
+        if (d2 <= r2) return s.center + sample_uniform_sphere(u) * s.radius;  // p inside
+        // Uniform over the cone of directions the sphere fills, then the near side along it.
+        const float d = std::sqrt(d2);
+        const float cos_max = std::sqrt(std::max(0.0f, 1 - r2 / d2));
+        const Vector3 w = from_frame(sample_uniform_cone(u, cos_max), to_center / d);
+        const float b = dot(w, to_center);
+        const float t = b - std::sqrt(std::max(0.0f, r2 - (d2 - b * b)));
+        return p + w * t;
+    }
+    Point3 operator()(const DiskLight& disk) const {
+        Vector3 s, t;
+        orthonormal_basis(to_vector(disk.normal), s, t);
+        const Point2 q = sample_uniform_disk(u);
+        return disk.center + (s * q.x + t * q.y) * disk.radius;
+    }
+    Point3 operator()(const RectangleLight& r) const {
+        return r.center + r.u * (u.x - 0.5f) + r.v * (u.y - 0.5f);
+    }
+};
+
+struct AtCenter {
     Point3 p;
 
     LightSample operator()(const PointLight& light) const {
-        const Vector3 offset = light.position - p;
-        const float d = length(offset);
-        const Attenuation& a = light.attenuation;
-        return {offset / d, d, light.color / (a.constant + d * (a.linear + d * a.quadratic))};
+        return towards(p, light.position, light.color, light.attenuation);
+    }
+    LightSample operator()(const SpotLight& light) const {
+        LightSample s = towards(p, light.position, light.color, light.attenuation);
+        s.intensity *= spot_factor(light, s.to_light);
+        return s;
     }
     LightSample operator()(const DirectionalLight& light) const {
         return {-light.direction, kInfinity, light.color};
     }
+    LightSample operator()(const AreaLight& light) const {
+        return towards(p, center_of(light), light.color, light.attenuation);
+    }
 };
+
 }  // namespace
 
-LightSample sample_light(const Light& light, Point3 p) { return std::visit(Sample{p}, light); }
+LightSample sample_light(const Light& light, Point3 p) { return std::visit(AtCenter{p}, light); }
+
+LightSample sample_light(const Light& light, Point3 p, Point2 u) {
+    if (const auto* area = std::get_if<AreaLight>(&light))
+        return towards(p, std::visit(DrawPoint{p, u}, area->shape), area->color, area->attenuation);
+    return sample_light(light, p);
+}
+
+bool is_area_light(const Light& light) { return std::holds_alternative<AreaLight>(light); }
 
 }  // namespace glint

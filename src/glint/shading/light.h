@@ -1,5 +1,6 @@
-// Light sources of the classic model: point lights (with optional distance attenuation) and
-// directional lights. The global ambient term lives in the scene.
+// Light sources: point and spot lights (with optional distance attenuation), directional lights,
+// and area lights (sphere, disk, rectangle) that cast soft shadows. The global ambient term lives
+// in the scene; objects that emit light are lights of their own (object_light.h).
 #pragma once
 
 #include <variant>
@@ -22,20 +23,68 @@ struct PointLight {
     Attenuation attenuation;
 };
 
+// A point light that shines into a cone: full intensity within the falloff's start, none beyond
+// the cone, and a smoothstep in cos(angle) between (as pbrt-v4's spot light).
+struct SpotLight {
+    Point3 position;
+    Vector3 direction{0, -1, 0};  // unit; the cone's axis, the way the light shines
+    float cos_cone = 0.866025f;   // cosine of the cone's half-angle: dark beyond
+    float cos_falloff =
+        0.866025f;  // cosine of the half-angle where the falloff starts; >= cos_cone
+    Color color{1, 1, 1};
+    Attenuation attenuation;
+};
+
 struct DirectionalLight {
     Vector3 direction{0, -1, 0};  // unit; the way the light travels
     Color color{1, 1, 1};
 };
 
-using Light = std::variant<PointLight, DirectionalLight>;
+// The shapes of area lights. Each emits to both sides.
+struct SphereLight {
+    Point3 center;
+    float radius = 1;  // > 0
+};
+struct DiskLight {
+    Point3 center;
+    Normal3 normal{0, -1, 0};  // unit
+    float radius = 1;          // > 0
+};
+struct RectangleLight {
+    Point3 center;
+    Vector3 u{1, 0, 0}, v{0, 0, 1};  // the sides, full length; not parallel
+};
+
+// A light with an extent, for soft shadows (Cook, Porter and Carpenter 1984). Its colour is that
+// of a point light spread over the shape, as POV-Ray's area lights do: a point drawn on it lights
+// a surface like a point light of the whole colour there, so that averaging over the points gives
+// the penumbra, and a small area light looks like a point light. A sphere is sampled by the cone
+// of directions it fills as seen from the surface, a disk and a rectangle uniformly by area.
+struct AreaLight {
+    std::variant<SphereLight, DiskLight, RectangleLight> shape;
+    Color color{1, 1, 1};
+    Attenuation attenuation;
+    // Shadow rays a sample sends to it; 0 takes the scene's image.shadow_rays.
+    int shadow_rays = 0;
+};
+
+using Light = std::variant<PointLight, SpotLight, DirectionalLight, AreaLight>;
 
 // What a surface point receives from one light, before shadowing.
 struct LightSample {
-    Vector3 to_light;  // unit direction L from the point towards the light
-    float distance;    // to the light; infinite for directional lights
-    Color intensity;   // I_L, attenuated
+    Vector3 to_light;  // unit direction L from the point towards the light (or a point of it)
+    float distance;    // to that point; infinite for directional lights
+    Color intensity;   // I_L, attenuated; black when the light does not shine this way
 };
 
+// What p receives from the light as Whitted's ray tracer sees it: an area light acts as a point
+// light at its centre.
 LightSample sample_light(const Light& light, Point3 p);
+// What p receives from a point of the light drawn from u in [0,1)^2; lights without an extent
+// ignore u.
+LightSample sample_light(const Light& light, Point3 p, Point2 u);
+
+// Whether the light has an extent, so that shadow rays towards it differ from sample to sample.
+bool is_area_light(const Light& light);
 
 }  // namespace glint

@@ -1,9 +1,13 @@
-// Reading point and directional lights. `intensity` scales `color`, so that a light's hue and
-// strength can be set apart, as in most scene formats.
+// Reading lights. `intensity` scales `color`, so that a light's hue and strength can be set
+// apart, as in most scene formats. Area lights may be seen: their face becomes an object.
 #include "glint/scene/yaml/yaml_lights.h"
 
 #include <algorithm>
+#include <cmath>
 #include <vector>
+
+#include "glint/math/constants.h"
+#include "glint/scene/scene.h"
 
 namespace glint {
 
@@ -15,55 +19,149 @@ Color read_emitted(const MapReader& map) {
     return map.color("color", kWhite) * map.number("intensity", kNonNegative, 1.0f);
 }
 
-Light parse_point(const MapReader& map) {
+Attenuation read_attenuation(const MapReader& map) {
+    const MapEntry* entry = map.find("attenuation");
+    if (!entry) return {};
+    const YamlSource& source = map.source();
+    const auto items = read_sequence(source, entry->value, map.field("attenuation"),
+                                     "[constant, linear, quadratic]", 3);
+    const char* names[] = {"constant", "linear", "quadratic"};
+    float terms[3];
+    for (std::size_t i = 0; i < 3; ++i) {
+        terms[i] = read_number(source, items[i],
+                               {map.what(), "attenuation " + std::string(names[i])}, kNonNegative);
+    }
+    // All zero would divide by zero: a light of infinite intensity.
+    if (terms[0] == 0 && terms[1] == 0 && terms[2] == 0) {
+        throw source.error_at(entry->value,
+                              map.what() + " attenuation must not be all zero, got [0, 0, 0]",
+                              {"[1, 0, 0] is no attenuation; [0, 0, 1] is the inverse "
+                               "square law"});
+    }
+    return {terms[0], terms[1], terms[2]};
+}
+
+LightEntry parse_point(const MapReader& map) {
     PointLight light;
     light.position = map.point("position");
     light.color = read_emitted(map);
-    if (const MapEntry* entry = map.find("attenuation")) {
-        const YamlSource& source = map.source();
-        const auto items = read_sequence(source, entry->value, map.field("attenuation"),
-                                         "[constant, linear, quadratic]", 3);
-        const char* names[] = {"constant", "linear", "quadratic"};
-        float terms[3];
-        for (std::size_t i = 0; i < 3; ++i) {
-            terms[i] =
-                read_number(source, items[i], {map.what(), "attenuation " + std::string(names[i])},
-                            kNonNegative);
-        }
-        // All zero would divide by zero: a light of infinite intensity.
-        if (terms[0] == 0 && terms[1] == 0 && terms[2] == 0) {
-            throw source.error_at(entry->value,
-                                  map.what() + " attenuation must not be all zero, got [0, 0, 0]",
-                                  {"[1, 0, 0] is no attenuation; [0, 0, 1] is the inverse "
-                                   "square law"});
-        }
-        light.attenuation = {terms[0], terms[1], terms[2]};
-    }
-    return light;
+    light.attenuation = read_attenuation(map);
+    return {light, std::nullopt};
 }
 
-Light parse_directional(const MapReader& map) {
+LightEntry parse_spot(const MapReader& map) {
+    SpotLight light;
+    light.position = map.point("position");
+    const YamlSource& source = map.source();
+    // The axis: a direction, or a point the spot is aimed at.
+    const std::string both_note = "direction is the way the cone points; at is a point it aims at";
+    if (!map.has("direction") && !map.has("at"))
+        throw source.error_at(map.node(), "spot light needs \"direction\" or \"at\"", {both_note});
+    if (map.has("direction") && map.has("at")) {
+        throw source.error_at(map.require("at").key_node,
+                              "spot light takes \"direction\" or \"at\", not both", {both_note});
+    }
+    if (map.has("direction")) {
+        light.direction = map.direction("direction");
+    } else {
+        const auto axis = unit_vector(map.point("at") - light.position);
+        if (!axis) {
+            throw source.error_at(map.require("at").value,
+                                  "spot light at must differ from its position, both are " +
+                                      format_vector(to_vector(light.position)));
+        }
+        light.direction = *axis;
+    }
+    const float cone = map.number("cone_angle", {0, 90, true, false}, 30.0f);
+    const float falloff = map.number("falloff", {0, 90}, std::min(5.0f, cone));
+    if (falloff > cone) {
+        throw source.error_at(
+            map.require("falloff").value,
+            "spot light falloff must not exceed its cone_angle (" + format_number(cone) +
+                "), got " + format_number(falloff),
+            {"falloff is the width, in degrees, of the soft rim inside the cone"});
+    }
+    light.cos_cone = std::cos(radians(cone));
+    light.cos_falloff = std::cos(radians(cone - falloff));
+    light.color = read_emitted(map);
+    light.attenuation = read_attenuation(map);
+    return {light, std::nullopt};
+}
+
+LightEntry parse_directional(const MapReader& map) {
     DirectionalLight light;
     light.direction = map.direction("direction");
     light.color = read_emitted(map);
-    return light;
+    return {light, std::nullopt};
+}
+
+// What every area light takes besides its shape.
+LightEntry area_light(const MapReader& map, decltype(AreaLight::shape) shape, Shape face) {
+    AreaLight light;
+    light.shape = shape;
+    light.color = read_emitted(map);
+    light.attenuation = read_attenuation(map);
+    light.shadow_rays = map.integer("shadow_rays", {1, kMaxShadowRays}, 0);
+    LightEntry entry{light, std::nullopt};
+    if (map.boolean("visible", true)) entry.visible_shape = std::move(face);
+    return entry;
+}
+
+LightEntry parse_sphere(const MapReader& map) {
+    const SphereLight sphere{map.point("center"), map.number("radius", kPositive)};
+    return area_light(map, sphere, Sphere{sphere.center, sphere.radius});
+}
+
+LightEntry parse_disk(const MapReader& map) {
+    const DiskLight disk{map.point("center"), Normal3(map.direction("normal", Vector3{0, -1, 0})),
+                         map.number("radius", kPositive)};
+    return area_light(map, disk, Disk{disk.center, disk.normal, disk.radius, 0});
+}
+
+LightEntry parse_rectangle(const MapReader& map) {
+    RectangleLight rectangle{map.point("center"), map.vector("u"), map.vector("v")};
+    const Vector3 normal = cross(rectangle.u, rectangle.v);
+    if (!(length_squared(normal) > 0) || !std::isfinite(length_squared(normal))) {
+        throw map.source().error_at(
+            map.require("v").value,
+            "rectangle light sides u and v must be non-zero and not parallel, got u = " +
+                format_vector(rectangle.u) + " and v = " + format_vector(rectangle.v));
+    }
+    const Vector3 hu = rectangle.u * 0.5f, hv = rectangle.v * 0.5f;
+    const Point3 c = rectangle.center;
+    auto face =
+        make_polygon({c - hu - hv, c + hu - hv, c + hu + hv, c - hu + hv}, InsideTest::even_odd);
+    return area_light(map, rectangle, std::get<Polygon>(std::move(face)));
 }
 
 struct LightType {
     std::string_view name;
     std::vector<std::string_view> keys;  // besides type
-    Light (*parse)(const MapReader& map);
+    LightEntry (*parse)(const MapReader& map);
 };
+
+// An area light's keys: its shape's, then those every area light takes.
+std::vector<std::string_view> area_keys(std::vector<std::string_view> shape_keys) {
+    shape_keys.insert(shape_keys.end(),
+                      {"color", "intensity", "attenuation", "shadow_rays", "visible"});
+    return shape_keys;
+}
 
 // Sorted by name.
 const LightType kLightTypes[] = {
     {"directional", {"direction", "color", "intensity"}, parse_directional},
+    {"disk", area_keys({"center", "normal", "radius"}), parse_disk},
     {"point", {"position", "color", "intensity", "attenuation"}, parse_point},
+    {"rectangle", area_keys({"center", "u", "v"}), parse_rectangle},
+    {"sphere", area_keys({"center", "radius"}), parse_sphere},
+    {"spot",
+     {"position", "direction", "at", "cone_angle", "falloff", "color", "intensity", "attenuation"},
+     parse_spot},
 };
 
 }  // namespace
 
-Light read_light(const YamlSource& source, const YAML::Node& node, const Field& field) {
+LightEntry read_light(const YamlSource& source, const YAML::Node& node, const Field& field) {
     auto entries = read_map(source, node, field);
     std::vector<std::string_view> names;
     for (const LightType& type : kLightTypes) names.push_back(type.name);

@@ -38,9 +38,11 @@ std::string indexed(std::string_view key, std::size_t i) {
 // keeps its file's materials.
 void read_object(ShapeReader& shapes, const YAML::Node& node, const Field& field,
                  MaterialTable& materials, std::size_t index, LargeVector<SceneObject>& out) {
-    ShapeReader::ObjectResult r = shapes.read_object(node, field, {"material", "casts_shadow"});
+    ShapeReader::ObjectResult r =
+        shapes.read_object(node, field, {"material", "casts_shadow", "emits_light"});
     const MapEntry* material = r.map.find("material");
     const bool casts_shadow = r.map.boolean("casts_shadow", true);
+    const bool emits_light = r.map.boolean("emits_light", true);
     std::vector<std::uint32_t> file_materials;
     if (r.model && !material) {
         for (const Material& m : r.model->materials) file_materials.push_back(materials.add(m));
@@ -49,8 +51,19 @@ void read_object(ShapeReader& shapes, const YAML::Node& node, const Field& field
     for (std::size_t i = 0; i < r.shapes.size(); ++i) {
         const std::uint32_t m =
             file_materials.empty() ? shared : file_materials[r.model->parts[i].material];
-        out.push_back({std::move(r.shapes[i]), m, casts_shadow});
+        out.push_back({std::move(r.shapes[i]), m, casts_shadow, emits_light});
     }
+}
+
+// An area light's face: it glows in the light's colour, and neither casts shadows nor lights the
+// scene (the light does).
+void add_light_face(LightEntry& entry, std::size_t index, MaterialTable& materials, Scene& scene) {
+    Material glow;
+    glow.name = "(light " + std::to_string(index) + ")";
+    glow.ka = glow.kd = glow.ks = 0;
+    glow.emission = std::get<AreaLight>(entry.light).color;
+    scene.objects.push_back({std::move(*entry.visible_shape), materials.add(std::move(glow)),
+                             /*casts_shadow=*/false, /*emits_light=*/false});
 }
 
 Scene read_scene(const YamlSource& source, const YAML::Node& root) {
@@ -72,7 +85,9 @@ Scene read_scene(const YamlSource& source, const YAML::Node& root) {
         const auto items =
             read_sequence(source, lights->value, scene.field("lights"), "a list of lights");
         for (std::size_t i = 0; i < items.size(); ++i) {
-            result.lights.push_back(read_light(source, items[i], {"", indexed("lights", i)}));
+            LightEntry entry = read_light(source, items[i], {"", indexed("lights", i)});
+            if (entry.visible_shape) add_light_face(entry, i, materials, result);
+            result.lights.push_back(std::move(entry.light));
         }
     }
     ShapeReader shapes(source);

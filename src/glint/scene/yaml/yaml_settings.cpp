@@ -45,9 +45,10 @@ FilterSpec read_filter(const YamlSource& source, const YAML::Node& node, const F
 }  // namespace
 
 RenderSettings read_image(const YamlSource& source, const YAML::Node& node, const Field& field) {
-    const MapReader map(source, node, field, "image",
-                        {"width", "height", "integrator", "samples", "sampler", "filter",
-                         "max_depth", "min_weight", "background", "transparent_shadows"});
+    const MapReader map(
+        source, node, field, "image",
+        {"width", "height", "integrator", "samples", "sampler", "filter", "shadow_rays",
+         "max_depth", "min_weight", "background", "transparent_shadows"});
     RenderSettings s;
     s.width = map.integer("width", {1, kMaxImageSide}, s.width);
     s.height = map.integer("height", {1, kMaxImageSide}, s.height);
@@ -72,6 +73,7 @@ RenderSettings read_image(const YamlSource& source, const YAML::Node& node, cons
                                   std::to_string(s.samples_per_pixel),
                               {"the jittered and sobol samplers take any number"});
     }
+    s.shadow_rays = map.integer("shadow_rays", {1, kMaxShadowRays}, s.shadow_rays);
     s.max_depth = map.integer("max_depth", {1, kMaxDepth}, s.max_depth);
     s.min_weight = map.number("min_weight", kUnitInterval, s.min_weight);
     s.background = map.color("background", s.background);

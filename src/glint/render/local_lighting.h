@@ -1,0 +1,29 @@
+// The local term of the notes' illumination model, light by light: Phong's terms of one light
+// sample, with its shadow feeler. Shared by every integrator; they differ in which samples of a
+// light they take.
+#pragma once
+
+#include <cstddef>
+
+#include "glint/render/ray_stats.h"
+#include "glint/render/shadow_feelers.h"
+#include "glint/render/surface_context.h"
+#include "glint/shading/light.h"
+#include "glint/shading/phong.h"
+
+namespace glint {
+
+// shadow IL (kd C (N.L) + ks spec^n) for the light sample ls of light `light` (an index of
+// world.lights(), or ShadowFeelers::kNoLight); nothing, and no feeler, when the light is behind
+// the surface or sends nothing this way.
+inline Color light_sample_term(ShadowFeelers& feelers, std::size_t light, const SurfaceContext& c,
+                               const LightSample& ls, float time, RayStats& stats) {
+    // A light behind the surface adds nothing, so it needs no feeler.
+    if (dot(c.n, ls.to_light) <= 0 || is_black(ls.intensity)) return {};
+    const float shadow =
+        feelers.transmittance(light, c.sp, c.ng, ls.to_light, ls.distance, time, stats);
+    if (shadow == 0) return {};
+    return shadow * light_term(*c.material, c.color, c.n, ls.to_light, c.to_viewer, ls.intensity);
+}
+
+}  // namespace glint

@@ -1,0 +1,72 @@
+// What every integrator needs to know where a ray meets a surface: the point, its material and
+// colour there, which side the ray came from, and both normals turned towards the ray. Built
+// once per hit, the same way for every integrator.
+#pragma once
+
+#include "glint/accel/aggregate.h"
+#include "glint/geometry/surface_point.h"
+#include "glint/math/color.h"
+#include "glint/math/ray.h"
+#include "glint/render/world.h"
+#include "glint/shading/material.h"
+#include "glint/shading/optics.h"
+#include "glint/shading/texture.h"
+
+namespace glint {
+
+struct SurfaceContext {
+    SurfacePoint sp;
+    const Material* material;
+    Color color;        // the material's colour (texture) at the point, C of the formulas
+    bool entering;      // the ray meets the front (outward) side
+    Normal3 ng;         // geometric normal on the ray's side: where secondary rays start
+    Normal3 n;          // shading normal on the ray's side: what the formulas use
+    Vector3 to_viewer;  // -direction of the ray, V
+};
+
+// The ray enters the surface when it meets the front side. Both normals are turned to face the
+// incoming ray: the geometric one places secondary rays on the right side of the surface, the
+// shading one (smooth for meshes) enters the formulas.
+inline SurfaceContext surface_context(const World& world, const Ray& ray, const Hit& hit) {
+    SurfaceContext c;
+    c.sp = world.surface_at(ray, hit);
+    c.material = &world.material_of(hit.primitive);
+    c.color = evaluate(c.material->color, c.sp);
+    c.entering = dot(c.sp.normal, ray.direction) < 0;
+    c.ng = c.entering ? c.sp.normal : -c.sp.normal;
+    c.n = c.entering ? c.sp.shading_normal : -c.sp.shading_normal;
+    c.to_viewer = -ray.direction;
+    return c;
+}
+
+// A secondary ray from the surface point in the unit direction d, at its parent's time and
+// wavelength.
+inline Ray spawn_from(const World& world, const SurfaceContext& c, const Ray& parent, Vector3 d) {
+    Ray r = world.spawn_ray(c.sp.p, c.ng, d, c.sp.error);
+    r.time = parent.time;
+    r.wavelength = parent.wavelength;
+    return r;
+}
+
+// The weights of the reflected and refracted rays at the surface and the refracted direction:
+// kr and kt of the material, Snell's law with eta = n_incident / n_transmitted, and on total
+// internal reflection the transmitted weight moved to the reflected ray (Whitted 1980).
+struct Branches {
+    float kr = 0, kt = 0;
+    Vector3 refracted;  // unit; when kt > 0
+};
+
+inline Branches branches_at(const SurfaceContext& c, Vector3 direction, float eta) {
+    Branches b{c.material->reflect, c.material->transmit, {}};
+    if (b.kt > 0) {
+        if (const auto t = refract(direction, c.n, eta)) {
+            b.refracted = normalize(*t);
+        } else {
+            b.kr += b.kt;
+            b.kt = 0;
+        }
+    }
+    return b;
+}
+
+}  // namespace glint
