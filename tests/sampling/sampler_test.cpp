@@ -89,14 +89,35 @@ TEST(Sampler, ValuesArePureFunctionsOfPixelSampleDimensionAndSeed) {
 
 TEST(Sampler, JitteredPointsFillEveryCellOfTheGridForAnyCount) {
     const Sampler sampler(SamplerKind::jittered, 1, 3);
-    // Square and non-square counts: the grid is ceil(sqrt(n)) columns by as many rows as needed.
+    // Square and non-square counts: the grid is count's two factors closest to its root.
     for (const auto& [count, columns, rows] :
-         {std::tuple{16, 4, 4}, std::tuple{5, 3, 2}, std::tuple{10, 4, 3}, std::tuple{60, 8, 8},
-          std::tuple{1, 1, 1}}) {
+         {std::tuple{16, 4, 4}, std::tuple{5, 5, 1}, std::tuple{10, 5, 2}, std::tuple{60, 10, 6},
+          std::tuple{32, 8, 4}, std::tuple{1, 1, 1}}) {
         for (std::uint64_t pixel = 0; pixel < 20; ++pixel) {
             const auto points = pattern(sampler, pixel, count, 7);
             expect_in_unit_square(points);
             EXPECT_TRUE(one_per_cell(points, columns, rows)) << count << " points";
+        }
+    }
+}
+
+TEST(Sampler, EveryPatternIsUniformForAnyCount) {
+    // Averaged over pixels, the share of a pattern's points in a region is the region's area:
+    // here the strips y >= 0.9 and x >= 0.9, which the last row or column of a partly filled
+    // grid would under-sample.
+    for (const SamplerKind kind : {SamplerKind::jittered, SamplerKind::sobol}) {
+        const Sampler sampler(kind, 1, 2);
+        for (const std::uint32_t count : {5u, 7u, 10u, 18u, 32u, 33u}) {
+            double top = 0, right = 0;
+            const int pixels = 4000;
+            for (std::uint64_t pixel = 0; pixel < pixels; ++pixel)
+                for (const Point2& p : pattern(sampler, pixel, count, 6)) {
+                    top += p.y >= 0.9f;
+                    right += p.x >= 0.9f;
+                }
+            // Binomial standard error of the share: sqrt(0.09 / (pixels count)) <= 0.0021.
+            EXPECT_NEAR(top / (pixels * count), 0.1, 0.008) << count << " points";
+            EXPECT_NEAR(right / (pixels * count), 0.1, 0.008) << count << " points";
         }
     }
 }

@@ -1,10 +1,20 @@
 // Distributed ray tracing: Whitted's recursion with every light sampled over its area.
 #include "glint/render/distributed.h"
 
+#include "glint/render/glossy_lobe.h"
 #include "glint/render/local_lighting.h"
 #include "glint/render/surface_context.h"
 
 namespace glint {
+
+namespace {
+
+// A lobe's numbers: a dimension of its own when the surface is rough, none for a mirror.
+Point2 lobe_sample(float roughness, SampleStream& stream) {
+    return roughness < kMirrorRoughness ? Point2{0, 0} : stream.next_2d();
+}
+
+}  // namespace
 
 Color DistributedIntegrator::trace_eye_ray(const Ray& ray, SampleStream& stream, RayStats& stats) {
     stats.count(RayKind::primary);
@@ -12,7 +22,7 @@ Color DistributedIntegrator::trace_eye_ray(const Ray& ray, SampleStream& stream,
 }
 
 Color DistributedIntegrator::trace(const Ray& ray, int depth, float weight, SampleStream& stream,
-                                   RayStats& stats) {
+                                   RayStats& stats, const MediumStack& media) {
     const RenderSettings& settings = world_.settings();
     const auto hit = world_.intersect(ray, {0, kInfinity}, kVisibleToCameraRays);
     if (!hit) return settings.background;
@@ -24,16 +34,26 @@ Color DistributedIntegrator::trace(const Ray& ray, int depth, float weight, Samp
     color += direct_light(c, ray, stream, stats);
 
     if (depth >= settings.max_depth) return color;
-    const Branches b = branches_at(c, ray.direction, c.entering ? 1 / m.ior : m.ior);
+    const Branches b = branches_at(c, ray.direction, media);
     if (b.kr > 0 && weight * b.kr >= settings.min_weight) {
-        stats.count(RayKind::reflected);
-        const Ray r = spawn_from(world_, c, ray, normalize(reflect(ray.direction, c.n)));
-        color += b.kr * trace(r, depth + 1, weight * b.kr, stream, stats);
+        const Vector3 mirror = normalize(reflect(ray.direction, c.n));
+        const auto d = spread_over_lobe(mirror, m.roughness, lobe_sample(m.roughness, stream),
+                                        to_vector(c.ng), true);
+        if (d) {
+            stats.count(RayKind::reflected);
+            const Ray r = spawn_from(world_, c, ray, *d);
+            color += b.kr * trace(r, depth + 1, weight * b.kr, stream, stats, media);
+        }
     }
     if (b.kt > 0 && weight * b.kt >= settings.min_weight) {
-        stats.count(RayKind::refracted);
-        const Ray t = spawn_from(world_, c, ray, b.refracted);
-        color += b.kt * trace(t, depth + 1, weight * b.kt, stream, stats);
+        const auto d =
+            spread_over_lobe(b.refracted, m.transmit_roughness,
+                             lobe_sample(m.transmit_roughness, stream), to_vector(c.ng), false);
+        if (d) {
+            stats.count(RayKind::refracted);
+            const Ray t = spawn_from(world_, c, ray, *d);
+            color += b.kt * trace(t, depth + 1, weight * b.kt, stream, stats, b.media);
+        }
     }
     return color;
 }

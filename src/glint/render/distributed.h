@@ -1,14 +1,17 @@
 // Cook, Porter and Carpenter's distributed ray tracing (1984): Whitted's ray tree, each of its
 // rays spread over what it integrates by the sample's own random numbers. Eye rays spread over
 // the pixel (and the lens and the shutter, in the camera); shadow rays over the area of each
-// light, stratified across the pixel's samples. Averaged over the samples of a pixel, the tree
-// integrates soft shadows, as Monte Carlo integration with 5 to 60 rays a pixel:
+// light, stratified across the pixel's samples; reflected and refracted rays over the glossy
+// lobes of rough surfaces. Averaged over the samples of a pixel, the tree integrates soft
+// shadows, blurred reflections and translucency, as Monte Carlo integration with 5 to 60 rays a
+// pixel:
 //   I = emission + ka Ia C + sum_lights mean_j shadow_j IL_j (kd C (N.L_j) + ks spec_j^n)
 //       + kr I(reflected) + kt I(refracted)
 #pragma once
 
 #include "glint/math/color.h"
 #include "glint/math/ray.h"
+#include "glint/render/medium_stack.h"
 #include "glint/render/ray_stats.h"
 #include "glint/render/shadow_feelers.h"
 #include "glint/render/world.h"
@@ -26,8 +29,9 @@ public:
     Color trace_eye_ray(const Ray& ray, SampleStream& stream, RayStats& stats);
 
     // The colour seen along a ray at the given depth (eye rays are 1) and weight (the product
-    // of kr and kt above it).
-    Color trace(const Ray& ray, int depth, float weight, SampleStream& stream, RayStats& stats);
+    // of kr and kt above it), travelling through the given media.
+    Color trace(const Ray& ray, int depth, float weight, SampleStream& stream, RayStats& stats,
+                const MediumStack& media = {});
 
 private:
     // The local term's sum over the lights at the surface of c, each area light and emitting

@@ -7,6 +7,7 @@
 #include "glint/geometry/surface_point.h"
 #include "glint/math/color.h"
 #include "glint/math/ray.h"
+#include "glint/render/medium_stack.h"
 #include "glint/render/world.h"
 #include "glint/shading/material.h"
 #include "glint/shading/optics.h"
@@ -16,6 +17,7 @@ namespace glint {
 
 struct SurfaceContext {
     SurfacePoint sp;
+    std::uint32_t primitive;  // the object hit
     const Material* material;
     Color color;        // the material's colour (texture) at the point, C of the formulas
     bool entering;      // the ray meets the front (outward) side
@@ -30,6 +32,7 @@ struct SurfaceContext {
 inline SurfaceContext surface_context(const World& world, const Ray& ray, const Hit& hit) {
     SurfaceContext c;
     c.sp = world.surface_at(ray, hit);
+    c.primitive = hit.primitive;
     c.material = &world.material_of(hit.primitive);
     c.color = evaluate(c.material->color, c.sp);
     c.entering = dot(c.sp.normal, ray.direction) < 0;
@@ -49,18 +52,23 @@ inline Ray spawn_from(const World& world, const SurfaceContext& c, const Ray& pa
 }
 
 // The weights of the reflected and refracted rays at the surface and the refracted direction:
-// kr and kt of the material, Snell's law with eta = n_incident / n_transmitted, and on total
-// internal reflection the transmitted weight moved to the reflected ray (Whitted 1980).
+// kr and kt of the material, Snell's law with the indices of the media on both sides, and on
+// total internal reflection the transmitted weight moved to the reflected ray (Whitted 1980).
 struct Branches {
     float kr = 0, kt = 0;
     Vector3 refracted;  // unit; when kt > 0
+    MediumStack media;  // that the refracted ray travels through
 };
 
-inline Branches branches_at(const SurfaceContext& c, Vector3 direction, float eta) {
-    Branches b{c.material->reflect, c.material->transmit, {}};
+inline Branches branches_at(const SurfaceContext& c, Vector3 direction, const MediumStack& media) {
+    const Material& m = *c.material;
+    Branches b{m.reflect, m.transmit, {}, {}};
     if (b.kt > 0) {
-        if (const auto t = refract(direction, c.n, eta)) {
+        const MediumCrossing crossing =
+            c.entering ? media.enter(c.primitive, m.ior) : media.leave(c.primitive, m.ior);
+        if (const auto t = refract(direction, c.n, crossing.n1 / crossing.n2)) {
             b.refracted = normalize(*t);
+            b.media = crossing.after;
         } else {
             b.kr += b.kt;
             b.kt = 0;

@@ -12,7 +12,8 @@ Color WhittedIntegrator::trace_eye_ray(const Ray& ray, RayStats& stats) {
     return trace(ray, 1, 1, stats);
 }
 
-Color WhittedIntegrator::trace(const Ray& ray, int depth, float weight, RayStats& stats) {
+Color WhittedIntegrator::trace(const Ray& ray, int depth, float weight, RayStats& stats,
+                               const MediumStack& media) {
     const RenderSettings& settings = world_.settings();
     const auto hit = world_.intersect(ray, {0, kInfinity}, kVisibleToCameraRays);
     if (!hit) return settings.background;
@@ -27,16 +28,16 @@ Color WhittedIntegrator::trace(const Ray& ray, int depth, float weight, RayStats
                                    ray.time, stats);
 
     if (depth >= settings.max_depth) return color;
-    const Branches b = branches_at(c, ray.direction, c.entering ? 1 / m.ior : m.ior);
+    const Branches b = branches_at(c, ray.direction, media);
     if (b.kr > 0 && weight * b.kr >= settings.min_weight) {
         stats.count(RayKind::reflected);
         const Ray r = spawn_from(world_, c, ray, normalize(reflect(ray.direction, c.n)));
-        color += b.kr * trace(r, depth + 1, weight * b.kr, stats);
+        color += b.kr * trace(r, depth + 1, weight * b.kr, stats, media);
     }
     if (b.kt > 0 && weight * b.kt >= settings.min_weight) {
         stats.count(RayKind::refracted);
         const Ray t = spawn_from(world_, c, ray, b.refracted);
-        color += b.kt * trace(t, depth + 1, weight * b.kt, stats);
+        color += b.kt * trace(t, depth + 1, weight * b.kt, stats, b.media);
     }
     return color;
 }

@@ -7,6 +7,7 @@
 
 #include "glint/math/color.h"
 #include "glint/math/ray.h"
+#include "glint/render/medium_stack.h"
 #include "glint/render/ray_stats.h"
 #include "glint/render/shadow_feelers.h"
 #include "glint/render/world.h"
@@ -29,8 +30,10 @@ public:
     }
 
     // The colour seen along a ray at the given depth of the ray tree (eye rays are depth 1)
-    // whose contribution to the pixel is scaled by weight (the product of kr and kt above it).
-    Color trace(const Ray& ray, int depth, float weight, RayStats& stats);
+    // whose contribution to the pixel is scaled by weight (the product of kr and kt above it),
+    // travelling through the given media. Rough surfaces reflect and refract as mirrors do.
+    Color trace(const Ray& ray, int depth, float weight, RayStats& stats,
+                const MediumStack& media = {});
 
 private:
     const World& world_;

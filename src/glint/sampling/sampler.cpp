@@ -45,17 +45,19 @@ std::uint32_t permute(std::uint32_t i, std::uint32_t size, std::uint64_t key) {
     return i;
 }
 
-// The grid of a pattern of `count` points: `columns` x `rows` cells, the last row partly empty
-// when count is not a product of the two (Kensler's layout for any count).
+// The grid of a pattern of `count` points: `columns` x `rows` cells, exactly one point each.
+// The factors are the two closest to sqrt(count), so that square counts give square grids and
+// a prime count a single row. (A grid with a partly empty last row, Kensler's layout for any
+// count, leaves that row's strip under-sampled: a biased estimate.)
 struct Grid {
     std::uint32_t columns, rows;
 };
 
 Grid grid_for(std::uint32_t count) {
-    auto columns = std::uint32_t(std::ceil(std::sqrt(double(count))));
-    while (std::uint64_t(columns) * columns < count) ++columns;  // if sqrt rounded down
-    while (columns > 1 && std::uint64_t(columns - 1) * (columns - 1) >= count) --columns;
-    return {columns, (count + columns - 1) / columns};
+    auto rows = std::uint32_t(std::sqrt(double(count)));
+    while (std::uint64_t(rows) * rows > count) --rows;  // if sqrt rounded up
+    while (count % rows != 0) --rows;
+    return {count / rows, rows};
 }
 
 Point2 regular_2d(std::uint32_t index, std::uint32_t count, std::uint32_t dimension,

@@ -22,8 +22,12 @@ struct Material {
     Highlight highlight = Highlight::blinn;
     float reflect = 0;   // kr, weight of the mirror-reflected ray
     float transmit = 0;  // kt, weight of the refracted ray
-    float ior = 1;       // index of refraction of the material (the outside is vacuum, 1)
-    Color emission;      // added to the surface's own light, unaffected by lights and shadows
+    float ior = 1;       // index of refraction inside (outside: the enclosing object's, or 1)
+    // Spread of the reflected and of the refracted ray over a lobe, 0 (a mirror, clear glass)
+    // to 1, for the integrators that sample lobes: blurred mirrors and frosted glass.
+    float roughness = 0;
+    float transmit_roughness = 0;
+    Color emission;  // added to the surface's own light, unaffected by lights and shadows
 };
 
 }  // namespace glint

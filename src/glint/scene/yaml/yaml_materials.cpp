@@ -77,7 +77,7 @@ Material read_material(const YamlSource& source, const YAML::Node& node, const F
                        std::string what, std::string name) {
     const MapReader map(source, node, field, std::move(what),
                         {"color", "ka", "kd", "ks", "shininess", "highlight", "reflect", "transmit",
-                         "ior", "emission"});
+                         "ior", "roughness", "transmit_roughness", "emission"});
     Material m;
     m.name = std::move(name);
     if (const MapEntry* color = map.find("color")) {
@@ -95,6 +95,8 @@ Material read_material(const YamlSource& source, const YAML::Node& node, const F
     m.reflect = map.number("reflect", kUnitInterval, m.reflect);
     m.transmit = map.number("transmit", kUnitInterval, m.transmit);
     m.ior = map.number("ior", kPositive, m.ior);
+    m.roughness = map.number("roughness", kUnitInterval, m.roughness);
+    m.transmit_roughness = map.number("transmit_roughness", kUnitInterval, m.roughness);
     m.emission = map.color("emission", m.emission);
     return m;
 }

@@ -1,0 +1,66 @@
+// The media a ray travels through, innermost last: what Snell's law needs on both sides of a
+// surface when refracting objects nest (glass in water, an air bubble in glass). A refracted ray
+// that enters an object pushes it; one that leaves it removes it. Outside every object is
+// vacuum, n = 1.
+#pragma once
+
+#include <array>
+#include <cstdint>
+
+namespace glint {
+
+struct MediumCrossing;
+
+class MediumStack {
+public:
+    // The index of the medium the ray travels in.
+    float ior() const { return size_ > 0 ? entries_[size_ - 1].ior : 1.0f; }
+
+    // Entering the object `primitive` of index ior. Deeper nesting than kCapacity keeps the
+    // outer media only: a ray leaving the deepest objects then returns to the last one kept.
+    MediumCrossing enter(std::uint32_t primitive, float ior) const;
+    // Leaving the object `primitive` of index ior: the ray passes into the innermost medium
+    // that remains. Leaving an object never entered (a ray that started inside it) leaves the
+    // stack as it is.
+    MediumCrossing leave(std::uint32_t primitive, float ior) const;
+
+    int size() const { return size_; }
+
+    static constexpr int kCapacity = 8;
+
+private:
+    struct Entry {
+        std::uint32_t primitive;
+        float ior;
+    };
+    std::array<Entry, kCapacity> entries_{};
+    int size_ = 0;
+};
+
+// The indices of refraction on both sides of a surface a refracted ray crosses, and the media
+// the refracted ray then travels through.
+struct MediumCrossing {
+    float n1, n2;  // incident side, transmitted side: Snell's eta = n1 / n2
+    MediumStack after;
+};
+
+inline MediumCrossing MediumStack::enter(std::uint32_t primitive, float ior) const {
+    MediumCrossing c{this->ior(), ior, *this};
+    if (size_ < kCapacity) c.after.entries_[c.after.size_++] = {primitive, ior};
+    return c;
+}
+
+inline MediumCrossing MediumStack::leave(std::uint32_t primitive, float ior) const {
+    MediumCrossing c{ior, 1.0f, *this};
+    MediumStack& s = c.after;
+    for (int i = s.size_ - 1; i >= 0; --i) {
+        if (s.entries_[i].primitive != primitive) continue;
+        for (int j = i; j + 1 < s.size_; ++j) s.entries_[j] = s.entries_[j + 1];
+        --s.size_;
+        break;
+    }
+    c.n2 = s.ior();
+    return c;
+}
+
+}  // namespace glint

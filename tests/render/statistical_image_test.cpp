@@ -1,0 +1,104 @@
+// Statistical image tests for the stochastic integrators: a scene rendered with few samples per
+// pixel must agree with a high-sample reference within the noise it has, not byte for byte.
+// Two renders with different seeds measure each pixel's variance, (a - b)^2 / 2; over 8 x 8
+// blocks, the mean of both renders must lie within 5 standard errors of the reference's (plus
+// 0.002 for rounding that differs across compilers). A box filter of one pixel keeps pixels
+// independent, so that a block's variance is the sum of its pixels'.
+// GLINT_UPDATE_GOLDEN=1 rewrites the references (tests/golden/statistical/*.exr) with
+// kReferenceSamples a pixel; look at every one before committing it.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <string>
+
+#include "glint/image/image_io.h"
+#include "glint/render/render.h"
+#include "glint/scene/load_scene.h"
+
+namespace glint {
+namespace {
+
+namespace fs = std::filesystem;
+
+constexpr int kWidth = 96, kHeight = 64, kBlock = 8;
+constexpr int kSamples = 16, kReferenceSamples = 1024;
+constexpr double kMaxStandardErrors = 5, kAllowance = 0.002;
+
+Image render_scene(Scene scene, int samples, std::uint64_t seed) {
+    scene.settings.width = kWidth;
+    scene.settings.height = kHeight;
+    scene.settings.samples_per_pixel = samples;
+    scene.settings.filter = FilterSpec{FilterKind::box, 0.5f};
+    RenderOptions options;
+    options.seed = seed;
+    const RenderResult result = render(World(std::move(scene)), options);
+    EXPECT_EQ(result.bad_samples.count, 0u);
+    return result.image;
+}
+
+float channel(const Color& c, int i) { return i == 0 ? c.r : i == 1 ? c.g : c.b; }
+
+class StatisticalImage : public ::testing::TestWithParam<std::string> {};
+
+TEST_P(StatisticalImage, AgreesWithTheHighSampleReferenceWithinItsNoise) {
+    const std::string name = GetParam();
+    const fs::path source = GLINT_SOURCE_DIR;
+    const fs::path reference_file =
+        source / "tests/golden/statistical" / (fs::path(name).stem().string() + ".exr");
+    const Scene scene = load_scene(source / "scenes" / name);
+    if (std::getenv("GLINT_UPDATE_GOLDEN")) {
+        fs::create_directories(reference_file.parent_path());
+        write_image(reference_file, render_scene(scene, kReferenceSamples, 0));
+        GTEST_SKIP() << "wrote " << reference_file;
+    }
+    const Image reference = read_image(reference_file);
+    const Image a = render_scene(scene, kSamples, 1), b = render_scene(scene, kSamples, 2);
+    ASSERT_EQ(reference.width, kWidth);
+    ASSERT_EQ(reference.height, kHeight);
+
+    // The reference's own noise is that of kReferenceSamples samples against 2 kSamples.
+    const double reference_share = double(kSamples) / kReferenceSamples;
+    int failures = 0;
+    double worst = 0;
+    for (int by = 0; by < kHeight; by += kBlock)
+        for (int bx = 0; bx < kWidth; bx += kBlock)
+            for (int i = 0; i < 3; ++i) {
+                double mean = 0, expected = 0, variance = 0;
+                for (int y = by; y < by + kBlock; ++y)
+                    for (int x = bx; x < bx + kBlock; ++x) {
+                        const double va = channel(a.at(x, y), i), vb = channel(b.at(x, y), i);
+                        mean += (va + vb) / 2;
+                        expected += channel(reference.at(x, y), i);
+                        variance += (va - vb) * (va - vb) / 2;  // one pixel's, one render
+                    }
+                const double n = kBlock * kBlock;
+                mean /= n;
+                expected /= n;
+                const double error = std::sqrt(variance / (n * n) * (0.5 + reference_share));
+                const double off = std::abs(mean - expected);
+                const double bound = kMaxStandardErrors * error + kAllowance;
+                worst = std::max(worst, off / bound);
+                if (off > bound && ++failures <= 5) {
+                    ADD_FAILURE() << name << ": block at (" << bx << ", " << by << ") channel " << i
+                                  << ": mean " << mean << ", reference " << expected
+                                  << ", standard error " << error;
+                }
+            }
+    EXPECT_EQ(failures, 0);
+    RecordProperty("worst_fraction_of_bound", std::to_string(worst));
+}
+
+INSTANTIATE_TEST_SUITE_P(Scenes, StatisticalImage,
+                         ::testing::Values("features/soft-shadows.yaml", "features/glossy.yaml",
+                                           "features/translucency.yaml"),
+                         [](const ::testing::TestParamInfo<std::string>& param) {
+                             std::string id = fs::path(param.param).stem().string();
+                             for (char& c : id)
+                                 if (c == '-') c = '_';
+                             return id;
+                         });
+
+}  // namespace
+}  // namespace glint
