@@ -147,6 +147,43 @@ TEST(AggregateProperties, RandomRaysOverRandomScenes) {
     }
 }
 
+TEST(AggregateProperties, MovingShapesAtRandomTimes) {
+    // Spheres and boxes that slide, turn and grow between keyframes at times 0, 0.5 and 1: every
+    // structure bounds them over the motion and finds them where each ray's time puts them.
+    std::mt19937 rng(7);
+    std::uniform_real_distribution<float> pos(-10, 10), unit(0, 1), u(-1, 1);
+    std::vector<Primitive> prims;
+    for (int i = 0; i < 600; ++i) {
+        const Point3 c{pos(rng), pos(rng), pos(rng)};
+        const float s = 0.1f + unit(rng);
+        const Shape still =
+            i % 2 == 0 ? Shape{Sphere{{0, 0, 0}, s}} : Shape{Box{{-s, -s, -s}, {s, s, s * 2}}};
+        const Vector3 slide{3 * u(rng), 3 * u(rng), 3 * u(rng)};
+        const auto motion = std::make_shared<const AnimatedTransform>(std::vector<Keyframe>{
+            {0, Transform::translate(to_vector(c))},
+            {0.5f, Transform::translate(to_vector(c) + slide) *
+                       Transform::rotate(random_direction(rng), 170 * unit(rng))},
+            {1, Transform::translate(to_vector(c) - slide) * Transform::scale(1.5f, 1, 0.5f)}});
+        prims.push_back({Moving{motion, std::make_shared<const Shape>(still)}});
+    }
+    Agreement agree(prims);
+    int hits_at_other_times = 0;
+    for (int i = 0; i < 1200; ++i) {
+        Ray ray{{u(rng) * 15, u(rng) * 15, u(rng) * 15}, random_direction(rng)};
+        ray.time = i % 10 == 0 ? -0.5f + 2 * unit(rng) : unit(rng);  // some outside [0, 1]
+        agree.check(ray, {}, ray_text(ray, i) + " time " + std::to_string(ray.time));
+        // The same ray at another moment meets other things.
+        const auto now = agree.list().intersect(ray, {}, kVisibleToCameraRays);
+        ray.time = 1 - ray.time;
+        const auto then = agree.list().intersect(ray, {}, kVisibleToCameraRays);
+        hits_at_other_times += now.has_value() != then.has_value() ||
+                               (now && then && now->primitive != then->primitive);
+        if (HasFatalFailure()) return;
+    }
+    EXPECT_GT(agree.hits(), 400);
+    EXPECT_GT(hits_at_other_times, 40);
+}
+
 TEST(AggregateProperties, AxisParallelRays) {
     const auto prims = random_mix(2000, 3);
     Agreement agree(prims);

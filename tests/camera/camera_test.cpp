@@ -56,3 +56,115 @@ TEST(Camera, OrthographicRaysAreParallelAndSpanTheViewHeight) {
 
 }  // namespace
 }  // namespace glint
+
+namespace glint {
+namespace {
+
+Point2 lens_u(int i, int n) {  // an n x n grid of lens numbers
+    return {(float(i % n) + 0.5f) / float(n), (float(i / n) + 0.5f) / float(n)};
+}
+
+// Where the ray meets the plane z = depth (the camera looks down +z from the origin).
+Point3 at_depth(const Ray& r, float depth) { return r.at((depth - r.origin.z) / r.direction.z); }
+
+CameraSpec lens_camera() {
+    CameraSpec spec;
+    spec.from = {0, 0, 0}, spec.at = {0, 0, 1}, spec.fov = 50;
+    spec.lens.radius = 0.1f;
+    spec.lens.focus_distance = 4;
+    return spec;
+}
+
+TEST(Camera, ThinLensRaysMeetOnThePlaneOfFocus) {
+    const Camera camera(lens_camera(), 64, 48);
+    for (const Point2 film : {Point2{32, 24}, Point2{3, 40}, Point2{60, 5}}) {
+        const Point3 sharp = at_depth(camera.generate_ray(film), 4);
+        for (int i = 0; i < 64; ++i) {
+            const Ray r = camera.generate_ray(film, lens_u(i, 8));
+            EXPECT_NEAR(length(r.direction), 1, 1e-6f);
+            const Point3 p = at_depth(r, 4);
+            EXPECT_NEAR(distance(p, sharp), 0, 1e-5f);
+            // Each ray starts on the aperture, a disk of radius 0.1 around the eye.
+            EXPECT_NEAR(r.origin.z, 0, 1e-7f);
+            EXPECT_LE(std::hypot(r.origin.x, r.origin.y), 0.1f + 1e-6f);
+        }
+    }
+}
+
+TEST(Camera, OffFocusPointsSpreadOverTheCircleOfConfusion) {
+    // At depth z the rays through one film position spread over a disk of radius
+    // r |z - f| / f around the pinhole ray: 0.1 * 4 / 4 = 0.1 at z = 8, 0.05 at z = 2.
+    const Camera camera(lens_camera(), 64, 48);
+    const Point2 film{20, 30};
+    for (const auto& [depth, radius] : {std::pair{8.0f, 0.1f}, std::pair{2.0f, 0.05f}}) {
+        const Point3 centre = at_depth(camera.generate_ray(film), depth);
+        double farthest = 0, mean_square = 0;
+        const int n = 64;
+        for (int i = 0; i < n * n; ++i) {
+            const double d =
+                distance(at_depth(camera.generate_ray(film, lens_u(i, n)), depth), centre);
+            farthest = std::max(farthest, d);
+            mean_square += d * d / (n * n);
+        }
+        EXPECT_NEAR(farthest, radius, radius * 0.02);
+        // Uniform over the disk: the mean square distance is radius^2 / 2.
+        EXPECT_NEAR(mean_square, radius * radius / 2, radius * radius * 0.01);
+    }
+}
+
+TEST(Camera, PolygonalApertureKeepsItsPointsInsideThePolygon) {
+    CameraSpec spec = lens_camera();
+    spec.lens.blades = 5;
+    spec.lens.blade_rotation = 90;  // a vertex straight up
+    const Camera camera(spec, 64, 48);
+    const float apothem = std::cos(kPi / 5);
+    float top = 0;
+    for (int i = 0; i < 1024; ++i) {
+        const Point2 a = camera.aperture_point(lens_u(i, 32));
+        top = std::max(top, a.y);
+        // Inside every edge: the distance along each edge's outward normal is at most the
+        // apothem.
+        for (int k = 0; k < 5; ++k) {
+            const float mid = radians(90.0f) + (2 * k + 1) * kPi / 5;
+            EXPECT_LE(a.x * std::cos(mid) + a.y * std::sin(mid), apothem + 1e-5f);
+        }
+    }
+    EXPECT_GT(top, 0.9f);  // reaches towards the top vertex
+}
+
+TEST(Camera, ShutterTimesSpanTheIntervalAndAClosedShutterNeedsNoNumbers) {
+    CameraSpec spec;
+    EXPECT_FALSE(Camera(spec, 8, 8).has_shutter());
+    EXPECT_FALSE(Camera(spec, 8, 8).has_lens());
+    spec.shutter_open = 0.25f, spec.shutter_close = 0.75f;
+    const Camera camera(spec, 8, 8);
+    EXPECT_TRUE(camera.has_shutter());
+    EXPECT_EQ(camera.shutter_time(0), 0.25f);
+    EXPECT_EQ(camera.shutter_time(0.5f), 0.5f);
+    EXPECT_EQ(camera.generate_ray({4, 4}, {0.5f, 0.5f}, 0.6f).time, 0.6f);
+}
+
+TEST(Camera, AMovingCameraIsEachKeyframesCameraAtItsTime) {
+    CameraSpec spec;
+    spec.fov = 60;
+    spec.motion = {{0, {0, 0, 0}, {0, 0, 1}, {0, 1, 0}}, {1, {2, 0, 0}, {3, 1, 1}, {0, 1, 0}}};
+    const Camera moving(spec, 40, 30);
+    for (const int k : {0, 1}) {
+        CameraSpec still = spec;
+        still.motion.clear();
+        still.from = spec.motion[k].from, still.at = spec.motion[k].at;
+        const Camera fixed(still, 40, 30);
+        for (const Point2 film : {Point2{0, 0}, Point2{20, 15}, Point2{33, 7}}) {
+            const Ray a = moving.generate_ray(film, {0.5f, 0.5f}, float(k));
+            const Ray b = fixed.generate_ray(film);
+            expect_near(to_vector(a.origin), to_vector(b.origin), 1e-5f);
+            expect_near(a.direction, b.direction, 1e-5f);
+        }
+    }
+    // Halfway, the eye is halfway along its straight path.
+    expect_near(to_vector(moving.generate_ray({20, 15}, {0.5f, 0.5f}, 0.5f).origin), {1, 0, 0},
+                1e-5f);
+}
+
+}  // namespace
+}  // namespace glint

@@ -92,7 +92,9 @@ TEST_P(StatisticalImage, AgreesWithTheHighSampleReferenceWithinItsNoise) {
 
 INSTANTIATE_TEST_SUITE_P(Scenes, StatisticalImage,
                          ::testing::Values("features/soft-shadows.yaml", "features/glossy.yaml",
-                                           "features/translucency.yaml"),
+                                           "features/translucency.yaml",
+                                           "features/depth-of-field.yaml",
+                                           "features/motion-blur.yaml"),
                          [](const ::testing::TestParamInfo<std::string>& param) {
                              std::string id = fs::path(param.param).stem().string();
                              for (char& c : id)

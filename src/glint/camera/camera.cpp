@@ -1,32 +1,99 @@
-// The view-reference frame (n towards the target, u right, v up) and the eye ray through a film
-// position, for both projections.
+// The view-reference frame (n towards the target, u right, v up), the eye ray through a film
+// position for both projections, the thin lens and the moving camera.
 #include "glint/camera/camera.h"
 
 #include <cmath>
 
 #include "glint/math/constants.h"
+#include "glint/sampling/warp.h"
 
 namespace glint {
+
+namespace {
+
+struct Frame {
+    Vector3 u, v, n;
+};
+
+Frame view_frame(Point3 from, Point3 at, Vector3 up) {
+    Frame f;
+    f.n = normalize(at - from);
+    f.u = normalize(cross(f.n, up));  // right-handed: right = forward x up
+    f.v = cross(f.u, f.n);
+    return f;
+}
+
+}  // namespace
+
+Transform world_from_camera(Point3 from, Point3 at, Vector3 up) {
+    const Frame f = view_frame(from, at, up);
+    Matrix4 m;
+    m.m = {{{f.u.x, f.v.x, f.n.x, from.x},
+            {f.u.y, f.v.y, f.n.y, from.y},
+            {f.u.z, f.v.z, f.n.z, from.z},
+            {0, 0, 0, 1}}};
+    // An orthonormal frame: its inverse is its transpose, with the eye moved back to the origin.
+    Matrix4 inv;
+    inv.m = {{{f.u.x, f.u.y, f.u.z, -dot(f.u, to_vector(from))},
+              {f.v.x, f.v.y, f.v.z, -dot(f.v, to_vector(from))},
+              {f.n.x, f.n.y, f.n.z, -dot(f.n, to_vector(from))},
+              {0, 0, 0, 1}}};
+    return {m, inv};
+}
 
 Camera::Camera(const CameraSpec& spec, int width, int height)
     : projection_(spec.projection),
       eye_(spec.from),
       width_(static_cast<float>(width)),
-      height_(static_cast<float>(height)) {
-    n_ = normalize(spec.at - spec.from);
-    u_ = normalize(cross(n_, spec.up));  // right-handed: right = forward x up
-    v_ = cross(u_, n_);
+      height_(static_cast<float>(height)),
+      lens_radius_(spec.lens.radius),
+      focus_distance_(spec.lens.focus_distance > 0 ? spec.lens.focus_distance
+                                                   : distance(spec.from, spec.at)),
+      blades_(spec.lens.blades),
+      blade_rotation_(radians(spec.lens.blade_rotation)),
+      shutter_open_(spec.shutter_open),
+      shutter_close_(spec.shutter_close) {
+    const Frame f = view_frame(spec.from, spec.at, spec.up);
+    u_ = f.u, v_ = f.v, n_ = f.n;
+    if (!spec.motion.empty()) {
+        std::vector<Keyframe> keyframes;
+        for (const CameraKeyframe& k : spec.motion)
+            keyframes.push_back({k.time, world_from_camera(k.from, k.at, k.up)});
+        motion_ = std::make_shared<const AnimatedTransform>(std::move(keyframes));
+        // Rays are made in the camera's own frame, then placed by the motion.
+        eye_ = {0, 0, 0};
+        u_ = {1, 0, 0}, v_ = {0, 1, 0}, n_ = {0, 0, 1};
+    }
     half_height_ =
         projection_ == Projection::perspective ? std::tan(radians(spec.fov) / 2) : spec.height / 2;
     half_width_ = half_height_ * width_ / height_;
 }
 
-Ray Camera::generate_ray(Point2 film) const {
+Point2 Camera::aperture_point(Point2 u) const {
+    if (blades_ >= 3) return sample_regular_polygon(u, blades_, blade_rotation_);
+    return sample_uniform_disk(u);
+}
+
+Ray Camera::generate_ray(Point2 film, Point2 lens, float time) const {
     // Viewport to window: x from -1 (left) to 1 (right), y from 1 (top) to -1 (bottom).
     const float x = (2 * film.x / width_ - 1) * half_width_;
     const float y = (1 - 2 * film.y / height_) * half_height_;
-    if (projection_ == Projection::orthographic) return {eye_ + x * u_ + y * v_, n_};
-    return {eye_, normalize(n_ + x * u_ + y * v_)};
+    Ray ray = projection_ == Projection::orthographic ? Ray{eye_ + x * u_ + y * v_, n_}
+                                                      : Ray{eye_, normalize(n_ + x * u_ + y * v_)};
+    if (lens_radius_ > 0) {
+        // From a point of the aperture to where the pinhole ray meets the plane of focus.
+        const Point3 focus = ray.at(focus_distance_ / dot(ray.direction, n_));
+        const Point2 a = aperture_point(lens);
+        ray.origin = ray.origin + (a.x * u_ + a.y * v_) * lens_radius_;
+        ray.direction = normalize(focus - ray.origin);
+    }
+    ray.time = time;
+    if (motion_) {
+        const Transform world = motion_->at(time);
+        ray.origin = world(ray.origin);
+        ray.direction = normalize(world(ray.direction));
+    }
+    return ray;
 }
 
 }  // namespace glint

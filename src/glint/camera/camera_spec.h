@@ -1,12 +1,32 @@
-// The view as a scene describes it: the notes' view-reference model (look-from, look-at, up)
-// and a projection.
+// The view as a scene describes it: the notes' view-reference model (look-from, look-at, up),
+// a projection, a thin lens and a shutter.
 #pragma once
+
+#include <vector>
 
 #include "glint/math/vector.h"
 
 namespace glint {
 
 enum class Projection { perspective, orthographic };
+
+// A thin lens (Potmesil and Chakravarty 1981, as Cook, Porter and Carpenter 1984 trace it): each
+// eye ray starts at a point of the aperture and passes through the point of the plane of focus
+// that the pinhole ray through the same film position meets. Points on that plane stay sharp;
+// others blur into the image of the aperture.
+struct LensSpec {
+    float radius = 0;          // of the aperture, in scene units; 0 is a pinhole: all in focus
+    float focus_distance = 0;  // from the eye along the view direction; 0: |at - from|
+    int blades = 0;            // 0: a round aperture; 3 or more: a regular polygon of as many
+    float blade_rotation = 0;  // degrees, turning the polygon about the view direction
+};
+
+// Where the camera is at one moment of a moving camera's path.
+struct CameraKeyframe {
+    float time;
+    Point3 from, at;
+    Vector3 up;
+};
 
 struct CameraSpec {
     Projection projection = Projection::perspective;
@@ -15,6 +35,13 @@ struct CameraSpec {
     Vector3 up{0, 1, 0};   // need not be perpendicular to the view; not parallel to it
     float fov = 45;        // perspective: full vertical field of view, degrees, in (0, 180)
     float height = 2;      // orthographic: height of the view in scene units, > 0
+    LensSpec lens;
+    // The shutter is open from shutter_open to shutter_close: eye rays take times spread over
+    // it, which blurs what moves. Equal times freeze the picture at that moment.
+    float shutter_open = 0, shutter_close = 0;
+    // A moving camera: from, at and up at increasing times (from moves in a line, the view turns
+    // by quaternion interpolation). Empty: the camera stands still at from, at, up.
+    std::vector<CameraKeyframe> motion;
 };
 
 }  // namespace glint

@@ -31,6 +31,8 @@ std::optional<bool> marked_leaving(const Shape& shape, const ShapeHit& hit) {
     if (const auto* placed = std::get_if<Transformed>(&shape)) {
         return marked_leaving(*placed->shape, hit);
     }
+    if (const auto* moving = std::get_if<Moving>(&shape))
+        return marked_leaving(*moving->shape, hit);
     if (const auto* csg = std::get_if<Csg>(&shape)) {
         ShapeHit operand_hit = hit;
         operand_hit.csg_path = hit.csg_path >> 2;

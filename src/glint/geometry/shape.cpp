@@ -23,6 +23,7 @@ struct NameOf {
     std::string_view operator()(const JuliaSet&) const { return "julia"; }
     std::string_view operator()(const Mandelbulb&) const { return "mandelbulb"; }
     std::string_view operator()(const Transformed&) const { return "transformed"; }
+    std::string_view operator()(const Moving&) const { return "moving"; }
     std::string_view operator()(const Csg&) const { return "csg"; }
 };
 
@@ -43,11 +44,13 @@ struct IsSolid {
     bool operator()(const JuliaSet&) const { return true; }
     bool operator()(const Mandelbulb&) const { return true; }
     bool operator()(const Transformed& t) const { return is_solid(*t.shape); }
+    bool operator()(const Moving& m) const { return is_solid(*m.shape); }
     bool operator()(const Csg&) const { return true; }
 };
 
 struct CsgDepth {
     int operator()(const Transformed& t) const { return csg_depth(*t.shape); }
+    int operator()(const Moving& m) const { return csg_depth(*m.shape); }
     int operator()(const Csg& c) const { return 1 + std::max(csg_depth(*c.a), csg_depth(*c.b)); }
     int operator()(const auto&) const { return 0; }
 };
@@ -58,6 +61,7 @@ struct PrepareMeshes {
         if (top_level) m.data->bvh();
     }
     void operator()(const Transformed& t) const { prepare_mesh_bvhs(*t.shape, true); }
+    void operator()(const Moving& m) const { prepare_mesh_bvhs(*m.shape, true); }
     void operator()(const Csg& c) const {
         prepare_mesh_bvhs(*c.a, true);
         prepare_mesh_bvhs(*c.b, true);

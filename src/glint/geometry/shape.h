@@ -14,6 +14,7 @@
 #include "glint/geometry/implicit_surface.h"
 #include "glint/geometry/julia_set.h"
 #include "glint/geometry/mandelbulb.h"
+#include "glint/geometry/moving.h"
 #include "glint/geometry/plane.h"
 #include "glint/geometry/polygon.h"
 #include "glint/geometry/quadric.h"
@@ -30,7 +31,7 @@ namespace glint {
 // shapes (CSG, transforms). It is the variant: std::visit, std::get and friends apply.
 struct Shape
     : std::variant<Sphere, Plane, Triangle, Box, Disk, Cylinder, Cone, Torus, Quadric, Polygon,
-                   TriangleMesh, ImplicitSurface, JuliaSet, Mandelbulb, Transformed, Csg> {
+                   TriangleMesh, ImplicitSurface, JuliaSet, Mandelbulb, Transformed, Moving, Csg> {
     using variant::variant;
 };
 

@@ -33,13 +33,22 @@ Bounds3 Transformed::bounds() const {
 }
 
 std::optional<ShapeHit> Transformed::intersect(const Ray& ray, Interval t_range) const {
-    const ObjectRay o = to_object(world_from_object(), ray);
+    return intersect_placed(*shape, world_from_object(), ray, t_range);
+}
+
+SurfacePoint Transformed::surface_at(const Ray& ray, const ShapeHit& hit) const {
+    return surface_at_placed(*shape, world_from_object(), ray, hit);
+}
+
+std::optional<ShapeHit> intersect_placed(const Shape& shape, const Transform& world_from_object,
+                                         const Ray& ray, Interval t_range) {
+    const ObjectRay o = to_object(world_from_object, ray);
     Interval object_range{t_range.min * o.scale, t_range.max * o.scale};
     // Rounding in the two scalings must not move the hit outside the caller's range. A hit that
     // lands just before it is the one the caller has (a CSG walk asks for the crossing after
     // the last): the next one is looked for beyond it, rather than lost.
     for (int attempt = 0; attempt < 4; ++attempt) {
-        auto hit = glint::intersect(*shape, o.ray, object_range);
+        auto hit = glint::intersect(shape, o.ray, object_range);
         if (!hit) return std::nullopt;
         const float t = hit->t / o.scale;
         if (t > t_range.max || !(t == t)) return std::nullopt;
@@ -52,14 +61,15 @@ std::optional<ShapeHit> Transformed::intersect(const Ray& ray, Interval t_range)
     return std::nullopt;
 }
 
-SurfacePoint Transformed::surface_at(const Ray& ray, const ShapeHit& hit) const {
-    const ObjectRay o = to_object(world_from_object(), ray);
+SurfacePoint surface_at_placed(const Shape& shape, const Transform& world_from_object,
+                               const Ray& ray, const ShapeHit& hit) {
+    const ObjectRay o = to_object(world_from_object, ray);
     ShapeHit object_hit = hit;
     object_hit.t = hit.t * o.scale;
-    SurfacePoint sp = glint::surface_at(*shape, o.ray, object_hit);
-    sp.p = world_from_object()(sp.p);
-    sp.normal = normalize(world_from_object()(sp.normal));
-    sp.shading_normal = normalize(world_from_object()(sp.shading_normal));
+    SurfacePoint sp = glint::surface_at(shape, o.ray, object_hit);
+    sp.p = world_from_object(sp.p);
+    sp.normal = normalize(world_from_object(sp.normal));
+    sp.shading_normal = normalize(world_from_object(sp.shading_normal));
     return sp;
 }
 

@@ -35,4 +35,11 @@ struct Transformed {
     SurfacePoint surface_at(const Ray& ray, const ShapeHit& hit) const;
 };
 
+// The intersection and the surface point of `shape` placed by world_from_object, as Transformed
+// computes them; for shapes whose placement changes from ray to ray (Moving).
+std::optional<ShapeHit> intersect_placed(const Shape& shape, const Transform& world_from_object,
+                                         const Ray& ray, Interval t_range);
+SurfacePoint surface_at_placed(const Shape& shape, const Transform& world_from_object,
+                               const Ray& ray, const ShapeHit& hit);
+
 }  // namespace glint

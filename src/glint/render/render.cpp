@@ -41,8 +41,14 @@ void render_tile(const Tile& tile, const World& world, const Sampler& sampler, F
                                     std::uint32_t(s));
                 const Point2 offset = stream.get_2d(kPixelDimension);
                 const Point2 p{float(x) + offset.x, float(y) + offset.y};
-                const Color c =
-                    integrator.trace_eye_ray(camera.generate_ray(p), stream, totals.rays);
+                // A pinhole and a closed shutter draw no numbers for the lens and the time.
+                const Point2 lens =
+                    camera.has_lens() ? stream.get_2d(kLensDimension) : Point2{0.5f, 0.5f};
+                const float time = camera.has_shutter()
+                                       ? camera.shutter_time(stream.get_1d(kTimeDimension))
+                                       : camera.shutter_open();
+                const Color c = integrator.trace_eye_ray(camera.generate_ray(p, lens, time), stream,
+                                                         totals.rays);
                 if (is_valid_sample(c)) {
                     film_tile.add_sample(p, c);
                 } else {

@@ -3,7 +3,10 @@
 #include "glint/scene/yaml/yaml_settings.h"
 
 #include <cmath>
+#include <string>
 #include <vector>
+
+#include "glint/math/constants.h"
 
 namespace glint {
 
@@ -81,6 +84,97 @@ RenderSettings read_image(const YamlSource& source, const YAML::Node& node, cons
     return s;
 }
 
+namespace {
+
+// The height of a full-frame (36 x 24 mm) sensor in metres: what f_number's focal length is for.
+constexpr float kSensorHeight = 0.024f;
+constexpr int kMaxApertureBlades = 64;
+
+// The thin lens: an aperture radius, or an f-number for scenes in metres; the focus distance
+// and the aperture's shape.
+void read_lens(const MapReader& map, CameraSpec& camera) {
+    const YamlSource& source = map.source();
+    if (map.has("aperture") && map.has("f_number")) {
+        throw source.error_at(map.require("f_number").key_node,
+                              "camera takes \"aperture\" or \"f_number\", not both",
+                              {"aperture is the lens radius in scene units; f_number sets it "
+                               "from the focal length of a 24 mm high sensor, in metres"});
+    }
+    if (map.has("aperture")) camera.lens.radius = map.number("aperture", kNonNegative);
+    if (map.has("f_number")) {
+        if (camera.projection != Projection::perspective) {
+            throw source.error_at(map.require("f_number").key_node,
+                                  "an orthographic camera has no focal length for f_number",
+                                  {"give its aperture radius with \"aperture\""});
+        }
+        const float n = map.number("f_number", kPositive);
+        const float focal_length = kSensorHeight / 2 / std::tan(radians(camera.fov) / 2);
+        camera.lens.radius = focal_length / (2 * n);
+    }
+    camera.lens.focus_distance =
+        map.number("focus_distance", kPositive, distance(camera.from, camera.at));
+    if (const MapEntry* blades = map.find("aperture_blades")) {
+        const float n = map.number("aperture_blades", {0, float(kMaxApertureBlades)});
+        if (n != std::floor(n) || n == 1 || n == 2) {
+            throw source.error_at(blades->value,
+                                  "camera aperture_blades must be 0 (round) or a whole number "
+                                  "from 3 to " +
+                                      std::to_string(kMaxApertureBlades) + ", got " +
+                                      format_number(n));
+        }
+        camera.lens.blades = int(n);
+    }
+    camera.lens.blade_rotation = map.number("aperture_rotation", kAnyNumber, 0.0f);
+}
+
+// The shutter interval and the camera's keyframes, each a map of time, from, at and up.
+void read_shutter(const MapReader& map, CameraSpec& camera) {
+    const YamlSource& source = map.source();
+    if (const MapEntry* shutter = map.find("shutter")) {
+        const auto times =
+            read_sequence(source, shutter->value, map.field("shutter"), "[open, close]", 2);
+        camera.shutter_open = read_number(source, times[0], map.field("shutter"));
+        camera.shutter_close = read_number(source, times[1], map.field("shutter"));
+        if (!(camera.shutter_close >= camera.shutter_open)) {
+            throw source.error_at(shutter->value, "camera shutter closes before it opens: [" +
+                                                      format_number(camera.shutter_open) + ", " +
+                                                      format_number(camera.shutter_close) + "]");
+        }
+    }
+    const MapEntry* motion = map.find("motion");
+    if (!motion) return;
+    const auto frames =
+        read_sequence(source, motion->value, map.field("motion"), "a list of keyframes");
+    if (frames.size() < 2) {
+        throw source.error_at(
+            motion->value,
+            "camera motion needs at least 2 keyframes, got " + std::to_string(frames.size()),
+            {"a keyframe is {time: t, from: [x, y, z], at: [x, y, z], up: "
+             "[x, y, z]}; from, at and up default to the camera's"});
+    }
+    for (std::size_t i = 0; i < frames.size(); ++i) {
+        const Field field{"camera motion", "[" + std::to_string(i) + "]"};
+        const MapReader frame(source, frames[i], field, "camera keyframe",
+                              {"time", "from", "at", "up"});
+        CameraKeyframe k{frame.number("time", kAnyNumber), frame.point("from", camera.from),
+                         frame.point("at", camera.at), frame.direction("up", camera.up)};
+        if (!camera.motion.empty() && !(k.time > camera.motion.back().time)) {
+            throw source.error_at(frame.require("time").value,
+                                  "keyframe times must increase, got " + format_number(k.time) +
+                                      " after " + format_number(camera.motion.back().time));
+        }
+        const auto view = unit_vector(k.at - k.from);
+        if (!view || length(cross(*view, k.up)) < 1e-6f) {
+            throw source.error_at(frames[i],
+                                  "camera keyframe needs from and at apart and up not along the "
+                                  "line of sight");
+        }
+        camera.motion.push_back(k);
+    }
+}
+
+}  // namespace
+
 CameraSpec read_camera(const YamlSource& source, const YAML::Node& node, const Field& field) {
     auto entries = read_map(source, node, field);
     const std::string type =
@@ -88,9 +182,11 @@ CameraSpec read_camera(const YamlSource& source, const YAML::Node& node, const F
     const bool perspective = type == "perspective";
     // Each projection takes only its own parameter, so a fov on an orthographic camera is
     // reported rather than silently ignored.
-    const MapReader map(source, node, std::move(entries), type + " camera",
-                        {"type", "from", "at", "up", perspective ? "fov" : "height"},
-                        TypeKey::listed);
+    const MapReader map(
+        source, node, std::move(entries), type + " camera",
+        {"type", "from", "at", "up", perspective ? "fov" : "height", "aperture", "f_number",
+         "focus_distance", "aperture_blades", "aperture_rotation", "shutter", "motion"},
+        TypeKey::listed);
     CameraSpec camera;
     camera.projection = perspective ? Projection::perspective : Projection::orthographic;
     camera.from = map.point("from");
@@ -114,6 +210,8 @@ CameraSpec read_camera(const YamlSource& source, const YAML::Node& node, const F
     } else {
         camera.height = map.number("height", kPositive, camera.height);
     }
+    read_lens(map, camera);
+    read_shutter(map, camera);
     return camera;
 }
 

@@ -69,7 +69,7 @@ ShapeReader::ObjectResult ShapeReader::read_shapes(const YAML::Node& node, const
     const ShapeType& type = *std::find_if(types.begin(), types.end(),
                                           [&](const ShapeType& t) { return t.name == name; });
     std::vector<std::string_view> keys = type.keys;
-    keys.insert(keys.end(), {"type", "transform"});
+    keys.insert(keys.end(), {"type", "transform", "motion"});
     keys.insert(keys.end(), extra_keys.begin(), extra_keys.end());
     MapReader map(source_, node, std::move(entries), name, std::move(keys));
 
@@ -80,6 +80,13 @@ ShapeReader::ObjectResult ShapeReader::read_shapes(const YAML::Node& node, const
         for (const ModelPart& part : mesh_model->parts) shapes.push_back(TriangleMesh{part.mesh});
     } else {
         shapes.push_back(type.parse(map, *this));
+    }
+    if (const MapEntry* motion = map.find("motion")) {
+        // Motion moves the object in its own space, then `transform` places it: world =
+        // transform * motion(time), so that a keyframed rotation turns it about its own origin.
+        const auto animated = read_motion(source_, motion->value, map.field("motion"));
+        for (Shape& shape : shapes)
+            shape = Moving{animated, std::make_shared<const Shape>(std::move(shape))};
     }
     if (const MapEntry* transform = map.find("transform")) {
         const Transform t = read_transform(source_, transform->value, map.field("transform"));

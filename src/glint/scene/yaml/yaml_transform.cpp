@@ -82,4 +82,32 @@ Transform read_transform(const YamlSource& source, const YAML::Node& node, const
     return world_from_object;
 }
 
+std::shared_ptr<const AnimatedTransform> read_motion(const YamlSource& source,
+                                                     const YAML::Node& node, const Field& field) {
+    const auto frames = read_sequence(source, node, field, "a list of keyframes");
+    if (frames.size() < 2) {
+        throw source.error_at(
+            node, "motion needs at least 2 keyframes, got " + std::to_string(frames.size()),
+            {"a keyframe is {time: t, transform: [steps]}"});
+    }
+    std::vector<Keyframe> keyframes;
+    for (std::size_t i = 0; i < frames.size(); ++i) {
+        const Field frame_field{field.what, field.key + "[" + std::to_string(i) + "]"};
+        const MapReader map(source, frames[i], frame_field, "keyframe", {"time", "transform"});
+        Keyframe k{map.number("time", kAnyNumber), Transform{}};
+        if (!keyframes.empty() && !(k.time > keyframes.back().time)) {
+            throw source.error_at(map.require("time").value,
+                                  "keyframe times must increase, got " + format_number(k.time) +
+                                      " after " + format_number(keyframes.back().time));
+        }
+        if (const MapEntry* t = map.find("transform"))
+            k.world_from_object = read_transform(source, t->value, map.field("transform"));
+        keyframes.push_back(k);
+    }
+    if (const std::string problem = AnimatedTransform::describe_problem(keyframes);
+        !problem.empty())
+        throw source.error_at(node, "motion: " + problem);
+    return std::make_shared<const AnimatedTransform>(std::move(keyframes));
+}
+
 }  // namespace glint
