@@ -11,19 +11,22 @@
 namespace glint {
 namespace {
 
+// Materials only identify media here; their contents do not matter.
+const Material kGlass, kAir, kWater, kOther;
+
 TEST(MediumStack, AnAirBubbleInGlassHasGlassOnBothSides) {
     const MediumStack vacuum;
     EXPECT_EQ(vacuum.ior(), 1);
-    const MediumCrossing into_glass = vacuum.enter(7, 1.5f);
+    const MediumCrossing into_glass = vacuum.enter(7, &kGlass, 1.5f);
     EXPECT_EQ(into_glass.n1, 1);
     EXPECT_EQ(into_glass.n2, 1.5f);
-    const MediumCrossing into_bubble = into_glass.after.enter(9, 1.0f);
+    const MediumCrossing into_bubble = into_glass.after.enter(9, &kAir, 1.0f);
     EXPECT_EQ(into_bubble.n1, 1.5f);
     EXPECT_EQ(into_bubble.n2, 1);
-    const MediumCrossing out_of_bubble = into_bubble.after.leave(9, 1.0f);
+    const MediumCrossing out_of_bubble = into_bubble.after.leave(9, &kAir, 1.0f);
     EXPECT_EQ(out_of_bubble.n1, 1);
     EXPECT_EQ(out_of_bubble.n2, 1.5f);
-    const MediumCrossing out_of_glass = out_of_bubble.after.leave(7, 1.5f);
+    const MediumCrossing out_of_glass = out_of_bubble.after.leave(7, &kGlass, 1.5f);
     EXPECT_EQ(out_of_glass.n1, 1.5f);
     EXPECT_EQ(out_of_glass.n2, 1);
     EXPECT_EQ(out_of_glass.after.size(), 0);
@@ -31,8 +34,10 @@ TEST(MediumStack, AnAirBubbleInGlassHasGlassOnBothSides) {
 
 TEST(MediumStack, OverlappingObjectsLeaveInAnyOrder) {
     // Into A (1.3), into B (1.6), out of A: the ray is still in B.
-    const MediumCrossing out_of_a =
-        MediumStack().enter(1, 1.3f).after.enter(2, 1.6f).after.leave(1, 1.3f);
+    const MediumCrossing out_of_a = MediumStack()
+                                        .enter(1, &kWater, 1.3f)
+                                        .after.enter(2, &kGlass, 1.6f)
+                                        .after.leave(1, &kWater, 1.3f);
     EXPECT_EQ(out_of_a.n1, 1.3f);
     EXPECT_EQ(out_of_a.n2, 1.6f);
     EXPECT_EQ(out_of_a.after.size(), 1);
@@ -41,8 +46,8 @@ TEST(MediumStack, OverlappingObjectsLeaveInAnyOrder) {
 TEST(MediumStack, LeavingAnObjectNeverEnteredGoesIntoTheCurrentMedium) {
     // A ray that started inside glass (the camera in it) leaves to vacuum, as Whitted's tracer
     // always assumed; one inside water that leaves such glass passes into water.
-    EXPECT_EQ(MediumStack().leave(3, 1.5f).n2, 1);
-    const MediumCrossing c = MediumStack().enter(1, 1.33f).after.leave(3, 1.5f);
+    EXPECT_EQ(MediumStack().leave(3, &kGlass, 1.5f).n2, 1);
+    const MediumCrossing c = MediumStack().enter(1, &kWater, 1.33f).after.leave(3, &kGlass, 1.5f);
     EXPECT_EQ(c.n1, 1.5f);
     EXPECT_EQ(c.n2, 1.33f);
     EXPECT_EQ(c.after.size(), 1);
@@ -50,9 +55,20 @@ TEST(MediumStack, LeavingAnObjectNeverEnteredGoesIntoTheCurrentMedium) {
 
 TEST(MediumStack, NestingDeeperThanItsCapacityKeepsTheOuterMedia) {
     MediumStack s;
-    for (int i = 0; i < MediumStack::kCapacity + 3; ++i) s = s.enter(i, 1 + 0.1f * i).after;
+    for (int i = 0; i < MediumStack::kCapacity + 3; ++i)
+        s = s.enter(i, &kOther, 1 + 0.1f * i).after;
     EXPECT_EQ(s.size(), MediumStack::kCapacity);
     EXPECT_FLOAT_EQ(s.ior(), 1 + 0.1f * (MediumStack::kCapacity - 1));
+}
+
+TEST(MediumStack, AnObjectOfSeparateFacesIsLeftThroughAnotherFace) {
+    // Into a glass prism through face 4, out through face 5 (the same glass): back in water.
+    const MediumCrossing out = MediumStack()
+                                   .enter(1, &kWater, 1.33f)
+                                   .after.enter(4, &kGlass, 1.5f)
+                                   .after.leave(5, &kGlass, 1.5f);
+    EXPECT_EQ(out.n2, 1.33f);
+    EXPECT_EQ(out.after.size(), 1);
 }
 
 // Water (n = 1.333) from y = 2 down, with a glass block (n = 1.5) inside it from y = 1 down,

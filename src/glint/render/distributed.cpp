@@ -4,6 +4,7 @@
 #include "glint/render/glossy_lobe.h"
 #include "glint/render/local_lighting.h"
 #include "glint/render/surface_context.h"
+#include "glint/sampling/warp.h"
 
 namespace glint {
 
@@ -34,7 +35,16 @@ Color DistributedIntegrator::trace(const Ray& ray, int depth, float weight, Samp
     color += direct_light(c, ray, stream, stats);
 
     if (depth >= settings.max_depth) return color;
-    const Branches b = branches_at(c, ray.direction, media);
+    // A dispersive surface splits a ray that carries every wavelength: the refracted ray takes
+    // the sample's wavelength, and what it brings back counts by that wavelength's colour.
+    Ray parent = ray;
+    Color spectral_weight{1, 1, 1};
+    if (m.dispersion.model != DispersionModel::none && m.transmit > 0 && ray.wavelength == 0) {
+        parent.wavelength = sample_visible_wavelength(stream.get_1d(kWavelengthDimension));
+        spectral_weight =
+            wavelength_to_rgb_weight(parent.wavelength) / visible_wavelength_pdf(parent.wavelength);
+    }
+    const Branches b = branches_at(c, ray.direction, media, parent.wavelength);
     if (b.kr > 0 && weight * b.kr >= settings.min_weight) {
         const Vector3 mirror = normalize(reflect(ray.direction, c.n));
         const auto d = spread_over_lobe(mirror, m.roughness, lobe_sample(m.roughness, stream),
@@ -51,8 +61,9 @@ Color DistributedIntegrator::trace(const Ray& ray, int depth, float weight, Samp
                              lobe_sample(m.transmit_roughness, stream), to_vector(c.ng), false);
         if (d) {
             stats.count(RayKind::refracted);
-            const Ray t = spawn_from(world_, c, ray, *d);
-            color += b.kt * trace(t, depth + 1, weight * b.kt, stream, stats, b.media);
+            const Ray t = spawn_from(world_, c, parent, *d);
+            color +=
+                b.kt * spectral_weight * trace(t, depth + 1, weight * b.kt, stream, stats, b.media);
         }
     }
     return color;

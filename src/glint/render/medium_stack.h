@@ -1,13 +1,17 @@
 // The media a ray travels through, innermost last: what Snell's law needs on both sides of a
 // surface when refracting objects nest (glass in water, an air bubble in glass). A refracted ray
 // that enters an object pushes it; one that leaves it removes it. Outside every object is
-// vacuum, n = 1.
+// vacuum, n = 1. An object made of separate faces (polygons of one material) is left through
+// another face than it was entered by: leaving a face never entered removes the innermost
+// medium of the same material.
 #pragma once
 
 #include <array>
 #include <cstdint>
 
 namespace glint {
+
+struct Material;
 
 struct MediumCrossing;
 
@@ -16,13 +20,14 @@ public:
     // The index of the medium the ray travels in.
     float ior() const { return size_ > 0 ? entries_[size_ - 1].ior : 1.0f; }
 
-    // Entering the object `primitive` of index ior. Deeper nesting than kCapacity keeps the
-    // outer media only: a ray leaving the deepest objects then returns to the last one kept.
-    MediumCrossing enter(std::uint32_t primitive, float ior) const;
-    // Leaving the object `primitive` of index ior: the ray passes into the innermost medium
-    // that remains. Leaving an object never entered (a ray that started inside it) leaves the
-    // stack as it is.
-    MediumCrossing leave(std::uint32_t primitive, float ior) const;
+    // Entering the object `primitive` of the given material and index. Deeper nesting than
+    // kCapacity keeps the outer media only: a ray leaving the deepest objects then returns to
+    // the last one kept.
+    MediumCrossing enter(std::uint32_t primitive, const Material* material, float ior) const;
+    // Leaving the object `primitive`: the ray passes into the innermost medium that remains.
+    // Leaving an object never entered removes the innermost one of the same material, if any
+    // (else the ray started inside it, and the stack stays as it is).
+    MediumCrossing leave(std::uint32_t primitive, const Material* material, float ior) const;
 
     int size() const { return size_; }
 
@@ -32,7 +37,9 @@ private:
     struct Entry {
         std::uint32_t primitive;
         float ior;
+        const Material* material;
     };
+    void remove(int i);
     std::array<Entry, kCapacity> entries_{};
     int size_ = 0;
 };
@@ -44,21 +51,28 @@ struct MediumCrossing {
     MediumStack after;
 };
 
-inline MediumCrossing MediumStack::enter(std::uint32_t primitive, float ior) const {
+inline MediumCrossing MediumStack::enter(std::uint32_t primitive, const Material* material,
+                                         float ior) const {
     MediumCrossing c{this->ior(), ior, *this};
-    if (size_ < kCapacity) c.after.entries_[c.after.size_++] = {primitive, ior};
+    if (size_ < kCapacity) c.after.entries_[c.after.size_++] = {primitive, ior, material};
     return c;
 }
 
-inline MediumCrossing MediumStack::leave(std::uint32_t primitive, float ior) const {
+inline void MediumStack::remove(int i) {
+    for (int j = i; j + 1 < size_; ++j) entries_[j] = entries_[j + 1];
+    --size_;
+}
+
+inline MediumCrossing MediumStack::leave(std::uint32_t primitive, const Material* material,
+                                         float ior) const {
     MediumCrossing c{ior, 1.0f, *this};
     MediumStack& s = c.after;
-    for (int i = s.size_ - 1; i >= 0; --i) {
-        if (s.entries_[i].primitive != primitive) continue;
-        for (int j = i; j + 1 < s.size_; ++j) s.entries_[j] = s.entries_[j + 1];
-        --s.size_;
-        break;
-    }
+    int found = -1;
+    for (int i = s.size_ - 1; i >= 0 && found < 0; --i)
+        if (s.entries_[i].primitive == primitive) found = i;
+    for (int i = s.size_ - 1; i >= 0 && found < 0; --i)
+        if (s.entries_[i].material == material) found = i;
+    if (found >= 0) s.remove(found);
     c.n2 = s.ior();
     return c;
 }

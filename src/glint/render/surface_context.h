@@ -60,12 +60,21 @@ struct Branches {
     MediumStack media;  // that the refracted ray travels through
 };
 
-inline Branches branches_at(const SurfaceContext& c, Vector3 direction, const MediumStack& media) {
+// The material's index of refraction for a ray of the given wavelength (0: one that carries
+// every wavelength, which sees the index at the d line).
+inline float ior_at(const Material& m, float wavelength) {
+    if (m.dispersion.model == DispersionModel::none || wavelength == 0) return m.ior;
+    return refractive_index(m.dispersion, m.ior, wavelength);
+}
+
+inline Branches branches_at(const SurfaceContext& c, Vector3 direction, const MediumStack& media,
+                            float wavelength = 0) {
     const Material& m = *c.material;
     Branches b{m.reflect, m.transmit, {}, {}};
     if (b.kt > 0) {
+        const float ior = ior_at(m, wavelength);
         const MediumCrossing crossing =
-            c.entering ? media.enter(c.primitive, m.ior) : media.leave(c.primitive, m.ior);
+            c.entering ? media.enter(c.primitive, &m, ior) : media.leave(c.primitive, &m, ior);
         if (const auto t = refract(direction, c.n, crossing.n1 / crossing.n2)) {
             b.refracted = normalize(*t);
             b.media = crossing.after;

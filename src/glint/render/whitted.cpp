@@ -28,7 +28,7 @@ Color WhittedIntegrator::trace(const Ray& ray, int depth, float weight, RayStats
                                    ray.time, stats);
 
     if (depth >= settings.max_depth) return color;
-    const Branches b = branches_at(c, ray.direction, media);
+    const Branches b = branches_at(c, ray.direction, media, ray.wavelength);
     if (b.kr > 0 && weight * b.kr >= settings.min_weight) {
         stats.count(RayKind::reflected);
         const Ray r = spawn_from(world_, c, ray, normalize(reflect(ray.direction, c.n)));

@@ -5,6 +5,7 @@
 #include <string>
 
 #include "glint/math/color.h"
+#include "glint/shading/spectrum.h"
 #include "glint/shading/texture.h"
 
 namespace glint {
@@ -23,6 +24,9 @@ struct Material {
     float reflect = 0;   // kr, weight of the mirror-reflected ray
     float transmit = 0;  // kt, weight of the refracted ray
     float ior = 1;       // index of refraction inside (outside: the enclosing object's, or 1)
+    // How the index varies with wavelength; with a model, ior is its value at the d line
+    // (kReferenceWavelength), which rays that carry no wavelength use.
+    Dispersion dispersion;
     // Spread of the reflected and of the refracted ray over a lobe, 0 (a mirror, clear glass)
     // to 1, for the integrators that sample lobes: blurred mirrors and frosted glass.
     float roughness = 0;

@@ -3,6 +3,7 @@
 #include "glint/scene/yaml/yaml_materials.h"
 
 #include <algorithm>
+#include <array>
 #include <filesystem>
 #include <limits>
 #include <memory>
@@ -19,6 +20,19 @@ constexpr std::string_view kWraps[] = {"clamp", "repeat"};
 constexpr std::string_view kFilters[] = {"bilinear", "nearest"};
 constexpr std::string_view kCheckerSpaces[] = {"solid", "uv"};
 constexpr std::string_view kHighlights[] = {"blinn", "phong"};
+
+// Glasses by name: Sellmeier coefficients B1..B3, C1..C3 (um^2) from the makers' data sheets.
+struct NamedGlass {
+    std::string_view name;
+    std::array<float, 6> sellmeier;
+};
+constexpr NamedGlass kGlasses[] = {
+    {"fused-silica", {0.6961663f, 0.4079426f, 0.8974794f, 0.004679148f, 0.01351206f, 97.934f}},
+    {"n-bk7", {1.03961212f, 0.231792344f, 1.01046945f, 0.00600069867f, 0.0200179144f, 103.560653f}},
+    {"n-sf11", {1.73759695f, 0.313747346f, 1.89878101f, 0.013188707f, 0.0623068142f, 155.23629f}},
+};
+constexpr std::string_view kGlassNames[] = {"fused-silica", "n-bk7", "n-sf11"};
+constexpr std::string_view kDispersionForms[] = {"abbe", "cauchy", "sellmeier"};
 // Notes list the defined materials only while the list stays readable.
 constexpr std::size_t kMaxListedNames = 30;
 }  // namespace
@@ -73,11 +87,76 @@ Texture read_texture(const YamlSource& source, const YAML::Node& node, const Fie
     return read_checker_texture(map);
 }
 
+namespace {
+
+// `dispersion`: a glass's name, {abbe: V} around the material's ior (n_d), {cauchy: [A, B]} or
+// {sellmeier: [B1, B2, B3, C1, C2, C3]}. The formulas fix the index themselves, so the material
+// takes no `ior` with them; its ior becomes their value at the d line.
+void read_dispersion(const MapReader& map, Material& m) {
+    const YamlSource& source = map.source();
+    const MapEntry* entry = map.find("dispersion");
+    if (!entry) return;
+    const YAML::Node& node = entry->value;
+    const Field field = map.field("dispersion");
+    Dispersion d;
+    bool from_ior = false;  // the Abbe form disperses around the material's ior
+    if (node.IsScalar()) {
+        const std::string name = read_string(source, node, field);
+        const auto glass = std::find_if(std::begin(kGlasses), std::end(kGlasses),
+                                        [&](const NamedGlass& g) { return g.name == name; });
+        if (glass == std::end(kGlasses))
+            throw unknown_name(source, node, "glass", "glasses", name, kGlassNames);
+        d = {DispersionModel::sellmeier, glass->sellmeier};
+    } else {
+        auto entries = read_map(source, node, field);
+        if (entries.size() != 1) {
+            throw source.error_at(
+                node, "dispersion is a map with one key, got " + std::to_string(entries.size()),
+                {"forms are: " + join(kDispersionForms) + ", or a glass name"});
+        }
+        const MapEntry& form = entries.front();
+        const Field form_field{"dispersion", form.key, form.key_node};
+        if (form.key == "abbe") {
+            const float abbe = read_number(source, form.value, form_field, kPositive);
+            if (!(m.ior > 1)) {
+                throw source.error_at(form.key_node,
+                                      "an Abbe number needs the material's ior (n_d) above 1, "
+                                      "got " +
+                                          format_number(m.ior));
+            }
+            d = cauchy_from_abbe(m.ior, abbe);
+            from_ior = true;
+        } else if (form.key == "cauchy" || form.key == "sellmeier") {
+            const bool cauchy = form.key == "cauchy";
+            const auto c =
+                read_sequence(source, form.value, form_field,
+                              cauchy ? "[A, B]" : "[B1, B2, B3, C1, C2, C3]", cauchy ? 2 : 6);
+            d.model = cauchy ? DispersionModel::cauchy : DispersionModel::sellmeier;
+            for (std::size_t i = 0; i < c.size(); ++i)
+                d.c[i] = read_number(source, c[i], form_field);
+        } else {
+            throw unknown_name(source, form.key_node, "dispersion form", "forms", form.key,
+                               kDispersionForms);
+        }
+    }
+    if (const std::string problem = describe_problem(d, m.ior); !problem.empty())
+        throw source.error_at(node, "dispersion " + problem);
+    if (!from_ior && map.has("ior")) {
+        throw source.error_at(map.require("ior").key_node,
+                              "a material whose dispersion gives its index takes no \"ior\"",
+                              {"its ior is the formula's value at the d line, 587.56 nm"});
+    }
+    m.dispersion = d;
+    m.ior = refractive_index(d, m.ior, kReferenceWavelength);
+}
+
+}  // namespace
+
 Material read_material(const YamlSource& source, const YAML::Node& node, const Field& field,
                        std::string what, std::string name) {
     const MapReader map(source, node, field, std::move(what),
                         {"color", "ka", "kd", "ks", "shininess", "highlight", "reflect", "transmit",
-                         "ior", "roughness", "transmit_roughness", "emission"});
+                         "ior", "dispersion", "roughness", "transmit_roughness", "emission"});
     Material m;
     m.name = std::move(name);
     if (const MapEntry* color = map.find("color")) {
@@ -95,6 +174,7 @@ Material read_material(const YamlSource& source, const YAML::Node& node, const F
     m.reflect = map.number("reflect", kUnitInterval, m.reflect);
     m.transmit = map.number("transmit", kUnitInterval, m.transmit);
     m.ior = map.number("ior", kPositive, m.ior);
+    read_dispersion(map, m);
     m.roughness = map.number("roughness", kUnitInterval, m.roughness);
     m.transmit_roughness = map.number("transmit_roughness", kUnitInterval, m.roughness);
     m.emission = map.color("emission", m.emission);
