@@ -71,6 +71,9 @@ void add_render_command(CLI::App& app, glint::cli::RenderCommand& c) {
                      "light-buffer, or light-buffer+cache")
         ->check(CLI::IsMember({"none", "light-buffer", "light-buffer+cache"}));
     render->add_option("--stats", c.stats_file, "Also write the render's figures as JSON here");
+    render->add_option("--samples-image", c.samples_image,
+                       "Also write the samples each pixel took here, as grey from none (black) "
+                       "to the most (white); .exr and .pfm keep the counts themselves");
     render->add_flag("--ppm-ascii", c.ppm_ascii,
                      "Write .ppm images as ASCII (P3), not binary (P6)");
     render->add_flag("-q,--quiet", c.quiet, "No progress and no summary");

@@ -86,8 +86,17 @@ std::string with_thousands(std::uint64_t n) {
 void print_summary(const std::string& output, const RenderSettings& s, const RenderResult& r) {
     const RayStats& rays = r.rays;
     const double mrays = r.seconds > 0 ? double(rays.total()) / r.seconds / 1e6 : 0;
-    std::printf("glint: wrote %s (%dx%d, %d spp) in %.2f s\n", output.c_str(), s.width, s.height,
-                s.samples_per_pixel, r.seconds);
+    if (s.adaptive) {
+        // Every pixel's samples are its eye rays.
+        const double pixels = double(s.width) * s.height;
+        std::printf("glint: wrote %s (%dx%d, adaptive: %.1f of at most %d spp) in %.2f s\n",
+                    output.c_str(), s.width, s.height,
+                    double(r.rays.traced[std::size_t(RayKind::primary)]) / pixels,
+                    s.samples_per_pixel, r.seconds);
+    } else {
+        std::printf("glint: wrote %s (%dx%d, %d spp) in %.2f s\n", output.c_str(), s.width,
+                    s.height, s.samples_per_pixel, r.seconds);
+    }
     std::printf("  rays       %15s  %.2f Mrays/s\n", with_thousands(rays.total()).c_str(), mrays);
     for (std::size_t kind = 0; kind < kRayKindCount; ++kind) {
         std::printf("  %-10s %15s", std::string(kRayKindNames[kind]).c_str(),
@@ -108,6 +117,15 @@ void report_bad_samples(const BadSamples& bad, std::uint64_t seed) {
                  static_cast<unsigned long long>(seed));
 }
 
+// Float formats keep the counts; the others show them as grey, the most a pixel may take white.
+void write_samples_image(const std::string& file, Image counts, int most) {
+    const std::string ext = std::filesystem::path(file).extension().string();
+    const bool keeps_floats = ext == ".exr" || ext == ".EXR" || ext == ".pfm" || ext == ".PFM";
+    if (!keeps_floats)
+        for (Color& c : counts.pixels) c = c / float(most);
+    write_image(file, counts, WriteOptions{});
+}
+
 void write_stats(const std::string& file, const std::string& json) {
     write_file_atomically(file, [&](const std::filesystem::path& temporary) {
         std::ofstream out(temporary, std::ios::binary);
@@ -126,6 +144,10 @@ int run_render(const RenderCommand& command) {
         if (const auto reason = unwritable_image_reason(output)) throw UsageError{*reason};
         if (!command.stats_file.empty()) {
             if (const auto reason = unwritable_reason(command.stats_file))
+                throw UsageError{*reason};
+        }
+        if (!command.samples_image.empty()) {
+            if (const auto reason = unwritable_image_reason(command.samples_image))
                 throw UsageError{*reason};
         }
         Scene scene = load_scene(command.scene);
@@ -157,6 +179,8 @@ int run_render(const RenderCommand& command) {
         const std::string written = result.complete ? output : partial_output_path(output).string();
         write_image(written, result.image, WriteOptions{command.ppm_ascii});
         const RenderSettings& s = world.settings();
+        if (!command.samples_image.empty())
+            write_samples_image(command.samples_image, result.samples_taken, s.samples_per_pixel);
         if (!command.stats_file.empty()) {
             const int threads =
                 command.threads > 0 ? command.threads : tbb::info::default_concurrency();

@@ -21,7 +21,8 @@ struct RenderCommand {
     std::uint64_t seed = 0;
     bool quiet = false;
     bool ppm_ascii = false;
-    std::string stats_file;  // empty: none
+    std::string stats_file;     // empty: none
+    std::string samples_image;  // empty: none
 };
 
 // Exit status: 0 on success, 2 on bad input (scene, options, an unwritable output path), 1 on

@@ -57,7 +57,7 @@ Vector3 exit_direction(const World& world, Ray ray) {
         const Branches b = branches_at(c, ray.direction, media, ray.wavelength);
         if (b.kt == 0) break;
         ray = spawn_from(world, c, ray, b.refracted);
-        media = b.media;
+        media = media_beyond(c, b, media, ray.wavelength);
     }
     return ray.direction;
 }

@@ -113,6 +113,37 @@ TEST(YamlScene, SamplerAndFilterAreRead) {
     EXPECT_EQ(mapped.settings.filter->sigma, 0.75f);
 }
 
+TEST(YamlScene, NoiseTexturesScalarMapsAndBumpsAreRead) {
+    const Scene scene = parse(std::string(kCamera) + R"(
+materials:
+  stone:
+    color: {type: marble, colors: [[1, 1, 1], [0, 0, 0], [0.5, 0.5, 0.5]], scale: 0.5, turbulence: 2, octaves: 4}
+    reflect: {type: granite, low: 0.1, high: 0.4}
+    roughness: {type: turbulence, high: 0.3, scale: 0.2}
+    bump: {type: wood, strength: 0.02}
+objects: [{type: sphere, center: [0, 0, 0], radius: 1, material: stone}]
+)");
+    const Material& m = scene.materials.at(0);
+    const auto& color = std::get<NoiseTexture>(m.color);
+    EXPECT_EQ(color.spec.pattern, NoisePattern::marble);
+    EXPECT_EQ(color.spec.scale, 0.5f);
+    EXPECT_EQ(color.spec.turbulence, 2);
+    EXPECT_EQ(color.spec.octaves, 4);
+    EXPECT_EQ(color.colors.size(), 3u);
+    ASSERT_TRUE(m.reflect_map);
+    EXPECT_EQ(m.reflect_map->spec.pattern, NoisePattern::granite);
+    EXPECT_EQ(m.reflect_map->low, 0.1f);
+    EXPECT_EQ(m.reflect_map->high, 0.4f);
+    ASSERT_TRUE(m.roughness_map);
+    EXPECT_EQ(m.roughness_map->low, 0);
+    // transmit_roughness follows roughness, map and all.
+    ASSERT_TRUE(m.transmit_roughness_map);
+    EXPECT_EQ(m.transmit_roughness_map->spec.scale, 0.2f);
+    ASSERT_TRUE(m.bump);
+    EXPECT_EQ(m.bump->spec.pattern, NoisePattern::wood);
+    EXPECT_EQ(m.bump->strength, 0.02f);
+}
+
 TEST(YamlScene, ImageSettingsAreRead) {
     const Scene scene = parse(std::string(kCamera) +
                               "image:\n  width: 64\n  height: 32\n  samples: 16\n"

@@ -47,7 +47,7 @@ Color DistributedIntegrator::trace(const Ray& ray, int depth, float weight, Samp
     const Branches b = branches_at(c, ray.direction, media, parent.wavelength);
     if (b.kr > 0 && weight * b.kr >= settings.min_weight) {
         const Vector3 mirror = normalize(reflect(ray.direction, c.n));
-        const auto d = spread_over_lobe(mirror, m.roughness, lobe_sample(m.roughness, stream),
+        const auto d = spread_over_lobe(mirror, c.roughness, lobe_sample(c.roughness, stream),
                                         to_vector(c.ng), true);
         if (d) {
             stats.count(RayKind::reflected);
@@ -57,13 +57,14 @@ Color DistributedIntegrator::trace(const Ray& ray, int depth, float weight, Samp
     }
     if (b.kt > 0 && weight * b.kt >= settings.min_weight) {
         const auto d =
-            spread_over_lobe(b.refracted, m.transmit_roughness,
-                             lobe_sample(m.transmit_roughness, stream), to_vector(c.ng), false);
+            spread_over_lobe(b.refracted, c.transmit_roughness,
+                             lobe_sample(c.transmit_roughness, stream), to_vector(c.ng), false);
         if (d) {
             stats.count(RayKind::refracted);
             const Ray t = spawn_from(world_, c, parent, *d);
-            color +=
-                b.kt * spectral_weight * trace(t, depth + 1, weight * b.kt, stream, stats, b.media);
+            color += b.kt * spectral_weight *
+                     trace(t, depth + 1, weight * b.kt, stream, stats,
+                           media_beyond(c, b, media, parent.wavelength));
         }
     }
     return color;

@@ -31,7 +31,7 @@ public:
     // The colour seen along a ray at the given depth (eye rays are 1) and weight (the product
     // of kr and kt above it), travelling through the given media.
     Color trace(const Ray& ray, int depth, float weight, SampleStream& stream, RayStats& stats,
-                const MediumStack& media = {});
+                const MediumStack& media = kVacuum);
 
 private:
     // The local term's sum over the lights at the surface of c, each area light and emitting

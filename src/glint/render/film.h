@@ -68,6 +68,7 @@ private:
     int width() const { return region_.x1 - region_.x0; }
 
     const Filter* filter_;
+    bool one_pixel_;  // a box of radius 1/2: each sample adds to its own pixel with weight 1
     Tile region_;
     std::vector<PixelSum> sums_;
 };

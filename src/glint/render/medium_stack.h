@@ -29,6 +29,10 @@ public:
     // (else the ray started inside it, and the stack stays as it is).
     MediumCrossing leave(std::uint32_t primitive, const Material* material, float ior) const;
 
+    // The index the ray passes into when it leaves the object `primitive`: leave(...).n2
+    // without copying the stack.
+    float ior_after_leaving(std::uint32_t primitive, const Material* material) const;
+
     int size() const { return size_; }
 
     static constexpr int kCapacity = 8;
@@ -43,6 +47,10 @@ private:
     std::array<Entry, kCapacity> entries_{};
     int size_ = 0;
 };
+
+// Outside every object: where eye rays start. One shared value, so that tracing a ray does not
+// build an empty stack each time.
+inline const MediumStack kVacuum;
 
 // The indices of refraction on both sides of a surface a refracted ray crosses, and the media
 // the refracted ray then travels through.
@@ -61,6 +69,19 @@ inline MediumCrossing MediumStack::enter(std::uint32_t primitive, const Material
 inline void MediumStack::remove(int i) {
     for (int j = i; j + 1 < size_; ++j) entries_[j] = entries_[j + 1];
     --size_;
+}
+
+inline float MediumStack::ior_after_leaving(std::uint32_t primitive,
+                                            const Material* material) const {
+    int found = -1;
+    for (int i = size_ - 1; i >= 0 && found < 0; --i)
+        if (entries_[i].primitive == primitive) found = i;
+    for (int i = size_ - 1; i >= 0 && found < 0; --i)
+        if (entries_[i].material == material) found = i;
+    // The innermost medium that remains.
+    for (int i = size_ - 1; i >= 0; --i)
+        if (i != found) return entries_[i].ior;
+    return 1.0f;
 }
 
 inline MediumCrossing MediumStack::leave(std::uint32_t primitive, const Material* material,

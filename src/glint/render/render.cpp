@@ -9,7 +9,9 @@
 #include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
 
+#include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <mutex>
 #include <optional>
 
@@ -27,16 +29,47 @@ struct TileTotals {
     BadSamples bad;
 };
 
+// A pixel's running mean and variance of luminance (Welford), for adaptive sampling.
+class PixelError {
+public:
+    void add(Color c) {
+        const double y = luminance(c);
+        ++n_;
+        const double delta = y - mean_;
+        mean_ += delta / n_;
+        m2_ += delta * (y - mean_);
+    }
+    // 1.96 standard errors of the mean over max(mean, the dark level).
+    double relative_error() const {
+        if (n_ < 2) return kInfinity;
+        const double standard_error = std::sqrt(m2_ / (n_ - 1) / n_);
+        return 1.96 * standard_error / std::max(std::abs(mean_), double(kAdaptiveDarkLevel));
+    }
+
+private:
+    static double luminance(Color c) { return 0.2126 * c.r + 0.7152 * c.g + 0.0722 * c.b; }
+    int n_ = 0;
+    double mean_ = 0, m2_ = 0;
+};
+
 template <class Integrator>
 void render_tile(const Tile& tile, const World& world, const Sampler& sampler, Film& film,
-                 TileTotals& totals) {
+                 Image& samples_taken, TileTotals& totals) {
     const Camera& camera = world.camera();
-    const int width = world.settings().width;
+    const RenderSettings& settings = world.settings();
+    const int width = settings.width;
     Integrator integrator(world);  // one per tile: it holds per-thread caches
     FilmTile film_tile = film.make_tile(tile);
     for (int y = tile.y0; y < tile.y1; ++y)
-        for (int x = tile.x0; x < tile.x1; ++x)
-            for (int s = 0; s < sampler.samples_per_pixel(); ++s) {
+        for (int x = tile.x0; x < tile.x1; ++x) {
+            PixelError error;
+            int s = 0;
+            for (; s < sampler.samples_per_pixel(); ++s) {
+                // Adaptive sampling stops a pixel once its error is small enough; its samples
+                // are the first of its pattern, so the decision depends on nothing else.
+                if (settings.adaptive && s >= settings.adaptive->min_samples &&
+                    error.relative_error() < settings.adaptive->threshold)
+                    break;
                 SampleStream stream(sampler, std::uint64_t(y) * std::uint64_t(width) + x,
                                     std::uint32_t(s));
                 const Point2 offset = stream.get_2d(kPixelDimension);
@@ -51,10 +84,13 @@ void render_tile(const Tile& tile, const World& world, const Sampler& sampler, F
                                                          totals.rays);
                 if (is_valid_sample(c)) {
                     film_tile.add_sample(p, c);
+                    if (settings.adaptive) error.add(c);
                 } else {
                     totals.bad.add({x, y, s});
                 }
             }
+            samples_taken.at(x, y) = Color::gray(float(s));
+        }
     film.merge(film_tile);
 }
 
@@ -82,7 +118,8 @@ void render_tiles(const World& world, const RenderOptions& options, const std::v
                         continue;
                     }
                     TileTotals totals;
-                    render_tile<Integrator>(tiles[i], world, sampler, film, totals);
+                    render_tile<Integrator>(tiles[i], world, sampler, film, result.samples_taken,
+                                            totals);
                     {
                         const std::lock_guard lock(totals_mutex);
                         result.rays += totals.rays;
@@ -106,6 +143,7 @@ RenderResult render(const World& world, const RenderOptions& options, RenderProg
 
     Film film(settings.width, settings.height, filter_of(settings));
     RenderResult result;
+    result.samples_taken = Image(settings.width, settings.height);
     switch (settings.integrator) {
         case IntegratorKind::whitted:
             render_tiles<WhittedIntegrator>(world, options, tiles, film, progress, result);

@@ -30,6 +30,8 @@ struct RenderProgress {
 
 struct RenderResult {
     Image image;
+    // Samples each pixel took, in every channel: the image of adaptive sampling's work.
+    Image samples_taken;
     RayStats rays;
     BadSamples bad_samples;
     double seconds = 0;    // wall time

@@ -24,6 +24,8 @@ struct SurfaceContext {
     Normal3 ng;         // geometric normal on the ray's side: where secondary rays start
     Normal3 n;          // shading normal on the ray's side: what the formulas use
     Vector3 to_viewer;  // -direction of the ray, V
+    // The material's reflect, roughness and transmit_roughness at the point (maps evaluated).
+    float reflect, roughness, transmit_roughness;
 };
 
 // The ray enters the surface when it meets the front side. Both normals are turned to face the
@@ -34,7 +36,13 @@ inline SurfaceContext surface_context(const World& world, const Ray& ray, const 
     c.sp = world.surface_at(ray, hit);
     c.primitive = hit.primitive;
     c.material = &world.material_of(hit.primitive);
-    c.color = evaluate(c.material->color, c.sp);
+    const Material& m = *c.material;
+    c.color = evaluate(m.color, c.sp);
+    c.reflect = m.reflect_map ? evaluate(*m.reflect_map, c.sp.p) : m.reflect;
+    c.roughness = m.roughness_map ? evaluate(*m.roughness_map, c.sp.p) : m.roughness;
+    c.transmit_roughness = m.transmit_roughness_map ? evaluate(*m.transmit_roughness_map, c.sp.p)
+                                                    : m.transmit_roughness;
+    if (m.bump) c.sp.shading_normal = bumped(*m.bump, c.sp.shading_normal, c.sp.p);
     c.entering = dot(c.sp.normal, ray.direction) < 0;
     c.ng = c.entering ? c.sp.normal : -c.sp.normal;
     c.n = c.entering ? c.sp.shading_normal : -c.sp.shading_normal;
@@ -54,12 +62,6 @@ inline Ray spawn_from(const World& world, const SurfaceContext& c, const Ray& pa
 // The weights of the reflected and refracted rays at the surface and the refracted direction:
 // kr and kt of the material, Snell's law with the indices of the media on both sides, and on
 // total internal reflection the transmitted weight moved to the reflected ray (Whitted 1980).
-struct Branches {
-    float kr = 0, kt = 0;
-    Vector3 refracted;  // unit; when kt > 0
-    MediumStack media;  // that the refracted ray travels through
-};
-
 // The material's index of refraction for a ray of the given wavelength (0: one that carries
 // every wavelength, which sees the index at the d line).
 inline float ior_at(const Material& m, float wavelength) {
@@ -67,23 +69,36 @@ inline float ior_at(const Material& m, float wavelength) {
     return refractive_index(m.dispersion, m.ior, wavelength);
 }
 
+struct Branches {
+    float kr = 0, kt = 0;
+    Vector3 refracted;  // unit; when kt > 0
+    bool entering;      // the refracted ray enters the object (else it leaves it)
+};
+
 inline Branches branches_at(const SurfaceContext& c, Vector3 direction, const MediumStack& media,
                             float wavelength = 0) {
     const Material& m = *c.material;
-    Branches b{m.reflect, m.transmit, {}, {}};
+    Branches b{c.reflect, m.transmit, {}, c.entering};
     if (b.kt > 0) {
         const float ior = ior_at(m, wavelength);
-        const MediumCrossing crossing =
-            c.entering ? media.enter(c.primitive, &m, ior) : media.leave(c.primitive, &m, ior);
-        if (const auto t = refract(direction, c.n, crossing.n1 / crossing.n2)) {
+        const float n1 = c.entering ? media.ior() : ior;
+        const float n2 = c.entering ? ior : media.ior_after_leaving(c.primitive, &m);
+        if (const auto t = refract(direction, c.n, n1 / n2)) {
             b.refracted = normalize(*t);
-            b.media = crossing.after;
         } else {
             b.kr += b.kt;
             b.kt = 0;
         }
     }
     return b;
+}
+
+// The media the refracted ray of b travels through, for a ray in `media` at c.
+inline MediumStack media_beyond(const SurfaceContext& c, const Branches& b,
+                                const MediumStack& media, float wavelength = 0) {
+    const Material& m = *c.material;
+    return b.entering ? media.enter(c.primitive, &m, ior_at(m, wavelength)).after
+                      : media.leave(c.primitive, &m, m.ior).after;
 }
 
 }  // namespace glint

@@ -37,7 +37,7 @@ Color WhittedIntegrator::trace(const Ray& ray, int depth, float weight, RayStats
     if (b.kt > 0 && weight * b.kt >= settings.min_weight) {
         stats.count(RayKind::refracted);
         const Ray t = spawn_from(world_, c, ray, b.refracted);
-        color += b.kt * trace(t, depth + 1, weight * b.kt, stats, b.media);
+        color += b.kt * trace(t, depth + 1, weight * b.kt, stats, media_beyond(c, b, media));
     }
     return color;
 }

@@ -33,7 +33,7 @@ public:
     // whose contribution to the pixel is scaled by weight (the product of kr and kt above it),
     // travelling through the given media. Rough surfaces reflect and refract as mirrors do.
     Color trace(const Ray& ray, int depth, float weight, RayStats& stats,
-                const MediumStack& media = {});
+                const MediumStack& media = kVacuum);
 
 private:
     const World& world_;

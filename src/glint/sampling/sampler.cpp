@@ -3,6 +3,7 @@
 // keyed by (seed, pixel, dimension), so that every dimension of every pixel gets its own.
 #include "glint/sampling/sampler.h"
 
+#include <algorithm>
 #include <bit>
 #include <cmath>
 
@@ -154,8 +155,21 @@ bool is_valid_sample_count(SamplerKind kind, int samples_per_pixel) {
     return n * n == samples_per_pixel;
 }
 
+Sampler::Sampler(SamplerKind kind, int samples_per_pixel, std::uint64_t seed)
+    : kind_(kind), spp_(samples_per_pixel), seed_(seed) {
+    const Grid g = grid_for(std::uint32_t(std::max(samples_per_pixel, 1)));
+    pixel_columns_ = g.columns;
+    pixel_rows_ = g.rows;
+}
+
 Point2 Sampler::get_2d(std::uint64_t pixel, std::uint32_t index, std::uint32_t count,
                        std::uint32_t dimension) const {
+    // regular_2d's pixel positions without the key or the grid worked out again.
+    if (kind_ == SamplerKind::regular && dimension == kPixelDimension &&
+        count == std::uint32_t(spp_)) {
+        return {(float(index % pixel_columns_) + 0.5f) / float(pixel_columns_),
+                (float(index / pixel_columns_) + 0.5f) / float(pixel_rows_)};
+    }
     const std::uint64_t key = pattern_key(seed_, pixel, dimension);
     switch (kind_) {
         case SamplerKind::regular:

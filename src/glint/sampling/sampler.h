@@ -39,8 +39,7 @@ class Sampler {
 public:
     // samples_per_pixel is the size of each dimension's pattern: the count the pixels take (or
     // the most they may take); it must satisfy is_valid_sample_count(kind, samples_per_pixel).
-    Sampler(SamplerKind kind, int samples_per_pixel, std::uint64_t seed)
-        : kind_(kind), spp_(samples_per_pixel), seed_(seed) {}
+    Sampler(SamplerKind kind, int samples_per_pixel, std::uint64_t seed);
 
     SamplerKind kind() const { return kind_; }
     int samples_per_pixel() const { return spp_; }
@@ -60,6 +59,9 @@ private:
     SamplerKind kind_;
     int spp_;
     std::uint64_t seed_;
+    // The grid of the regular pixel positions, worked out once: Whitted's eye rays ask for them
+    // every sample.
+    std::uint32_t pixel_columns_, pixel_rows_;
 };
 
 // One sample of one pixel: the camera's dimensions, and fresh dimensions handed out in the order

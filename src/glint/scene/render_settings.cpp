@@ -20,6 +20,9 @@ std::optional<IntegratorKind> integrator_from_name(std::string_view name) {
 
 SamplerKind sampler_of(const RenderSettings& settings) {
     if (settings.sampler) return *settings.sampler;
+    // A pixel that stops early has taken a prefix of its pattern: Sobol's prefixes stay
+    // stratified.
+    if (settings.adaptive) return SamplerKind::sobol;
     return settings.integrator == IntegratorKind::whitted ? SamplerKind::regular
                                                           : SamplerKind::jittered;
 }

@@ -30,6 +30,18 @@ std::span<const std::string_view> integrator_names();
 std::optional<IntegratorKind> integrator_from_name(std::string_view name);
 
 // What the scene asks of the image and of the ray tree.
+// Adaptive sampling: a pixel takes samples until its error estimate falls below the threshold,
+// at least min_samples and at most RenderSettings::samples_per_pixel.
+struct AdaptiveSampling {
+    // The pixel's relative error: the 95% confidence half-width of its mean luminance,
+    // 1.96 * standard error, over max(mean, kAdaptiveDarkLevel).
+    float threshold = 0.02f;
+    int min_samples = 16;  // >= 2: the variance needs two
+};
+// Darker pixels than this are judged by their absolute error, as if this bright: their noise
+// cannot be seen against a relative threshold.
+inline constexpr float kAdaptiveDarkLevel = 0.05f;
+
 struct RenderSettings {
     int width = 640;
     int height = 480;
@@ -46,11 +58,13 @@ struct RenderSettings {
     bool transparent_shadows = false;
     // Shadow rays each sample sends to each area light and emitting object (distributed).
     int shadow_rays = 1;
+    // Unset: every pixel takes samples_per_pixel samples.
+    std::optional<AdaptiveSampling> adaptive;
 };
 
 // The sampler and filter a render uses: the scene's, or its integrator's default (whitted: the
 // regular grid and a box over each pixel, its samples averaged; distributed: jittered samples
-// and a Gaussian).
+// and a Gaussian; adaptive sampling: Sobol points).
 SamplerKind sampler_of(const RenderSettings& settings);
 FilterSpec filter_of(const RenderSettings& settings);
 

@@ -2,6 +2,7 @@
 // reflected and refracted rays of Whitted's recursion.
 #pragma once
 
+#include <optional>
 #include <string>
 
 #include "glint/math/color.h"
@@ -32,6 +33,10 @@ struct Material {
     float roughness = 0;
     float transmit_roughness = 0;
     Color emission;  // added to the surface's own light, unaffected by lights and shadows
+    // Solid noise that varies reflect, roughness and transmit_roughness over the surface (in
+    // place of the constants above), and a bump map that tilts the shading normal.
+    std::optional<NoiseScalar> reflect_map, roughness_map, transmit_roughness_map;
+    std::optional<BumpMap> bump;
 };
 
 }  // namespace glint

@@ -29,6 +29,7 @@ struct Evaluate {
         return odd ? checker.odd : checker.even;
     }
     Color operator()(const ImageTexture& image) const { return sample(image, sp.uv); }
+    Color operator()(const NoiseTexture& noise) const { return glint::evaluate(noise, sp.p); }
 };
 
 }  // namespace

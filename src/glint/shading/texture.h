@@ -1,5 +1,6 @@
 // Colour sources for materials: a constant colour, a checker pattern, either painted on the
-// surface's uv coordinates (2D) or carved out of space (3D, a solid texture), or an image.
+// surface's uv coordinates (2D) or carved out of space (3D, a solid texture), an image, or a
+// noise pattern through a colour ramp (solid).
 #pragma once
 
 #include <variant>
@@ -7,6 +8,7 @@
 #include "glint/geometry/surface_point.h"
 #include "glint/math/color.h"
 #include "glint/shading/image_texture.h"
+#include "glint/shading/noise_texture.h"
 
 namespace glint {
 
@@ -19,7 +21,7 @@ struct CheckerTexture {
     CheckerSpace space = CheckerSpace::solid;
 };
 
-using Texture = std::variant<Color, CheckerTexture, ImageTexture>;
+using Texture = std::variant<Color, CheckerTexture, ImageTexture, NoiseTexture>;
 
 Color evaluate(const Texture& texture, const SurfacePoint& sp);
 

@@ -45,12 +45,35 @@ FilterSpec read_filter(const YamlSource& source, const YAML::Node& node, const F
     return spec;
 }
 
+// `adaptive`: the threshold and the fewest samples a pixel takes; `samples` is the most.
+AdaptiveSampling read_adaptive(const YamlSource& source, const YAML::Node& node, const Field& field,
+                               const RenderSettings& s) {
+    const MapReader map(source, node, field, "adaptive", {"threshold", "min_samples"});
+    AdaptiveSampling a;
+    a.threshold = map.number("threshold", kPositive, a.threshold);
+    a.min_samples = map.integer("min_samples", {2, kMaxSamplesPerPixel},
+                                std::min(a.min_samples, s.samples_per_pixel));
+    if (a.min_samples > s.samples_per_pixel) {
+        throw source.error_at(map.require("min_samples").value,
+                              "adaptive min_samples (" + std::to_string(a.min_samples) +
+                                  ") exceeds the image's samples (" +
+                                  std::to_string(s.samples_per_pixel) + ")",
+                              {"samples is the most a pixel takes; min_samples the fewest"});
+    }
+    if (s.sampler == SamplerKind::regular) {
+        throw source.error_at(node, "adaptive sampling needs the jittered or sobol sampler",
+                              {"a pixel that stops early takes the first points of its pattern, "
+                               "which for the regular grid are its top rows"});
+    }
+    return a;
+}
+
 }  // namespace
 
 RenderSettings read_image(const YamlSource& source, const YAML::Node& node, const Field& field) {
     const MapReader map(
         source, node, field, "image",
-        {"width", "height", "integrator", "samples", "sampler", "filter", "shadow_rays",
+        {"width", "height", "integrator", "samples", "sampler", "filter", "adaptive", "shadow_rays",
          "max_depth", "min_weight", "background", "transparent_shadows"});
     RenderSettings s;
     s.width = map.integer("width", {1, kMaxImageSide}, s.width);
@@ -69,6 +92,8 @@ RenderSettings read_image(const YamlSource& source, const YAML::Node& node, cons
     if (const MapEntry* filter = map.find("filter"))
         s.filter = read_filter(source, filter->value, map.field("filter"));
     s.samples_per_pixel = map.integer("samples", {1, kMaxSamplesPerPixel}, s.samples_per_pixel);
+    if (const MapEntry* adaptive = map.find("adaptive"))
+        s.adaptive = read_adaptive(source, adaptive->value, map.field("adaptive"), s);
     if (!is_valid_sample_count(sampler_of(s), s.samples_per_pixel)) {
         throw source.error_at(map.require("samples").value,
                               "samples must be a square number (1, 4, 9, 16, …) for the "
