@@ -91,11 +91,38 @@ void FilmTile::add_sample(Point2 p, Color c) {
     }
 }
 
+namespace {
+
+Color resolved(const PixelSum& s) {
+    if (s.weight <= 0) return {};
+    const double w = double(s.weight);
+    return {float(double(s.r) / w), float(double(s.g) / w), float(double(s.b) / w)};
+}
+
+}  // namespace
+
 Film::Film(int width, int height, const FilterSpec& filter)
-    : width_(width), height_(height), filter_(filter), sums_(std::size_t(width) * height) {}
+    : width_(width),
+      height_(height),
+      filter_(filter),
+      one_pixel_(filter.kind == FilterKind::box && filter.radius == 0.5f) {
+    if (one_pixel_) {
+        resolved_ = Image(width, height);
+    } else {
+        sums_.resize(std::size_t(width) * height);
+    }
+}
 
 void Film::merge(const FilmTile& tile) {
     const Tile& r = tile.region();
+    if (one_pixel_) {
+        // Only the tile's own pixels have weight (its region reaches one pixel past it, which
+        // its samples never do), and no other tile's samples reach them: no lock.
+        for (int y = r.y0; y < r.y1; ++y)
+            for (int x = r.x0; x < r.x1; ++x)
+                if (tile.at(x, y).weight > 0) resolved_.at(x, y) = resolved(tile.at(x, y));
+        return;
+    }
     const std::lock_guard lock(merge_mutex_);
     for (int y = r.y0; y < r.y1; ++y)
         for (int x = r.x0; x < r.x1; ++x) {
@@ -109,13 +136,9 @@ void Film::merge(const FilmTile& tile) {
 }
 
 Image Film::resolve() const {
+    if (one_pixel_) return resolved_;
     Image image(width_, height_);
-    for (std::size_t i = 0; i < sums_.size(); ++i) {
-        const PixelSum& s = sums_[i];
-        if (s.weight <= 0) continue;
-        const double w = double(s.weight);
-        image.pixels[i] = {float(double(s.r) / w), float(double(s.g) / w), float(double(s.b) / w)};
-    }
+    for (std::size_t i = 0; i < sums_.size(); ++i) image.pixels[i] = resolved(sums_[i]);
     return image;
 }
 

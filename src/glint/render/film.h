@@ -93,7 +93,12 @@ public:
 private:
     int width_, height_;
     Filter filter_;
+    // A box of radius 1/2 keeps each sample in its own pixel, so tiles never share pixels: a
+    // merged tile's pixels are final and go straight into the image, and the whole film of
+    // sums (64 bytes a pixel) is never built.
+    bool one_pixel_;
     std::vector<PixelSum> sums_;
+    Image resolved_;
     std::mutex merge_mutex_;
 };
 
