@@ -94,7 +94,8 @@ INSTANTIATE_TEST_SUITE_P(Scenes, StatisticalImage,
                          ::testing::Values("features/soft-shadows.yaml", "features/glossy.yaml",
                                            "features/translucency.yaml",
                                            "features/depth-of-field.yaml",
-                                           "features/motion-blur.yaml", "features/dispersion.yaml"),
+                                           "features/motion-blur.yaml", "features/dispersion.yaml",
+                                           "distributed-showcase.yaml"),
                          [](const ::testing::TestParamInfo<std::string>& param) {
                              std::string id = fs::path(param.param).stem().string();
                              for (char& c : id)

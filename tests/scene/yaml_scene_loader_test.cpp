@@ -123,6 +123,10 @@ materials:
     bump: {type: wood, strength: 0.02}
 objects: [{type: sphere, center: [0, 0, 0], radius: 1, material: stone}]
 )");
+    EXPECT_FALSE(parse(std::string(kCamera) + "objects: [{type: sphere, center: [0, 0, 0], "
+                                              "radius: 1, material: {reflect: 0.5}}]")
+                     .materials.at(0)
+                     .maps);  // constants only: no maps to look at
     const Material& m = scene.materials.at(0);
     const auto& color = std::get<NoiseTexture>(m.color);
     EXPECT_EQ(color.spec.pattern, NoisePattern::marble);
@@ -130,18 +134,20 @@ objects: [{type: sphere, center: [0, 0, 0], radius: 1, material: stone}]
     EXPECT_EQ(color.spec.turbulence, 2);
     EXPECT_EQ(color.spec.octaves, 4);
     EXPECT_EQ(color.colors.size(), 3u);
-    ASSERT_TRUE(m.reflect_map);
-    EXPECT_EQ(m.reflect_map->spec.pattern, NoisePattern::granite);
-    EXPECT_EQ(m.reflect_map->low, 0.1f);
-    EXPECT_EQ(m.reflect_map->high, 0.4f);
-    ASSERT_TRUE(m.roughness_map);
-    EXPECT_EQ(m.roughness_map->low, 0);
+    ASSERT_TRUE(m.maps);
+    const MaterialMaps& maps = *m.maps;
+    ASSERT_TRUE(maps.reflect);
+    EXPECT_EQ(maps.reflect->spec.pattern, NoisePattern::granite);
+    EXPECT_EQ(maps.reflect->low, 0.1f);
+    EXPECT_EQ(maps.reflect->high, 0.4f);
+    ASSERT_TRUE(maps.roughness);
+    EXPECT_EQ(maps.roughness->low, 0);
     // transmit_roughness follows roughness, map and all.
-    ASSERT_TRUE(m.transmit_roughness_map);
-    EXPECT_EQ(m.transmit_roughness_map->spec.scale, 0.2f);
-    ASSERT_TRUE(m.bump);
-    EXPECT_EQ(m.bump->spec.pattern, NoisePattern::wood);
-    EXPECT_EQ(m.bump->strength, 0.02f);
+    ASSERT_TRUE(maps.transmit_roughness);
+    EXPECT_EQ(maps.transmit_roughness->spec.scale, 0.2f);
+    ASSERT_TRUE(maps.bump);
+    EXPECT_EQ(maps.bump->spec.pattern, NoisePattern::wood);
+    EXPECT_EQ(maps.bump->strength, 0.02f);
 }
 
 TEST(YamlScene, ImageSettingsAreRead) {

@@ -11,9 +11,11 @@ constexpr double kFixedOne = 0x1p32;
 
 // The product of a float weight and a float value is exact in double (24 + 24 bits < 53), and
 // its rounding to the fixed-point unit depends on nothing else: the same sample adds the same
-// integer wherever and whenever it is added.
+// integer wherever and whenever it is added. Rounded half away from zero by hand: |x| < 2^62
+// (weights <= 1, valid samples < 2^30), and std::llrint is a library call in every sample.
 FixedSum to_fixed(float weight, float value) {
-    return FixedSum(std::llrint(double(weight) * double(value) * kFixedOne));
+    const double x = double(weight) * double(value) * kFixedOne;
+    return FixedSum(std::int64_t(x + (x >= 0 ? 0.5 : -0.5)));
 }
 
 void add(PixelSum& sum, float weight, Color c) {

@@ -29,6 +29,18 @@ public:
     // (else the ray started inside it, and the stack stays as it is).
     MediumCrossing leave(std::uint32_t primitive, const Material* material, float ior) const;
 
+    // enter(...).after and leave(...).after, copying the stack once.
+    MediumStack entered(std::uint32_t primitive, const Material* material, float ior) const {
+        MediumStack s = *this;
+        if (s.size_ < kCapacity) s.entries_[s.size_++] = {primitive, ior, material};
+        return s;
+    }
+    MediumStack left(std::uint32_t primitive, const Material* material) const {
+        MediumStack s = *this;
+        if (const int i = s.find(primitive, material); i >= 0) s.remove(i);
+        return s;
+    }
+
     // The index the ray passes into when it leaves the object `primitive`: leave(...).n2
     // without copying the stack.
     float ior_after_leaving(std::uint32_t primitive, const Material* material) const;
@@ -44,6 +56,14 @@ private:
         const Material* material;
     };
     void remove(int i);
+    // The entry leaving `primitive` removes: its own, else the innermost of its material; -1.
+    int find(std::uint32_t primitive, const Material* material) const {
+        for (int i = size_ - 1; i >= 0; --i)
+            if (entries_[i].primitive == primitive) return i;
+        for (int i = size_ - 1; i >= 0; --i)
+            if (entries_[i].material == material) return i;
+        return -1;
+    }
     std::array<Entry, kCapacity> entries_{};
     int size_ = 0;
 };
@@ -61,9 +81,7 @@ struct MediumCrossing {
 
 inline MediumCrossing MediumStack::enter(std::uint32_t primitive, const Material* material,
                                          float ior) const {
-    MediumCrossing c{this->ior(), ior, *this};
-    if (size_ < kCapacity) c.after.entries_[c.after.size_++] = {primitive, ior, material};
-    return c;
+    return {this->ior(), ior, entered(primitive, material, ior)};
 }
 
 inline void MediumStack::remove(int i) {
@@ -73,11 +91,7 @@ inline void MediumStack::remove(int i) {
 
 inline float MediumStack::ior_after_leaving(std::uint32_t primitive,
                                             const Material* material) const {
-    int found = -1;
-    for (int i = size_ - 1; i >= 0 && found < 0; --i)
-        if (entries_[i].primitive == primitive) found = i;
-    for (int i = size_ - 1; i >= 0 && found < 0; --i)
-        if (entries_[i].material == material) found = i;
+    const int found = find(primitive, material);
     // The innermost medium that remains.
     for (int i = size_ - 1; i >= 0; --i)
         if (i != found) return entries_[i].ior;
@@ -86,15 +100,8 @@ inline float MediumStack::ior_after_leaving(std::uint32_t primitive,
 
 inline MediumCrossing MediumStack::leave(std::uint32_t primitive, const Material* material,
                                          float ior) const {
-    MediumCrossing c{ior, 1.0f, *this};
-    MediumStack& s = c.after;
-    int found = -1;
-    for (int i = s.size_ - 1; i >= 0 && found < 0; --i)
-        if (s.entries_[i].primitive == primitive) found = i;
-    for (int i = s.size_ - 1; i >= 0 && found < 0; --i)
-        if (s.entries_[i].material == material) found = i;
-    if (found >= 0) s.remove(found);
-    c.n2 = s.ior();
+    MediumCrossing c{ior, 1.0f, left(primitive, material)};
+    c.n2 = c.after.ior();
     return c;
 }
 

@@ -38,11 +38,17 @@ inline SurfaceContext surface_context(const World& world, const Ray& ray, const 
     c.material = &world.material_of(hit.primitive);
     const Material& m = *c.material;
     c.color = evaluate(m.color, c.sp);
-    c.reflect = m.reflect_map ? evaluate(*m.reflect_map, c.sp.p) : m.reflect;
-    c.roughness = m.roughness_map ? evaluate(*m.roughness_map, c.sp.p) : m.roughness;
-    c.transmit_roughness = m.transmit_roughness_map ? evaluate(*m.transmit_roughness_map, c.sp.p)
-                                                    : m.transmit_roughness;
-    if (m.bump) c.sp.shading_normal = bumped(*m.bump, c.sp.shading_normal, c.sp.p);
+    c.reflect = m.reflect;
+    c.roughness = m.roughness;
+    c.transmit_roughness = m.transmit_roughness;
+    if (m.maps) [[unlikely]] {
+        const MaterialMaps& maps = *m.maps;
+        if (maps.reflect) c.reflect = evaluate(*maps.reflect, c.sp.p);
+        if (maps.roughness) c.roughness = evaluate(*maps.roughness, c.sp.p);
+        if (maps.transmit_roughness)
+            c.transmit_roughness = evaluate(*maps.transmit_roughness, c.sp.p);
+        if (maps.bump) c.sp.shading_normal = bumped(*maps.bump, c.sp.shading_normal, c.sp.p);
+    }
     c.entering = dot(c.sp.normal, ray.direction) < 0;
     c.ng = c.entering ? c.sp.normal : -c.sp.normal;
     c.n = c.entering ? c.sp.shading_normal : -c.sp.shading_normal;
@@ -97,8 +103,8 @@ inline Branches branches_at(const SurfaceContext& c, Vector3 direction, const Me
 inline MediumStack media_beyond(const SurfaceContext& c, const Branches& b,
                                 const MediumStack& media, float wavelength = 0) {
     const Material& m = *c.material;
-    return b.entering ? media.enter(c.primitive, &m, ior_at(m, wavelength)).after
-                      : media.leave(c.primitive, &m, m.ior).after;
+    return b.entering ? media.entered(c.primitive, &m, ior_at(m, wavelength))
+                      : media.left(c.primitive, &m);
 }
 
 }  // namespace glint

@@ -2,6 +2,7 @@
 // reflected and refracted rays of Whitted's recursion.
 #pragma once
 
+#include <memory>
 #include <optional>
 #include <string>
 
@@ -13,6 +14,13 @@ namespace glint {
 
 // How the highlight is measured: Phong's (R.V)^n or Blinn's (H.N)^n.
 enum class Highlight { blinn, phong };
+
+// Solid noise that varies reflect, roughness and transmit_roughness over the surface (in place
+// of the material's constants), and a bump map that tilts the shading normal.
+struct MaterialMaps {
+    std::optional<NoiseScalar> reflect, roughness, transmit_roughness;
+    std::optional<BumpMap> bump;
+};
 
 struct Material {
     std::string name;
@@ -33,10 +41,9 @@ struct Material {
     float roughness = 0;
     float transmit_roughness = 0;
     Color emission;  // added to the surface's own light, unaffected by lights and shadows
-    // Solid noise that varies reflect, roughness and transmit_roughness over the surface (in
-    // place of the constants above), and a bump map that tilts the shading normal.
-    std::optional<NoiseScalar> reflect_map, roughness_map, transmit_roughness_map;
-    std::optional<BumpMap> bump;
+    // What varies over the surface, when anything does; null for most materials, so that a hit
+    // on them asks one question.
+    std::shared_ptr<const MaterialMaps> maps;
 };
 
 }  // namespace glint

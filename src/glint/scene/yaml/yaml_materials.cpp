@@ -267,18 +267,21 @@ Material read_material(const YamlSource& source, const YAML::Node& node, const F
     const std::string highlight =
         map.choice("highlight", kHighlights, "highlight", "highlights", "blinn");
     m.highlight = highlight == "phong" ? Highlight::phong : Highlight::blinn;
-    m.reflect_map = read_scalar_map(map, "reflect", kUnitInterval, m.reflect);
+    MaterialMaps maps;
+    maps.reflect = read_scalar_map(map, "reflect", kUnitInterval, m.reflect);
     m.transmit = map.number("transmit", kUnitInterval, m.transmit);
     m.ior = map.number("ior", kPositive, m.ior);
     read_dispersion(map, m);
-    m.roughness_map = read_scalar_map(map, "roughness", kUnitInterval, m.roughness);
+    maps.roughness = read_scalar_map(map, "roughness", kUnitInterval, m.roughness);
     // transmit_roughness defaults to roughness, map and all.
     m.transmit_roughness = m.roughness;
-    m.transmit_roughness_map =
+    maps.transmit_roughness =
         map.has("transmit_roughness")
             ? read_scalar_map(map, "transmit_roughness", kUnitInterval, m.transmit_roughness)
-            : m.roughness_map;
-    m.bump = read_bump(map);
+            : maps.roughness;
+    maps.bump = read_bump(map);
+    if (maps.reflect || maps.roughness || maps.transmit_roughness || maps.bump)
+        m.maps = std::make_shared<const MaterialMaps>(std::move(maps));
     m.emission = map.color("emission", m.emission);
     return m;
 }
