@@ -33,6 +33,35 @@ TEST(Film, BoxFilterAveragesEachPixelsOwnSamples) {
     EXPECT_EQ(image.at(1, 0), (Color{0.5f, 0, 0}));
 }
 
+TEST(Film, BoxFilterKeepsASampleOnTheTilesFarEdgeInTheTile) {
+    // A jittered offset can round up to 1: the sample at x = 2 still belongs to pixel 1 of the
+    // tile [0, 2), never to the next tile's pixel 2.
+    Film film(3, 1, FilterSpec{});
+    FilmTile left = film.make_tile({0, 0, 2, 1});
+    FilmTile right = film.make_tile({2, 0, 3, 1});
+    left.add_sample({2.0f, 0.5f}, Color::gray(4));
+    right.add_sample({2.5f, 0.5f}, Color::gray(1));
+    film.merge(right);
+    film.merge(left);
+    const Image image = film.resolve();
+    EXPECT_EQ(image.at(1, 0), Color::gray(4));
+    EXPECT_EQ(image.at(2, 0), Color::gray(1));
+}
+
+TEST(Film, BoxFilterAveragesInSampleOrderLikeAPlainSum) {
+    // Whitted's images stay bit for bit what a float sum over the samples in order gives.
+    Film film(1, 1, FilterSpec{});
+    FilmTile tile = film.make_tile({0, 0, 1, 1});
+    const Color samples[] = {{0.1f, 0.7f, 1e-3f}, {0.3f, 0.2f, 5.0f}, {0.77f, 0.01f, 0.5f}};
+    Color sum;
+    for (const Color& c : samples) {
+        tile.add_sample({0.5f, 0.5f}, c);
+        sum += c;
+    }
+    film.merge(tile);
+    EXPECT_EQ(film.resolve().at(0, 0), sum / 3.0f);
+}
+
 TEST(Film, PixelsWithoutSamplesAreBlack) {
     Film film(3, 3, spec_of(FilterKind::gaussian));
     EXPECT_EQ(film.resolve().at(1, 1), Color{});

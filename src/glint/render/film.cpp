@@ -52,14 +52,14 @@ BadSamples& BadSamples::operator+=(const BadSamples& o) {
     return *this;
 }
 
-bool is_valid_sample(Color c) {
-    return std::abs(c.r) < kMaxSampleValue && std::abs(c.g) < kMaxSampleValue &&
-           std::abs(c.b) < kMaxSampleValue;  // false for NaN too
-}
-
 FilmTile::FilmTile(const Tile& tile, int image_width, int image_height, const Filter& filter)
     : filter_(&filter),
       one_pixel_(filter.spec().kind == FilterKind::box && filter.radius() == 0.5f) {
+    if (one_pixel_) {
+        region_ = tile;
+        box_sums_.resize(std::size_t(width()) * std::size_t(region_.y1 - region_.y0));
+        return;
+    }
     const float r = filter.radius();
     const Span x = {reach(float(tile.x0), r).first, reach(float(tile.x1), r).last};
     const Span y = {reach(float(tile.y0), r).first, reach(float(tile.y1), r).last};
@@ -68,16 +68,7 @@ FilmTile::FilmTile(const Tile& tile, int image_width, int image_height, const Fi
     sums_.resize(std::size_t(width()) * std::size_t(region_.y1 - region_.y0));
 }
 
-void FilmTile::add_sample(Point2 p, Color c) {
-    if (one_pixel_) {
-        // The general path's result for this filter, in a few instructions: the one pixel
-        // whose span (i - 1/2, i + 1/2] holds p - 1/2 is floor(p), which truncation gives as
-        // film positions are not negative.
-        const int x = int(p.x), y = int(p.y);
-        if (x >= region_.x0 && x < region_.x1 && y >= region_.y0 && y < region_.y1)
-            add(sums_[std::size_t(y - region_.y0) * width() + std::size_t(x - region_.x0)], 1, c);
-        return;
-    }
+void FilmTile::splat(Point2 p, Color c) {
     const float r = filter_->radius();
     const Span xs = reach(p.x, r), ys = reach(p.y, r);
     const int x0 = std::max(xs.first, region_.x0), x1 = std::min(xs.last, region_.x1 - 1);
@@ -118,11 +109,11 @@ Film::Film(int width, int height, const FilterSpec& filter)
 void Film::merge(const FilmTile& tile) {
     const Tile& r = tile.region();
     if (one_pixel_) {
-        // Only the tile's own pixels have weight (its region reaches one pixel past it, which
-        // its samples never do), and no other tile's samples reach them: no lock.
+        // No other tile's samples reach these pixels: they are final, and need no lock.
         for (int y = r.y0; y < r.y1; ++y)
             for (int x = r.x0; x < r.x1; ++x)
-                if (tile.at(x, y).weight > 0) resolved_.at(x, y) = resolved(tile.at(x, y));
+                if (const BoxSum& s = tile.box_at(x, y); s.count > 0)
+                    resolved_.at(x, y) = s.sum / s.count;
         return;
     }
     const std::lock_guard lock(merge_mutex_);

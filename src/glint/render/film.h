@@ -1,9 +1,13 @@
 // The film: every pixel's sum of filter-weighted samples, its own and its neighbours' across
 // pixel and tile borders, resolved to an image. The sums are kept in fixed point, so that adding
 // is exact and the image is the same bit for bit whatever order the tiles, threads, passes or
-// machines add their samples in.
+// machines add their samples in. A box of radius 1/2 (Whitted's film) keeps each sample in its
+// own pixel, whose samples all arrive from one tile in sample order: plain float sums are as
+// deterministic there, and cheaper.
 #pragma once
 
+#include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <mutex>
 #include <optional>
@@ -39,13 +43,22 @@ struct BadSamples {
 inline constexpr float kMaxSampleValue = 0x1p30f;
 
 // Whether a sample may enter the film: finite, no channel beyond kMaxSampleValue either way.
-bool is_valid_sample(Color c);
+inline bool is_valid_sample(Color c) {
+    return std::abs(c.r) < kMaxSampleValue && std::abs(c.g) < kMaxSampleValue &&
+           std::abs(c.b) < kMaxSampleValue;  // false for NaN too
+}
 
 // An exact sum of weighted channel values, 2^-32 its unit.
 __extension__ using FixedSum = __int128;
 
 struct PixelSum {
     FixedSum r = 0, g = 0, b = 0, weight = 0;
+};
+
+// A pixel's sum under the one-pixel box: its samples, added in sample order, and their count.
+struct BoxSum {
+    Color sum;
+    float count = 0;
 };
 
 // One tile's private part of the film: the pixels its samples reach, which extend past the tile
@@ -57,20 +70,34 @@ public:
     // Adds sample c taken at film position p (pixels; p is inside the tile) to every pixel whose
     // centre lies within the filter's radius, weighted by the filter. c must be valid
     // (is_valid_sample).
-    void add_sample(Point2 p, Color c);
-
-    const Tile& region() const { return region_; }  // pixels covered, clipped to the image
-    const PixelSum& at(int x, int y) const {
-        return sums_[std::size_t(y - region_.y0) * width() + (x - region_.x0)];
+    void add_sample(Point2 p, Color c) {
+        if (!one_pixel_) return splat(p, c);
+        // The general path's result for this filter: the one pixel whose span (i - 1/2, i + 1/2]
+        // holds p - 1/2 is floor(p), which truncation gives as film positions are not negative
+        // (clamped: a jittered offset may round up to the next pixel's edge).
+        const int x = std::min(int(p.x), region_.x1 - 1), y = std::min(int(p.y), region_.y1 - 1);
+        BoxSum& s = box_sums_[std::size_t(y - region_.y0) * width() + std::size_t(x - region_.x0)];
+        s.sum += c;
+        s.count += 1;
     }
+
+    bool one_pixel() const { return one_pixel_; }
+    const Tile& region() const { return region_; }  // pixels covered, clipped to the image
+    const PixelSum& at(int x, int y) const { return sums_[index(x, y)]; }  // unless one_pixel()
+    const BoxSum& box_at(int x, int y) const { return box_sums_[index(x, y)]; }  // if one_pixel()
 
 private:
     int width() const { return region_.x1 - region_.x0; }
+    std::size_t index(int x, int y) const {
+        return std::size_t(y - region_.y0) * width() + std::size_t(x - region_.x0);
+    }
+    void splat(Point2 p, Color c);
 
     const Filter* filter_;
     bool one_pixel_;  // a box of radius 1/2: each sample adds to its own pixel with weight 1
-    Tile region_;
+    Tile region_;     // the tile itself for one_pixel_
     std::vector<PixelSum> sums_;
+    std::vector<BoxSum> box_sums_;  // instead of sums_ for one_pixel_
 };
 
 class Film {

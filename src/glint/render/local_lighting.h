@@ -18,8 +18,10 @@ namespace glint {
 // the surface or sends nothing this way.
 inline Color light_sample_term(ShadowFeelers& feelers, std::size_t light, const SurfaceContext& c,
                                const LightSample& ls, float time, RayStats& stats) {
-    // A light behind the surface adds nothing, so it needs no feeler.
-    if (dot(c.n, ls.to_light) <= 0 || is_black(ls.intensity)) return {};
+    // A light behind the surface adds nothing, so it needs no feeler. (The sum tells black
+    // apart in fewer instructions than is_black: channels are not negative.)
+    if (dot(c.n, ls.to_light) <= 0 || ls.intensity.r + ls.intensity.g + ls.intensity.b <= 0)
+        return {};
     const float shadow =
         feelers.transmittance(light, c.sp, c.ng, ls.to_light, ls.distance, time, stats);
     if (shadow == 0) return {};

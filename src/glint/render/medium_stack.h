@@ -6,6 +6,7 @@
 // medium of the same material.
 #pragma once
 
+#include <algorithm>
 #include <array>
 #include <cstdint>
 
@@ -17,6 +18,19 @@ struct MediumCrossing;
 
 class MediumStack {
 public:
+    // Vacuum. User-provided (not = default), so that a const stack needs no initialiser while
+    // the unused entries stay unwritten.
+    MediumStack() {}  // NOLINT(modernize-use-equals-default)
+    // Copies the media in use only: a ray crosses few, and refracted rays copy the stack.
+    MediumStack(const MediumStack& o) : size_(o.size_) {
+        std::copy_n(o.entries_.begin(), size_, entries_.begin());
+    }
+    MediumStack& operator=(const MediumStack& o) {
+        size_ = o.size_;
+        std::copy_n(o.entries_.begin(), size_, entries_.begin());
+        return *this;
+    }
+
     // The index of the medium the ray travels in.
     float ior() const { return size_ > 0 ? entries_[size_ - 1].ior : 1.0f; }
 
@@ -64,7 +78,7 @@ private:
             if (entries_[i].material == material) return i;
         return -1;
     }
-    std::array<Entry, kCapacity> entries_{};
+    std::array<Entry, kCapacity> entries_;  // the first size_ in use
     int size_ = 0;
 };
 

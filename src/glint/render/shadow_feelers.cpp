@@ -6,8 +6,7 @@ namespace glint {
 float ShadowFeelers::transmittance(std::size_t light, const SurfacePoint& sp, Normal3 n,
                                    Vector3 to_light, float light_distance, float time,
                                    RayStats& stats) {
-    Ray feeler = world_.spawn_ray(sp.p, n, to_light, sp.error);
-    feeler.time = time;
+    Ray feeler = world_.spawn_ray(sp.p, n, to_light, sp.error, time);
     // The offset origin is slightly nearer to or farther from the light; stop just short of it.
     float remaining = light_distance - distance(sp.p, feeler.origin);
     if (light == kNoLight) {
@@ -37,8 +36,8 @@ float ShadowFeelers::transmittance(std::size_t light, const SurfacePoint& sp, No
         if (factor == 0) return 0;
         // Continue from just beyond the surface crossed.
         const SurfacePoint crossed = world_.surface_at(feeler, *hit);
-        Ray next = world_.spawn_ray(crossed.p, crossed.normal, feeler.direction, crossed.error);
-        next.time = time;
+        const Ray next =
+            world_.spawn_ray(crossed.p, crossed.normal, feeler.direction, crossed.error, time);
         remaining -= distance(feeler.origin, next.origin);
         feeler = next;
     }

@@ -59,8 +59,7 @@ inline SurfaceContext surface_context(const World& world, const Ray& ray, const 
 // A secondary ray from the surface point in the unit direction d, at its parent's time and
 // wavelength.
 inline Ray spawn_from(const World& world, const SurfaceContext& c, const Ray& parent, Vector3 d) {
-    Ray r = world.spawn_ray(c.sp.p, c.ng, d, c.sp.error);
-    r.time = parent.time;
+    Ray r = world.spawn_ray(c.sp.p, c.ng, d, c.sp.error, parent.time);
     r.wavelength = parent.wavelength;
     return r;
 }

@@ -86,10 +86,10 @@ float World::ray_epsilon(Point3 p) const {
     return kRelativeRayEpsilon * std::max(scene_scale_, max_abs_coordinate(p));
 }
 
-Ray World::spawn_ray(Point3 p, Normal3 n, Vector3 d, float error) const {
+Ray World::spawn_ray(Point3 p, Normal3 n, Vector3 d, float error, float time) const {
     const float distance = std::max(ray_epsilon(p), 2 * error);
     const float offset = dot(n, d) >= 0 ? distance : -distance;
-    return {p + to_vector(n) * offset, d};
+    return {p + to_vector(n) * offset, d, time};
 }
 
 }  // namespace glint

@@ -73,8 +73,8 @@ public:
     float ray_epsilon(Point3 p) const;
     // A ray leaving the surface point p in the unit direction d, its origin moved off the
     // surface to the side d goes (given by the geometric normal n): by ray_epsilon(p), or by
-    // twice the point's own error when that is larger.
-    Ray spawn_ray(Point3 p, Normal3 n, Vector3 d, float error = 0) const;
+    // twice the point's own error when that is larger; traced at `time`.
+    Ray spawn_ray(Point3 p, Normal3 n, Vector3 d, float error = 0, float time = 0) const;
 
 private:
     void add_object_light(const SceneObject& object, std::uint32_t primitive);

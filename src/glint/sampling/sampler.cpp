@@ -162,14 +162,8 @@ Sampler::Sampler(SamplerKind kind, int samples_per_pixel, std::uint64_t seed)
     pixel_rows_ = g.rows;
 }
 
-Point2 Sampler::get_2d(std::uint64_t pixel, std::uint32_t index, std::uint32_t count,
-                       std::uint32_t dimension) const {
-    // regular_2d's pixel positions without the key or the grid worked out again.
-    if (kind_ == SamplerKind::regular && dimension == kPixelDimension &&
-        count == std::uint32_t(spp_)) {
-        return {(float(index % pixel_columns_) + 0.5f) / float(pixel_columns_),
-                (float(index / pixel_columns_) + 0.5f) / float(pixel_rows_)};
-    }
+Point2 Sampler::pattern_2d(std::uint64_t pixel, std::uint32_t index, std::uint32_t count,
+                           std::uint32_t dimension) const {
     const std::uint64_t key = pattern_key(seed_, pixel, dimension);
     switch (kind_) {
         case SamplerKind::regular:

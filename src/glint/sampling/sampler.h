@@ -50,17 +50,27 @@ public:
     // points sample * n + j of a pattern of samples_per_pixel * n points, so that they are
     // stratified across the pixel's samples together.
     Point2 get_2d(std::uint64_t pixel, std::uint32_t index, std::uint32_t count,
-                  std::uint32_t dimension) const;
+                  std::uint32_t dimension) const {
+        // regular_2d's pixel positions without the key or the grid worked out again: Whitted's
+        // eye rays ask for them every sample.
+        if (kind_ == SamplerKind::regular && dimension == kPixelDimension &&
+            count == std::uint32_t(spp_))
+            return {(float(index % pixel_columns_) + 0.5f) / float(pixel_columns_),
+                    (float(index / pixel_columns_) + 0.5f) / float(pixel_rows_)};
+        return pattern_2d(pixel, index, count, dimension);
+    }
     // The same in one dimension, over [0,1).
     float get_1d(std::uint64_t pixel, std::uint32_t index, std::uint32_t count,
                  std::uint32_t dimension) const;
 
 private:
+    Point2 pattern_2d(std::uint64_t pixel, std::uint32_t index, std::uint32_t count,
+                      std::uint32_t dimension) const;
+
     SamplerKind kind_;
     int spp_;
     std::uint64_t seed_;
-    // The grid of the regular pixel positions, worked out once: Whitted's eye rays ask for them
-    // every sample.
+    // The grid of the regular pixel positions, worked out once.
     std::uint32_t pixel_columns_, pixel_rows_;
 };
 

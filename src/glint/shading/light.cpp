@@ -12,18 +12,6 @@ namespace glint {
 
 namespace {
 
-Color attenuated(Color color, const Attenuation& a, float d) {
-    return color / (a.constant + d * (a.linear + d * a.quadratic));
-}
-
-// From p towards the point q of a light of the given colour.
-LightSample towards(Point3 p, Point3 q, Color color, const Attenuation& a) {
-    const Vector3 offset = q - p;
-    const float d = length(offset);
-    if (!(d > 0)) return {{0, 1, 0}, 0, Color{}};  // on the light itself: nothing to trace
-    return {offset / d, d, attenuated(color, a, d)};
-}
-
 // pbrt-v4's smoothstep of cos(angle) between the cone's edge and the falloff's start.
 float spot_factor(const SpotLight& light, Vector3 to_light) {
     const float c = -dot(to_light, light.direction);
@@ -70,10 +58,10 @@ struct AtCenter {
     Point3 p;
 
     LightSample operator()(const PointLight& light) const {
-        return towards(p, light.position, light.color, light.attenuation);
+        return light_from_point(p, light.position, light.color, light.attenuation);
     }
     LightSample operator()(const SpotLight& light) const {
-        LightSample s = towards(p, light.position, light.color, light.attenuation);
+        LightSample s = light_from_point(p, light.position, light.color, light.attenuation);
         s.intensity *= spot_factor(light, s.to_light);
         return s;
     }
@@ -81,17 +69,20 @@ struct AtCenter {
         return {-light.direction, kInfinity, light.color};
     }
     LightSample operator()(const AreaLight& light) const {
-        return towards(p, center_of(light), light.color, light.attenuation);
+        return light_from_point(p, center_of(light), light.color, light.attenuation);
     }
 };
 
 }  // namespace
 
-LightSample sample_light(const Light& light, Point3 p) { return std::visit(AtCenter{p}, light); }
+LightSample sample_light_at_center(const Light& light, Point3 p) {
+    return std::visit(AtCenter{p}, light);
+}
 
 LightSample sample_light(const Light& light, Point3 p, Point2 u) {
     if (const auto* area = std::get_if<AreaLight>(&light))
-        return towards(p, std::visit(DrawPoint{p, u}, area->shape), area->color, area->attenuation);
+        return light_from_point(p, std::visit(DrawPoint{p, u}, area->shape), area->color,
+                                area->attenuation);
     return sample_light(light, p);
 }
 

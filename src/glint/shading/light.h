@@ -77,9 +77,24 @@ struct LightSample {
     Color intensity;   // I_L, attenuated; black when the light does not shine this way
 };
 
+// What p receives from the point q of a light of the given colour: nothing when p is q.
+inline LightSample light_from_point(Point3 p, Point3 q, Color color, const Attenuation& a) {
+    const Vector3 offset = q - p;
+    const float d = length(offset);
+    if (!(d > 0)) return {{0, 1, 0}, 0, Color{}};  // on the light itself: nothing to trace
+    return {offset / d, d, color / (a.constant + d * (a.linear + d * a.quadratic))};
+}
+
+LightSample sample_light_at_center(const Light& light, Point3 p);
+
 // What p receives from the light as Whitted's ray tracer sees it: an area light acts as a point
-// light at its centre.
-LightSample sample_light(const Light& light, Point3 p);
+// light at its centre. Point lights, the most common, skip the dispatch over the kinds: this is
+// asked at every hit for every light.
+inline LightSample sample_light(const Light& light, Point3 p) {
+    if (const auto* point = std::get_if<PointLight>(&light))
+        return light_from_point(p, point->position, point->color, point->attenuation);
+    return sample_light_at_center(light, p);
+}
 // What p receives from a point of the light drawn from u in [0,1)^2; lights without an extent
 // ignore u.
 LightSample sample_light(const Light& light, Point3 p, Point2 u);
