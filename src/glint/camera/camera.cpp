@@ -78,14 +78,20 @@ Ray Camera::generate_ray(Point2 film, Point2 lens, float time) const {
     // Viewport to window: x from -1 (left) to 1 (right), y from 1 (top) to -1 (bottom).
     const float x = (2 * film.x / width_ - 1) * half_width_;
     const float y = (1 - 2 * film.y / height_) * half_height_;
-    Ray ray = projection_ == Projection::orthographic ? Ray{eye_ + x * u_ + y * v_, n_}
-                                                      : Ray{eye_, normalize(n_ + x * u_ + y * v_)};
+    // The pinhole ray, its direction 1 along n (u and v are perpendicular to n).
+    const bool orthographic = projection_ == Projection::orthographic;
+    const Point3 origin = orthographic ? eye_ + x * u_ + y * v_ : eye_;
+    const Vector3 direction = orthographic ? n_ : n_ + x * u_ + y * v_;
+    Ray ray;
     if (lens_radius_ > 0) {
-        // From a point of the aperture to where the pinhole ray meets the plane of focus.
-        const Point3 focus = ray.at(focus_distance_ / dot(ray.direction, n_));
+        // From a point of the aperture to where the pinhole ray meets the plane of focus: at
+        // focus_distance times its direction.
+        const Point3 focus = origin + direction * focus_distance_;
         const Point2 a = aperture_point(lens);
-        ray.origin = ray.origin + (a.x * u_ + a.y * v_) * lens_radius_;
+        ray.origin = origin + (a.x * u_ + a.y * v_) * lens_radius_;
         ray.direction = normalize(focus - ray.origin);
+    } else {
+        ray = {origin, orthographic ? direction : normalize(direction)};
     }
     ray.time = time;
     if (motion_) {

@@ -13,11 +13,12 @@ namespace glint {
 
 namespace {
 
+// The seed's part of every pattern's key, worked out once per sampler.
+std::uint64_t seed_key(std::uint64_t seed) { return mix64(seed + 0x9e3779b97f4a7c15ull); }
+
 // The key of one dimension's pattern in one pixel.
-std::uint64_t pattern_key(std::uint64_t seed, std::uint64_t pixel, std::uint32_t dimension) {
-    std::uint64_t h = mix64(seed + 0x9e3779b97f4a7c15ull);
-    h = mix64(h ^ pixel);
-    return mix64(h ^ (std::uint64_t(dimension) * 0x8cb92ba72f3d8dd7ull));
+std::uint64_t pattern_key(std::uint64_t seed_key, std::uint64_t pixel, std::uint32_t dimension) {
+    return mix64(mix64(seed_key ^ pixel) ^ (std::uint64_t(dimension) * 0x8cb92ba72f3d8dd7ull));
 }
 
 // A uniform float in [0, 1) from a key and an index.
@@ -30,8 +31,9 @@ float jitter(std::uint64_t key, std::uint32_t index) {
 // 2^bits), walked along its cycle until it lands inside [0, size).
 std::uint32_t permute(std::uint32_t i, std::uint32_t size, std::uint64_t key) {
     if (size <= 1) return 0;
-    const std::uint32_t mask = std::bit_ceil(size) - 1;
-    const int shift = std::max(1, std::popcount(mask) / 2);
+    const int bits = std::bit_width(size - 1);  // of the power-of-two range
+    const std::uint32_t mask = (std::uint32_t(1) << bits) - 1;
+    const int shift = std::max(1, bits / 2);
     const std::uint64_t k1 = mix64(key), k2 = mix64(k1);
     do {
         i = (i ^ std::uint32_t(k1)) & mask;
@@ -74,15 +76,16 @@ Point2 regular_2d(std::uint32_t index, std::uint32_t count, std::uint32_t dimens
 // Kensler's correlated multi-jitter: point s lies in cell (s mod m, s div m) of the m x n grid,
 // and inside it in the sub-cell that permutations of the rows and columns choose, so that the
 // points also stratify the m n x m n fine grid's rows and columns.
-Point2 jittered_2d(std::uint32_t index, std::uint32_t count, std::uint64_t key) {
-    const Grid g = grid_for(count);
+Point2 jittered_2d(std::uint32_t index, std::uint32_t count, Grid g, std::uint64_t key) {
     const std::uint32_t s = permute(index, count, key);
     const std::uint32_t column = s % g.columns, row = s / g.columns;
     const std::uint32_t sx = permute(column, g.columns, key ^ 0xa511e9b3a511e9b3ull);
     const std::uint32_t sy = permute(row, g.rows, key ^ 0x63d8359563d83595ull);
     const float jx = jitter(key ^ 0x1b873593ull, s), jy = jitter(key ^ 0xcc9e2d51ull, s);
-    const float x = (float(column) + (float(sy) + jx) / float(g.rows)) / float(g.columns);
-    const float y = (float(row) + (float(sx) + jy) / float(g.columns)) / float(g.rows);
+    // (column + (sy + jx) / rows) / columns with one division: the integers are exact in float.
+    const float n = float(g.columns * g.rows);
+    const float x = (float(column * g.rows + sy) + jx) / n;
+    const float y = (float(row * g.columns + sx) + jy) / n;
     // Rounding may reach 1 for the last cell; the contract is [0, 1).
     return {std::min(x, 0x1.fffffep-1f), std::min(y, 0x1.fffffep-1f)};
 }
@@ -156,7 +159,7 @@ bool is_valid_sample_count(SamplerKind kind, int samples_per_pixel) {
 }
 
 Sampler::Sampler(SamplerKind kind, int samples_per_pixel, std::uint64_t seed)
-    : kind_(kind), spp_(samples_per_pixel), seed_(seed) {
+    : kind_(kind), spp_(samples_per_pixel), seed_(seed), seed_key_(seed_key(seed)) {
     const Grid g = grid_for(std::uint32_t(std::max(samples_per_pixel, 1)));
     pixel_columns_ = g.columns;
     pixel_rows_ = g.rows;
@@ -164,12 +167,16 @@ Sampler::Sampler(SamplerKind kind, int samples_per_pixel, std::uint64_t seed)
 
 Point2 Sampler::pattern_2d(std::uint64_t pixel, std::uint32_t index, std::uint32_t count,
                            std::uint32_t dimension) const {
-    const std::uint64_t key = pattern_key(seed_, pixel, dimension);
+    const std::uint64_t key = pattern_key(seed_key_, pixel, dimension);
     switch (kind_) {
         case SamplerKind::regular:
             return regular_2d(index, count, dimension, key);
         case SamplerKind::jittered:
-            return jittered_2d(index, count, key);
+            // Most patterns have one point a sample: the pixel's grid, worked out once.
+            return jittered_2d(
+                index, count,
+                count == std::uint32_t(spp_) ? Grid{pixel_columns_, pixel_rows_} : grid_for(count),
+                key);
         case SamplerKind::sobol:
             return sobol_2d(index, key);
     }
@@ -178,7 +185,7 @@ Point2 Sampler::pattern_2d(std::uint64_t pixel, std::uint32_t index, std::uint32
 
 float Sampler::get_1d(std::uint64_t pixel, std::uint32_t index, std::uint32_t count,
                       std::uint32_t dimension) const {
-    const std::uint64_t key = pattern_key(seed_, pixel, dimension);
+    const std::uint64_t key = pattern_key(seed_key_, pixel, dimension);
     switch (kind_) {
         case SamplerKind::regular:
             return (float(permute(index, count, key)) + 0.5f) / float(count);

@@ -70,6 +70,7 @@ private:
     SamplerKind kind_;
     int spp_;
     std::uint64_t seed_;
+    std::uint64_t seed_key_;  // the seed's part of every pattern's key
     // The grid of the regular pixel positions, worked out once.
     std::uint32_t pixel_columns_, pixel_rows_;
 };

@@ -2,16 +2,20 @@
 #include "glint/shading/texture.h"
 
 #include <cmath>
+#include <cstdint>
 
 namespace glint {
 
 namespace {
 
-// Parity of one coordinate's cell index; floor() keeps the pattern regular across zero.
-// fmod(floor(x), 2) is exact for every float and stays defined where a cast to an integer would
-// overflow (huge coordinates over tiny squares); NaN counts as even.
+// Parity of one coordinate's cell index; floor() keeps the pattern regular across zero. The
+// integer's low bit where it fits in 64 bits (a library call less at every hit); beyond,
+// fmod(floor(x), 2), exact for every double and defined where the cast would overflow (huge
+// coordinates over tiny squares). NaN counts as even.
 bool odd_index(float x, float size) {
-    return std::abs(std::fmod(std::floor(double(x) / size), 2.0)) == 1.0;
+    const double cell = std::floor(double(x) / size);
+    if (std::abs(cell) < 0x1p62) return (std::int64_t(cell) & 1) != 0;
+    return std::abs(std::fmod(cell, 2.0)) == 1.0;
 }
 
 bool odd_cell(float a, float b, float c, float size) {
