@@ -26,6 +26,12 @@ float jitter(std::uint64_t key, std::uint32_t index) {
     return float(mix64(key ^ (std::uint64_t(index) * 0x632be59bd9b4e019ull)) >> 40) * 0x1.0p-24f;
 }
 
+// Two, from the two halves of one hash's 48 top bits.
+Point2 jitter_2d(std::uint64_t key, std::uint32_t index) {
+    const std::uint64_t h = mix64(key ^ (std::uint64_t(index) * 0x632be59bd9b4e019ull));
+    return {float(h >> 40) * 0x1.0p-24f, float((h >> 16) & 0xffffff) * 0x1.0p-24f};
+}
+
 // A permutation of [0, size) chosen by key: a keyed bijection of the smallest power-of-two range
 // that holds size (multiplication by an odd number and xor-shifts are both invertible modulo
 // 2^bits), walked along its cycle until it lands inside [0, size).
@@ -34,7 +40,9 @@ std::uint32_t permute(std::uint32_t i, std::uint32_t size, std::uint64_t key) {
     const int bits = std::bit_width(size - 1);  // of the power-of-two range
     const std::uint32_t mask = (std::uint32_t(1) << bits) - 1;
     const int shift = std::max(1, bits / 2);
-    const std::uint64_t k1 = mix64(key), k2 = mix64(k1);
+    // Two round keys from one hash: multiplying by an odd constant is a bijection that spreads
+    // k1's bits as well, at a fraction of a second hash's latency.
+    const std::uint64_t k1 = mix64(key), k2 = k1 * 0x9e3779b97f4a7c15ull;
     do {
         i = (i ^ std::uint32_t(k1)) & mask;
         i = (i * (std::uint32_t(k1 >> 32) | 1)) & mask;
@@ -81,11 +89,11 @@ Point2 jittered_2d(std::uint32_t index, std::uint32_t count, Grid g, std::uint64
     const std::uint32_t column = s % g.columns, row = s / g.columns;
     const std::uint32_t sx = permute(column, g.columns, key ^ 0xa511e9b3a511e9b3ull);
     const std::uint32_t sy = permute(row, g.rows, key ^ 0x63d8359563d83595ull);
-    const float jx = jitter(key ^ 0x1b873593ull, s), jy = jitter(key ^ 0xcc9e2d51ull, s);
+    const Point2 j = jitter_2d(key ^ 0x1b873593ull, s);
     // (column + (sy + jx) / rows) / columns with one division: the integers are exact in float.
     const float n = float(g.columns * g.rows);
-    const float x = (float(column * g.rows + sy) + jx) / n;
-    const float y = (float(row * g.columns + sx) + jy) / n;
+    const float x = (float(column * g.rows + sy) + j.x) / n;
+    const float y = (float(row * g.columns + sx) + j.y) / n;
     // Rounding may reach 1 for the last cell; the contract is [0, 1).
     return {std::min(x, 0x1.fffffep-1f), std::min(y, 0x1.fffffep-1f)};
 }
