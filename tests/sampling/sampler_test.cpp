@@ -200,6 +200,25 @@ TEST(SampleStream, HandsOutFreshDimensionsAfterTheReservedOnes) {
     EXPECT_EQ(stream.next_2d(), sampler.get_2d(0, 1, 4, kFirstFreeDimension + 2));
 }
 
+TEST(SampleStream, KeptPixelKeysGiveTheSameNumbers) {
+    // A pixel's kept keys only save work: every sample draws what it draws without them, in
+    // the kept dimensions and beyond, 2D and 1D, for every kind.
+    for (const SamplerKind kind :
+         {SamplerKind::jittered, SamplerKind::regular, SamplerKind::sobol}) {
+        const Sampler sampler(kind, 9, 5);
+        PixelPatterns pixel(sampler, 1234);
+        for (std::uint32_t s = 0; s < 9; ++s) {
+            SampleStream kept(pixel, s);
+            const SampleStream fresh(sampler, 1234, s);
+            for (const std::uint32_t d : {0u, 1u, 2u, 7u, 31u, 32u, 40u}) {
+                EXPECT_EQ(kept.get_2d(d), fresh.get_2d(d)) << int(kind) << " " << s << " " << d;
+                EXPECT_EQ(kept.get_2d(d, 2, 3), fresh.get_2d(d, 2, 3));
+                EXPECT_EQ(kept.get_1d(d), fresh.get_1d(d));
+            }
+        }
+    }
+}
+
 TEST(Sampler, NamesRoundTrip) {
     for (const std::string_view name : sampler_names()) EXPECT_TRUE(sampler_from_name(name));
     EXPECT_EQ(sampler_from_name("sobol"), SamplerKind::sobol);

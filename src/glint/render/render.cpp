@@ -63,6 +63,7 @@ void render_tile(const Tile& tile, const World& world, const Sampler& sampler, F
     for (int y = tile.y0; y < tile.y1; ++y)
         for (int x = tile.x0; x < tile.x1; ++x) {
             PixelError error;
+            PixelPatterns patterns(sampler, std::uint64_t(y) * std::uint64_t(width) + x);
             int s = 0;
             for (; s < sampler.samples_per_pixel(); ++s) {
                 // Adaptive sampling stops a pixel once its error is small enough; its samples
@@ -70,8 +71,7 @@ void render_tile(const Tile& tile, const World& world, const Sampler& sampler, F
                 if (settings.adaptive && s >= settings.adaptive->min_samples &&
                     error.relative_error() < settings.adaptive->threshold)
                     break;
-                SampleStream stream(sampler, std::uint64_t(y) * std::uint64_t(width) + x,
-                                    std::uint32_t(s));
+                SampleStream stream(patterns, std::uint32_t(s));
                 const Point2 offset = stream.get_2d(kPixelDimension);
                 const Point2 p{float(x) + offset.x, float(y) + offset.y};
                 // A pinhole and a closed shutter draw no numbers for the lens and the time.

@@ -32,17 +32,17 @@ Point2 jitter_2d(std::uint64_t key, std::uint32_t index) {
     return {float(h >> 40) * 0x1.0p-24f, float((h >> 16) & 0xffffff) * 0x1.0p-24f};
 }
 
-// A permutation of [0, size) chosen by key: a keyed bijection of the smallest power-of-two range
-// that holds size (multiplication by an odd number and xor-shifts are both invertible modulo
-// 2^bits), walked along its cycle until it lands inside [0, size).
-std::uint32_t permute(std::uint32_t i, std::uint32_t size, std::uint64_t key) {
+// A permutation of [0, size) chosen by a hashed key (PatternKeys): a keyed bijection of the
+// smallest power-of-two range that holds size (multiplication by an odd number and xor-shifts are
+// both invertible modulo 2^bits), walked along its cycle until it lands inside [0, size).
+std::uint32_t permute(std::uint32_t i, std::uint32_t size, std::uint64_t k1) {
     if (size <= 1) return 0;
     const int bits = std::bit_width(size - 1);  // of the power-of-two range
     const std::uint32_t mask = (std::uint32_t(1) << bits) - 1;
     const int shift = std::max(1, bits / 2);
-    // Two round keys from one hash: multiplying by an odd constant is a bijection that spreads
-    // k1's bits as well, at a fraction of a second hash's latency.
-    const std::uint64_t k1 = mix64(key), k2 = k1 * 0x9e3779b97f4a7c15ull;
+    // The second round key from the first: multiplying by an odd constant is a bijection that
+    // spreads k1's bits as well, at a fraction of a second hash's latency.
+    const std::uint64_t k2 = k1 * 0x9e3779b97f4a7c15ull;
     do {
         i = (i ^ std::uint32_t(k1)) & mask;
         i = (i * (std::uint32_t(k1 >> 32) | 1)) & mask;
@@ -72,11 +72,12 @@ Grid grid_for(std::uint32_t count) {
 }
 
 Point2 regular_2d(std::uint32_t index, std::uint32_t count, std::uint32_t dimension,
-                  std::uint64_t key) {
+                  const PatternKeys& keys) {
     const Grid g = grid_for(count);
     // The pixel position keeps scanline order (sample i in cell (i mod n, i div n)); the other
     // dimensions shuffle the cells, so that dimensions do not move in lockstep.
-    const std::uint32_t cell = dimension == kPixelDimension ? index : permute(index, count, key);
+    const std::uint32_t cell =
+        dimension == kPixelDimension ? index : permute(index, count, keys.cells);
     return {(float(cell % g.columns) + 0.5f) / float(g.columns),
             (float(cell / g.columns) + 0.5f) / float(g.rows)};
 }
@@ -84,12 +85,12 @@ Point2 regular_2d(std::uint32_t index, std::uint32_t count, std::uint32_t dimens
 // Kensler's correlated multi-jitter: point s lies in cell (s mod m, s div m) of the m x n grid,
 // and inside it in the sub-cell that permutations of the rows and columns choose, so that the
 // points also stratify the m n x m n fine grid's rows and columns.
-Point2 jittered_2d(std::uint32_t index, std::uint32_t count, Grid g, std::uint64_t key) {
-    const std::uint32_t s = permute(index, count, key);
+Point2 jittered_2d(std::uint32_t index, std::uint32_t count, Grid g, const PatternKeys& keys) {
+    const std::uint32_t s = permute(index, count, keys.cells);
     const std::uint32_t column = s % g.columns, row = s / g.columns;
-    const std::uint32_t sx = permute(column, g.columns, key ^ 0xa511e9b3a511e9b3ull);
-    const std::uint32_t sy = permute(row, g.rows, key ^ 0x63d8359563d83595ull);
-    const Point2 j = jitter_2d(key ^ 0x1b873593ull, s);
+    const std::uint32_t sx = permute(column, g.columns, keys.columns);
+    const std::uint32_t sy = permute(row, g.rows, keys.rows);
+    const Point2 j = jitter_2d(keys.key ^ 0x1b873593ull, s);
     // (column + (sy + jx) / rows) / columns with one division: the integers are exact in float.
     const float n = float(g.columns * g.rows);
     const float x = (float(column * g.rows + sy) + j.x) / n;
@@ -136,9 +137,9 @@ float to_unit(std::uint32_t x) { return float(x >> 8) * 0x1.0p-24f; }
 
 // Burley's shuffled scrambled Sobol: the index is Owen-scrambled too, which keeps every aligned
 // block of 2^k indices a (0,k,2)-net while decorrelating the dimensions.
-Point2 sobol_2d(std::uint32_t index, std::uint64_t key) {
-    const std::uint32_t i = nested_uniform_scramble(index, std::uint32_t(key));
-    const std::uint64_t k = mix64(key);
+Point2 sobol_2d(std::uint32_t index, const PatternKeys& keys) {
+    const std::uint32_t i = nested_uniform_scramble(index, std::uint32_t(keys.key));
+    const std::uint64_t k = keys.cells;
     return {to_unit(nested_uniform_scramble(sobol_0(i), std::uint32_t(k))),
             to_unit(nested_uniform_scramble(sobol_1(i), std::uint32_t(k >> 32)))};
 }
@@ -173,35 +174,39 @@ Sampler::Sampler(SamplerKind kind, int samples_per_pixel, std::uint64_t seed)
     pixel_rows_ = g.rows;
 }
 
-Point2 Sampler::pattern_2d(std::uint64_t pixel, std::uint32_t index, std::uint32_t count,
-                           std::uint32_t dimension) const {
+PatternKeys Sampler::pattern_keys(std::uint64_t pixel, std::uint32_t dimension) const {
     const std::uint64_t key = pattern_key(seed_key_, pixel, dimension);
+    return {key, mix64(key), mix64(key ^ 0xa511e9b3a511e9b3ull),
+            mix64(key ^ 0x63d8359563d83595ull)};
+}
+
+Point2 Sampler::pattern_2d(const PatternKeys& keys, std::uint32_t index, std::uint32_t count,
+                           std::uint32_t dimension) const {
     switch (kind_) {
         case SamplerKind::regular:
-            return regular_2d(index, count, dimension, key);
+            return regular_2d(index, count, dimension, keys);
         case SamplerKind::jittered:
             // Most patterns have one point a sample: the pixel's grid, worked out once.
             return jittered_2d(
                 index, count,
                 count == std::uint32_t(spp_) ? Grid{pixel_columns_, pixel_rows_} : grid_for(count),
-                key);
+                keys);
         case SamplerKind::sobol:
-            return sobol_2d(index, key);
+            return sobol_2d(index, keys);
     }
     return {0.5f, 0.5f};
 }
 
-float Sampler::get_1d(std::uint64_t pixel, std::uint32_t index, std::uint32_t count,
-                      std::uint32_t dimension) const {
-    const std::uint64_t key = pattern_key(seed_key_, pixel, dimension);
+float Sampler::get_1d(const PatternKeys& keys, std::uint32_t index, std::uint32_t count) const {
     switch (kind_) {
         case SamplerKind::regular:
-            return (float(permute(index, count, key)) + 0.5f) / float(count);
+            return (float(permute(index, count, keys.cells)) + 0.5f) / float(count);
         case SamplerKind::jittered:
-            return std::min((float(permute(index, count, key)) + jitter(key, index)) / float(count),
-                            0x1.fffffep-1f);
+            return std::min(
+                (float(permute(index, count, keys.cells)) + jitter(keys.key, index)) / float(count),
+                0x1.fffffep-1f);
         case SamplerKind::sobol:
-            return sobol_2d(index, key).x;
+            return sobol_2d(index, keys).x;
     }
     return 0.5f;
 }

@@ -3,6 +3,7 @@
 // seed), so an image does not depend on threads, tiles or machines (DESIGN principle 2).
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <optional>
 #include <span>
@@ -35,6 +36,12 @@ inline constexpr std::uint32_t kTimeDimension = 2;        // when in the shutter
 inline constexpr std::uint32_t kWavelengthDimension = 3;  // which wavelength (1D)
 inline constexpr std::uint32_t kFirstFreeDimension = 4;
 
+// The hashes that choose one dimension's pattern in one pixel: the key, and the keys of the
+// permutations of its cells, columns and rows. Every sample of the pixel needs the same ones.
+struct PatternKeys {
+    std::uint64_t key, cells, columns, rows;
+};
+
 class Sampler {
 public:
     // samples_per_pixel is the size of each dimension's pattern: the count the pixels take (or
@@ -51,20 +58,30 @@ public:
     // stratified across the pixel's samples together.
     Point2 get_2d(std::uint64_t pixel, std::uint32_t index, std::uint32_t count,
                   std::uint32_t dimension) const {
-        // regular_2d's pixel positions without the key or the grid worked out again: Whitted's
-        // eye rays ask for them every sample.
+        return get_2d(pattern_keys(pixel, dimension), index, count, dimension);
+    }
+    // The same in one dimension, over [0,1).
+    float get_1d(std::uint64_t pixel, std::uint32_t index, std::uint32_t count,
+                 std::uint32_t dimension) const {
+        return get_1d(pattern_keys(pixel, dimension), index, count);
+    }
+
+    // The same from the pattern's keys, worked out once for all of a pixel's samples.
+    PatternKeys pattern_keys(std::uint64_t pixel, std::uint32_t dimension) const;
+    Point2 get_2d(const PatternKeys& keys, std::uint32_t index, std::uint32_t count,
+                  std::uint32_t dimension) const {
+        // regular_2d's pixel positions without the grid worked out again: Whitted's eye rays
+        // ask for them every sample.
         if (kind_ == SamplerKind::regular && dimension == kPixelDimension &&
             count == std::uint32_t(spp_))
             return {(float(index % pixel_columns_) + 0.5f) / float(pixel_columns_),
                     (float(index / pixel_columns_) + 0.5f) / float(pixel_rows_)};
-        return pattern_2d(pixel, index, count, dimension);
+        return pattern_2d(keys, index, count, dimension);
     }
-    // The same in one dimension, over [0,1).
-    float get_1d(std::uint64_t pixel, std::uint32_t index, std::uint32_t count,
-                 std::uint32_t dimension) const;
+    float get_1d(const PatternKeys& keys, std::uint32_t index, std::uint32_t count) const;
 
 private:
-    Point2 pattern_2d(std::uint64_t pixel, std::uint32_t index, std::uint32_t count,
+    Point2 pattern_2d(const PatternKeys& keys, std::uint32_t index, std::uint32_t count,
                       std::uint32_t dimension) const;
 
     SamplerKind kind_;
@@ -75,10 +92,43 @@ private:
     std::uint32_t pixel_columns_, pixel_rows_;
 };
 
+// One pixel's pattern keys, each worked out when a sample first asks for it and kept for the
+// pixel's other samples: hashing them is much of what a sample's numbers cost. Not thread-safe:
+// one per pixel being rendered.
+class PixelPatterns {
+public:
+    PixelPatterns(const Sampler& sampler, std::uint64_t pixel)
+        : sampler_(&sampler), pixel_(pixel) {}
+
+    const Sampler& sampler() const { return *sampler_; }
+    std::uint64_t pixel() const { return pixel_; }
+
+    PatternKeys keys(std::uint32_t dimension) {
+        if (dimension >= kKept) return sampler_->pattern_keys(pixel_, dimension);
+        const std::uint32_t bit = std::uint32_t(1) << dimension;
+        if (!(known_ & bit)) {
+            keys_[dimension] = sampler_->pattern_keys(pixel_, dimension);
+            known_ |= bit;
+        }
+        return keys_[dimension];
+    }
+
+private:
+    static constexpr std::uint32_t kKept = 32;  // the first dimensions: all that most samples use
+
+    const Sampler* sampler_;
+    std::uint64_t pixel_;
+    std::uint32_t known_ = 0;  // bit d: keys_[d] is worked out
+    std::array<PatternKeys, kKept> keys_;
+};
+
 // One sample of one pixel: the camera's dimensions, and fresh dimensions handed out in the order
 // an integrator asks for them. Cheap to copy; allocates nothing.
 class SampleStream {
 public:
+    // With the pixel's kept keys (the render loop), or working out each key anew.
+    SampleStream(PixelPatterns& pixel, std::uint32_t index)
+        : sampler_(&pixel.sampler()), pixel_(pixel.pixel()), patterns_(&pixel), index_(index) {}
     SampleStream(const Sampler& sampler, std::uint64_t pixel, std::uint32_t index)
         : sampler_(&sampler), pixel_(pixel), index_(index) {}
 
@@ -87,11 +137,11 @@ public:
     // A reserved dimension (kPixelDimension, ...) of this sample.
     Point2 get_2d(std::uint32_t dimension) const { return get_2d(dimension, 0, 1); }
     float get_1d(std::uint32_t dimension) const {
-        return sampler_->get_1d(pixel_, index_, spp(), dimension);
+        return sampler_->get_1d(keys(dimension), index_, spp());
     }
     // Sub-sample j of n in one dimension (see Sampler::get_2d).
     Point2 get_2d(std::uint32_t dimension, std::uint32_t j, std::uint32_t n) const {
-        return sampler_->get_2d(pixel_, index_ * n + j, spp() * n, dimension);
+        return sampler_->get_2d(keys(dimension), index_ * n + j, spp() * n, dimension);
     }
 
     // A dimension of its own for the caller, different from every other one of this sample.
@@ -101,9 +151,13 @@ public:
 
 private:
     std::uint32_t spp() const { return std::uint32_t(sampler_->samples_per_pixel()); }
+    PatternKeys keys(std::uint32_t dimension) const {
+        return patterns_ ? patterns_->keys(dimension) : sampler_->pattern_keys(pixel_, dimension);
+    }
 
     const Sampler* sampler_;
     std::uint64_t pixel_;
+    PixelPatterns* patterns_ = nullptr;
     std::uint32_t index_;
     std::uint32_t next_ = kFirstFreeDimension;
 };
