@@ -166,6 +166,7 @@ int run_render(const RenderCommand& command) {
         RenderOptions options;
         options.threads = command.threads;
         options.seed = command.seed;
+        options.record_samples_taken = !command.samples_image.empty();
         RenderProgress progress;
         RenderResult result;
         {

@@ -7,6 +7,8 @@
 namespace glint {
 namespace {
 
+const RenderOptions kRecordSamples{.record_samples_taken = true};
+
 // A floor lit by a large area light, half of it behind a wall edge: the left of the image is a
 // flat background (no noise), the right a floor with a soft penumbra (noise).
 Scene half_noisy(int most, int fewest) {
@@ -34,7 +36,7 @@ Scene half_noisy(int most, int fewest) {
 }
 
 TEST(AdaptiveSampling, FlatPixelsStopAtTheFewestAndNoisyOnesTakeMore) {
-    const RenderResult r = render(World(half_noisy(256, 8)), {});
+    const RenderResult r = render(World(half_noisy(256, 8)), kRecordSamples);
     const Image& n = r.samples_taken;
     int fewest = 0, more = 0;
     for (int y = 0; y < n.height; ++y)
@@ -59,7 +61,7 @@ TEST(AdaptiveSampling, FlatPixelsStopAtTheFewestAndNoisyOnesTakeMore) {
 
 TEST(AdaptiveSampling, ImagesAndCountsDoNotDependOnThreads) {
     const World world(half_noisy(64, 4));
-    RenderOptions one, two;
+    RenderOptions one = kRecordSamples, two = kRecordSamples;
     one.threads = 1;
     two.threads = 2;
     two.tile_size = 8;
@@ -71,7 +73,7 @@ TEST(AdaptiveSampling, ImagesAndCountsDoNotDependOnThreads) {
 TEST(AdaptiveSampling, WithoutItEveryPixelTakesEverySample) {
     Scene scene = half_noisy(16, 4);
     scene.settings.adaptive.reset();
-    const RenderResult r = render(World(scene), {});
+    const RenderResult r = render(World(scene), kRecordSamples);
     for (const Color& c : r.samples_taken.pixels) EXPECT_EQ(c.r, 16);
 }
 

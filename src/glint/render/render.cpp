@@ -54,7 +54,7 @@ private:
 
 template <class Integrator>
 void render_tile(const Tile& tile, const World& world, const Sampler& sampler, Film& film,
-                 Image& samples_taken, TileTotals& totals) {
+                 Image* samples_taken, TileTotals& totals) {
     const Camera& camera = world.camera();
     const RenderSettings& settings = world.settings();
     const int width = settings.width;
@@ -89,7 +89,7 @@ void render_tile(const Tile& tile, const World& world, const Sampler& sampler, F
                     totals.bad.add({x, y, s});
                 }
             }
-            samples_taken.at(x, y) = Color::gray(float(s));
+            if (samples_taken) samples_taken->at(x, y) = Color::gray(float(s));
         }
     film.merge(film_tile);
 }
@@ -118,8 +118,9 @@ void render_tiles(const World& world, const RenderOptions& options, const std::v
                         continue;
                     }
                     TileTotals totals;
-                    render_tile<Integrator>(tiles[i], world, sampler, film, result.samples_taken,
-                                            totals);
+                    render_tile<Integrator>(
+                        tiles[i], world, sampler, film,
+                        options.record_samples_taken ? &result.samples_taken : nullptr, totals);
                     {
                         const std::lock_guard lock(totals_mutex);
                         result.rays += totals.rays;
@@ -143,7 +144,7 @@ RenderResult render(const World& world, const RenderOptions& options, RenderProg
 
     Film film(settings.width, settings.height, filter_of(settings));
     RenderResult result;
-    result.samples_taken = Image(settings.width, settings.height);
+    if (options.record_samples_taken) result.samples_taken = Image(settings.width, settings.height);
     switch (settings.integrator) {
         case IntegratorKind::whitted:
             render_tiles<WhittedIntegrator>(world, options, tiles, film, progress, result);

@@ -18,6 +18,7 @@ struct RenderOptions {
     int threads = 0;  // 0: all cores
     int tile_size = 16;
     std::uint64_t seed = 0;
+    bool record_samples_taken = false;  // fill RenderResult::samples_taken
 };
 
 // Shared with a watcher thread (a progress bar) while render() runs.
@@ -30,7 +31,8 @@ struct RenderProgress {
 
 struct RenderResult {
     Image image;
-    // Samples each pixel took, in every channel: the image of adaptive sampling's work.
+    // Samples each pixel took, in every channel: the image of adaptive sampling's work. Empty
+    // unless RenderOptions::record_samples_taken.
     Image samples_taken;
     RayStats rays;
     BadSamples bad_samples;
