@@ -81,10 +81,10 @@ public:
         s.count += 1;
     }
 
-    bool one_pixel() const { return one_pixel_; }
     const Tile& region() const { return region_; }  // pixels covered, clipped to the image
-    const PixelSum& at(int x, int y) const { return sums_[index(x, y)]; }  // unless one_pixel()
-    const BoxSum& box_at(int x, int y) const { return box_sums_[index(x, y)]; }  // if one_pixel()
+    // A pixel's sums: box_at for the one-pixel box, at for every other filter.
+    const PixelSum& at(int x, int y) const { return sums_[index(x, y)]; }
+    const BoxSum& box_at(int x, int y) const { return box_sums_[index(x, y)]; }
 
 private:
     int width() const { return region_.x1 - region_.x0; }
