@@ -48,7 +48,7 @@ void* allocate_large(std::size_t bytes, std::size_t alignment) {
     return ::operator new(bytes, std::align_val_t(alignment));
 }
 
-void deallocate_large(void* p, std::size_t bytes, std::size_t alignment) noexcept {
+void deallocate_large(void* p, [[maybe_unused]] std::size_t bytes, std::size_t alignment) noexcept {
 #ifdef GLINT_HUGE_PAGES
     if (on_huge_pages(bytes, alignment)) {
         munmap(p, round_up(bytes));
