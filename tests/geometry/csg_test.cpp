@@ -9,6 +9,7 @@
 #include <functional>
 #include <memory>
 #include <source_location>
+#include <vector>
 
 #include "glint/geometry/shape.h"
 #include "shape_property_checks.h"
@@ -278,6 +279,78 @@ Solid transformed(const Transform& world_from_object, const Solid& solid) {
     const Transform object_from_world = world_from_object.inverse();
     return {std::make_shared<const Shape>(Transformed{world_from_object, solid.shape}),
             [=](Point3 p) { return solid.inside(object_from_world(p)); }};
+}
+
+Solid half_space(Point3 point, Vector3 normal) {
+    const Normal3 n(normalize(normal));
+    return {std::make_shared<const Shape>(Plane{point, n}),
+            [=](Point3 p) { return dot(n, p - point) < 0; }};
+}
+
+// The operands joined by op in a balanced tree, as the scene loader joins a list.
+Solid balanced(CsgOperation op, const std::vector<Solid>& operands, std::size_t begin,
+               std::size_t end) {
+    if (end - begin == 1) return operands[begin];
+    const std::size_t middle = begin + (end - begin) / 2;
+    return combine(op, balanced(op, operands, begin, middle), balanced(op, operands, middle, end));
+}
+Solid balanced(CsgOperation op, const std::vector<Solid>& operands) {
+    return balanced(op, operands, 0, operands.size());
+}
+
+// The notes' convex polyhedra, "intersect planes only": a cube of six half-spaces.
+std::vector<Solid> cube_faces() {
+    return {half_space({1, 0, 0}, {1, 0, 0}), half_space({-1, 0, 0}, {-1, 0, 0}),
+            half_space({0, 1, 0}, {0, 1, 0}), half_space({0, -1, 0}, {0, -1, 0}),
+            half_space({0, 0, 1}, {0, 0, 1}), half_space({0, 0, -1}, {0, 0, -1})};
+}
+
+// Rays along z and along x over a grid, parallel to four of the cube's faces: they never cross
+// those, and where they pass inside them those operands must count as inside all along.
+void expect_axis_rays_match_membership(
+    const Solid& solid, const std::source_location where = std::source_location::current()) {
+    SCOPED_TRACE(::testing::Message() << "case at line " << where.line());
+    int disagreeing = 0;
+    for (int i = 0; i <= 20; ++i)
+        for (int j = 0; j <= 20; ++j) {
+            const float a = -1.55f + 0.155f * float(i), b = -1.55f + 0.155f * float(j);
+            for (const Ray& ray : {Ray{{a, b, -5}, {0, 0, 1}}, Ray{{-5, a, b}, {1, 0, 0}}}) {
+                const auto hit = intersect(*solid.shape, ray, {});
+                const auto change = first_change(solid, ray, 14);
+                if (hit.has_value() != change.has_value() ||
+                    (hit && std::abs(hit->t - *change) > 2e-3f))
+                    ++disagreeing;
+            }
+        }
+    EXPECT_EQ(disagreeing, 0);
+}
+
+TEST(Csg, OperandsARayNeverCrossesKeepTheirSide) {
+    const Solid cube = balanced(CsgOperation::intersection, cube_faces());
+    expect_matches_membership(cube);
+    expect_axis_rays_match_membership(cube);
+    // A cube of placed half-spaces: each face a plane through the origin, moved out along its
+    // normal.
+    std::vector<Solid> placed;
+    for (const Solid& face : cube_faces()) {
+        const Normal3 n = std::get<Plane>(*face.shape).normal;
+        placed.push_back(
+            transformed(Transform::translate(to_vector(n)), half_space({0, 0, 0}, to_vector(n))));
+    }
+    expect_axis_rays_match_membership(balanced(CsgOperation::intersection, placed));
+    // Every operation with a slab (two faces, a CSG shape of its own) as an operand: the ball
+    // cut by it, the ball merged with it, the slab minus the ball, and the cube minus a slab.
+    const Solid slab = combine(CsgOperation::intersection, cube_faces()[0], cube_faces()[1]);
+    // (A union keeps internal surfaces, where membership does not change: not compared.)
+    for (const CsgOperation op :
+         {CsgOperation::intersection, CsgOperation::merge, CsgOperation::difference}) {
+        expect_axis_rays_match_membership(combine(op, kBall, slab));
+        expect_axis_rays_match_membership(combine(op, slab, kBall));
+    }
+    const Solid thin_slab = combine(CsgOperation::intersection, half_space({0, 0.3f, 0}, {0, 1, 0}),
+                                    half_space({0, -0.3f, 0}, {0, -1, 0}));
+    expect_axis_rays_match_membership(combine(CsgOperation::difference, cube, thin_slab));
+    expect_matches_membership(combine(CsgOperation::difference, cube, thin_slab));
 }
 
 TEST(Csg, CappedCylindersAndConesAreOperands) {

@@ -44,6 +44,8 @@ std::optional<bool> marked_leaving(const Shape& shape, const ShapeHit& hit) {
     return std::nullopt;
 }
 
+bool inside_without_crossing(const Shape& shape, const Ray& ray, float t_min);
+
 // The next crossing at or after t_min. Whether the ray is inside before it follows from the
 // direction in which it crosses: leaving through the surface means it was inside.
 Crossing next_crossing(const Shape& shape, const Ray& ray, float t_min) {
@@ -53,15 +55,47 @@ Crossing next_crossing(const Shape& shape, const Ray& ray, float t_min) {
         const auto leaving = marked_leaving(shape, *c.hit);
         c.inside_before =
             leaving ? *leaving : dot(surface_at(shape, ray, *c.hit).normal, ray.direction) > 0;
-    } else if (const auto* plane = std::get_if<Plane>(&shape)) {
-        // A half-space the ray no longer crosses: inside when it heads inwards (from outside it
-        // would cross), whatever rounding says of a start on the plane; when parallel to the
-        // plane, inside when it runs below it.
-        const float along = dot(plane->normal, ray.direction);
-        c.inside_before =
-            along != 0 ? along < 0 : dot(plane->normal, ray.at(t_min) - plane->point) < 0;
+    } else {
+        c.inside_before = inside_without_crossing(shape, ray, t_min);
     }
     return c;
+}
+
+// Whether the ray is inside the shape from t_min on, where it crosses the shape's surface no
+// more. A bounded solid has then been left, or was never entered. The unbounded ones keep a
+// side: a half-space the one the ray heads to; a placed shape its shape's, along the ray in its
+// space; a CSG shape what its operation makes of its operands' sides there, each found from its
+// own next crossing (a CSG shape without crossings may have operands with some).
+bool inside_without_crossing(const Shape& shape, const Ray& ray, float t_min) {
+    if (const auto* plane = std::get_if<Plane>(&shape)) {
+        // Inside when the ray heads inwards (from outside it would cross), whatever rounding
+        // says of a start on the plane; when parallel to the plane, inside when it runs below.
+        const float along = dot(plane->normal, ray.direction);
+        return along != 0 ? along < 0 : dot(plane->normal, ray.at(t_min) - plane->point) < 0;
+    }
+    if (glint::bounds(shape).is_finite()) return false;
+    if (const auto* placed = std::get_if<Transformed>(&shape)) {
+        const ObjectRay o = to_object(placed->world_from_object(), ray);
+        return inside_without_crossing(*placed->shape, o.ray, t_min * o.scale);
+    }
+    if (const auto* moving = std::get_if<Moving>(&shape)) {
+        const ObjectRay o = to_object(moving->motion->at(ray.time), ray);
+        return inside_without_crossing(*moving->shape, o.ray, t_min * o.scale);
+    }
+    if (const auto* csg = std::get_if<Csg>(&shape)) {
+        const bool in_a = next_crossing(*csg->a, ray, t_min).inside_before;
+        const bool in_b = next_crossing(*csg->b, ray, t_min).inside_before;
+        switch (csg->operation) {
+            case CsgOperation::union_of:
+            case CsgOperation::merge:
+                return in_a || in_b;
+            case CsgOperation::intersection:
+                return in_a && in_b;
+            case CsgOperation::difference:
+                return in_a && !in_b;
+        }
+    }
+    return false;
 }
 
 // Whether a crossing of one operand lies on the result's surface, given whether the ray is

@@ -8,21 +8,12 @@
 
 namespace glint {
 
-namespace {
-
-struct ObjectRay {
-    Ray ray;
-    float scale;  // object-space t per world-space t
-};
-
 ObjectRay to_object(const Transform& world_from_object, const Ray& ray) {
     const Transform object_from_world = world_from_object.inverse();
     const Vector3 d = object_from_world(ray.direction);
     const float scale = length(d);
     return {{object_from_world(ray.origin), d / scale, ray.time, ray.wavelength}, scale};
 }
-
-}  // namespace
 
 Bounds3 Transformed::bounds() const {
     const Bounds3 b = glint::bounds(*shape);

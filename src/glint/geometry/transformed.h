@@ -35,6 +35,14 @@ struct Transformed {
     SurfacePoint surface_at(const Ray& ray, const ShapeHit& hit) const;
 };
 
+// A world-space ray in the space of an object placed by world_from_object: its direction
+// renormalised there, and the factor that turns world distances along it into object ones.
+struct ObjectRay {
+    Ray ray;
+    float scale;  // object-space t per world-space t
+};
+ObjectRay to_object(const Transform& world_from_object, const Ray& ray);
+
 // The intersection and the surface point of `shape` placed by world_from_object, as Transformed
 // computes them; for shapes whose placement changes from ray to ray (Moving).
 std::optional<ShapeHit> intersect_placed(const Shape& shape, const Transform& world_from_object,
