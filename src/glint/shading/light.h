@@ -85,6 +85,7 @@ inline LightSample light_from_point(Point3 p, Point3 q, Color color, const Atten
     return {offset / d, d, color / (a.constant + d * (a.linear + d * a.quadratic))};
 }
 
+// sample_light below for every kind of light.
 LightSample sample_light_at_center(const Light& light, Point3 p);
 
 // What p receives from the light as Whitted's ray tracer sees it: an area light acts as a point
@@ -95,6 +96,7 @@ inline LightSample sample_light(const Light& light, Point3 p) {
         return light_from_point(p, point->position, point->color, point->attenuation);
     return sample_light_at_center(light, p);
 }
+
 // What p receives from a point of the light drawn from u in [0,1)^2; lights without an extent
 // ignore u.
 LightSample sample_light(const Light& light, Point3 p, Point2 u);
