@@ -26,9 +26,11 @@ bool on_huge_pages(std::size_t bytes, std::size_t alignment) {
 }  // namespace
 
 void* allocate_large(std::size_t bytes, std::size_t alignment) {
+    // No object is larger than PTRDIFF_MAX bytes: refused here, in every build (a sanitizer's
+    // operator new aborts on such a size instead of throwing).
+    if (bytes > std::size_t(PTRDIFF_MAX)) throw std::bad_alloc();
 #ifdef GLINT_HUGE_PAGES
     if (on_huge_pages(bytes, alignment)) {
-        if (bytes > std::size_t(-1) - 2 * kHugePage) throw std::bad_alloc();
         const std::size_t size = round_up(bytes);
         // One huge page more than needed, so that a 2 MiB boundary lies in the first; the slack
         // on both sides goes back at once.
