@@ -36,17 +36,17 @@ import json
 import math
 import os
 import re
-import resource
 import shutil
-import subprocess
 import sys
 import time
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 REPO = os.path.dirname(os.path.dirname(HERE))
 sys.path.insert(0, HERE)
+sys.path.insert(0, os.path.dirname(HERE))  # bench/, for timing
 sys.dont_write_bytecode = True  # no __pycache__ in the source tree
 import images  # noqa: E402
+from timing import timed  # noqa: E402
 
 GLINT_SEED = 1
 GLINT_REFERENCE_SEED = 2  # another seed: the reference shares no samples with the sweep
@@ -82,22 +82,6 @@ def wait_for_idle(min_idle, patience):
         waited += 2.5
         idle = cpu_idle_share(0.5)
     return idle
-
-
-def timed(cmd, timeout, cwd):
-    """Runs cmd; returns its status, wall seconds, CPU seconds (user + system) and stderr."""
-    r0 = resource.getrusage(resource.RUSAGE_CHILDREN)
-    t0 = time.perf_counter()
-    try:
-        p = subprocess.run(cmd, cwd=cwd, capture_output=True, text=True, errors="replace",
-                           timeout=timeout)
-        status, stderr = ("ok" if p.returncode == 0 else "exit %d" % p.returncode), p.stderr
-    except subprocess.TimeoutExpired:
-        status, stderr = "timeout", ""
-    wall = time.perf_counter() - t0
-    r1 = resource.getrusage(resource.RUSAGE_CHILDREN)
-    cpu = (r1.ru_utime - r0.ru_utime) + (r1.ru_stime - r0.ru_stime)
-    return status, wall, cpu, stderr
 
 
 class Renders:

@@ -26,18 +26,18 @@ import glob
 import json
 import os
 import re
-import resource
 import shutil
-import subprocess
 import sys
 import time
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 REPO = os.path.dirname(os.path.dirname(HERE))
 sys.path.insert(0, HERE)
+sys.path.insert(0, os.path.dirname(HERE))  # bench/, for timing
 sys.dont_write_bytecode = True  # no __pycache__ in the source tree
 import compare  # noqa: E402
 import nff2pov  # noqa: E402
+from timing import timed  # noqa: E402
 
 # The shared data beside the repository, as ../shared/data is for the C++ benchmarks.
 DATA = os.path.join(os.path.dirname(REPO), "shared", "data", "spd")
@@ -95,23 +95,6 @@ def convert(nff, work):
     with open(meta_path, "w") as f:
         json.dump(meta, f)
     return pov, meta
-
-
-def timed(cmd, timeout, cwd=None):
-    """Runs cmd; returns its status, wall seconds, CPU seconds (user + system) and stderr. The
-    CPU time says less about speed but more about work done when other jobs share the cores."""
-    r0 = resource.getrusage(resource.RUSAGE_CHILDREN)
-    t0 = time.perf_counter()
-    try:
-        p = subprocess.run(cmd, cwd=cwd, capture_output=True, text=True, errors="replace",
-                           timeout=timeout)
-        status, stderr = ("ok" if p.returncode == 0 else "exit %d" % p.returncode), p.stderr
-    except subprocess.TimeoutExpired:
-        status, stderr = "timeout", ""
-    wall = time.perf_counter() - t0
-    r1 = resource.getrusage(resource.RUSAGE_CHILDREN)
-    cpu = (r1.ru_utime - r0.ru_utime) + (r1.ru_stime - r0.ru_stime)
-    return status, wall, cpu, stderr
 
 
 def pov_statistics(stderr):

@@ -1,0 +1,22 @@
+"""Timing a command as the renderer comparisons do: the whole process, wall and CPU time."""
+
+import resource
+import subprocess
+import time
+
+
+def timed(cmd, timeout, cwd=None):
+    """Runs cmd; returns its status, wall seconds, CPU seconds (user + system) and stderr. The
+    CPU time says less about speed but more about work done when other jobs share the cores."""
+    r0 = resource.getrusage(resource.RUSAGE_CHILDREN)
+    t0 = time.perf_counter()
+    try:
+        p = subprocess.run(cmd, cwd=cwd, capture_output=True, text=True, errors="replace",
+                           timeout=timeout)
+        status, stderr = ("ok" if p.returncode == 0 else "exit %d" % p.returncode), p.stderr
+    except subprocess.TimeoutExpired:
+        status, stderr = "timeout", ""
+    wall = time.perf_counter() - t0
+    r1 = resource.getrusage(resource.RUSAGE_CHILDREN)
+    cpu = (r1.ru_utime - r0.ru_utime) + (r1.ru_stime - r0.ru_stime)
+    return status, wall, cpu, stderr
