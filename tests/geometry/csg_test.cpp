@@ -477,5 +477,26 @@ TEST(Csg, MandelbulbOperandMatchesMembership) {
         options);
 }
 
+// Skipping uv reaches the sphere through every shape that holds others: CSG, a placement and a
+// motion, nested.
+TEST(Csg, WrappersPassOnWhetherUvIsWanted) {
+    const auto ball = std::make_shared<const Shape>(Sphere{{0, 0, 0}, 1});
+    const auto placed =
+        std::make_shared<const Shape>(Transformed{Transform::translate({0, 0, 5}), ball});
+    const auto moving = std::make_shared<const Shape>(
+        Moving{std::make_shared<const AnimatedTransform>(Transform::scale(2, 2, 2)), placed});
+    const Shape shape = Csg{CsgOperation::union_of, moving, ball};
+    const Ray ray{{0.5f, 0.5f, 20}, {0, 0, -1}};  // meets the moving sphere, at z = 10, first
+    const auto hit = intersect(shape, ray, {});
+    ASSERT_TRUE(hit);
+    const SurfacePoint with = surface_at(shape, ray, *hit, Uv::compute);
+    const SurfacePoint without = surface_at(shape, ray, *hit, Uv::skip);
+    EXPECT_NEAR(with.p.z, 10 + std::sqrt(3.5f), 1e-4f);  // 4 = 0.5 + (z - 10)^2
+    EXPECT_EQ(without.p, with.p);
+    EXPECT_EQ(without.normal, with.normal);
+    EXPECT_NE(with.uv, (Point2{0, 0}));
+    EXPECT_EQ(without.uv, (Point2{0, 0}));
+}
+
 }  // namespace
 }  // namespace glint

@@ -69,6 +69,20 @@ TEST(Sphere, UvRunsAroundTheEquatorAndFromPoleToPole) {
     EXPECT_NEAR(uv_at({0, -1, 0}).y, 0, 1e-6);
 }
 
+TEST(Sphere, SkippingUvChangesNothingElse) {
+    const Sphere sphere{{1, 2, 3}, 2};
+    const Ray ray{{4, 5, -6}, normalize(Vector3{-0.3f, -0.2f, 1})};
+    const auto hit = sphere.intersect(ray, {});
+    ASSERT_TRUE(hit);
+    const SurfacePoint with = sphere.surface_at(ray, *hit, Uv::compute);
+    const SurfacePoint without = sphere.surface_at(ray, *hit, Uv::skip);
+    EXPECT_EQ(without.p, with.p);
+    EXPECT_EQ(without.normal, with.normal);
+    EXPECT_EQ(without.shading_normal, with.shading_normal);
+    EXPECT_NE(with.uv, (Point2{0, 0}));
+    EXPECT_EQ(without.uv, (Point2{0, 0}));
+}
+
 TEST(Sphere, BoundsEncloseTheSphere) {
     const Bounds3 b = Sphere{{1, 2, 3}, 0.5f}.bounds();
     EXPECT_EQ(b.min, (Point3{0.5f, 1.5f, 2.5f}));

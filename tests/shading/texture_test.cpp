@@ -42,5 +42,13 @@ TEST(Texture, UvCheckerUsesTextureCoordinates) {
     EXPECT_EQ(evaluate(checker, at({9, 9, 9}, {0.3f, 0.3f})), kWhite);
 }
 
+TEST(Texture, OnlyUvCheckersAndImagesNeedUv) {
+    EXPECT_EQ(uv_needed(Color{1, 1, 1}), Uv::skip);
+    EXPECT_EQ(uv_needed(CheckerTexture{kWhite, kBlack, 1, CheckerSpace::solid}), Uv::skip);
+    EXPECT_EQ(uv_needed(CheckerTexture{kWhite, kBlack, 1, CheckerSpace::uv}), Uv::compute);
+    EXPECT_EQ(uv_needed(ImageTexture{}), Uv::compute);
+    EXPECT_EQ(uv_needed(NoiseTexture{}), Uv::skip);
+}
+
 }  // namespace
 }  // namespace glint

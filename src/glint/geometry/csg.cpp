@@ -163,11 +163,11 @@ std::optional<ShapeHit> Csg::intersect(const Ray& ray, Interval t_range) const {
     return std::nullopt;
 }
 
-SurfacePoint Csg::surface_at(const Ray& ray, const ShapeHit& hit) const {
+SurfacePoint Csg::surface_at(const Ray& ray, const ShapeHit& hit, Uv uv) const {
     const std::uint64_t bits = hit.csg_path & 3;
     ShapeHit operand_hit = hit;
     operand_hit.csg_path = hit.csg_path >> 2;
-    SurfacePoint sp = glint::surface_at((bits & kFromB) ? *b : *a, ray, operand_hit);
+    SurfacePoint sp = glint::surface_at((bits & kFromB) ? *b : *a, ray, operand_hit, uv);
     if (bits & kFlipped) {
         sp.normal = -sp.normal;
         sp.shading_normal = -sp.shading_normal;

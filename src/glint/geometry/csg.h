@@ -32,7 +32,7 @@ struct Csg {
     std::optional<ShapeHit> intersect(const Ray& ray, Interval t_range) const;
     // The operand's surface point, with the normal turned around where the operation turns
     // the operand inside out (b in a difference), so that normals always point out of the result.
-    SurfacePoint surface_at(const Ray& ray, const ShapeHit& hit) const;
+    SurfacePoint surface_at(const Ray& ray, const ShapeHit& hit, Uv uv = Uv::compute) const;
 };
 
 // Each level takes two bits of ShapeHit::csg_path, and intersect() and surface_at() recurse once

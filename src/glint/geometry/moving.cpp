@@ -19,8 +19,8 @@ std::optional<ShapeHit> Moving::intersect(const Ray& ray, Interval t_range) cons
     return intersect_placed(*shape, motion->at(ray.time), ray, t_range);
 }
 
-SurfacePoint Moving::surface_at(const Ray& ray, const ShapeHit& hit) const {
-    return surface_at_placed(*shape, motion->at(ray.time), ray, hit);
+SurfacePoint Moving::surface_at(const Ray& ray, const ShapeHit& hit, Uv uv) const {
+    return surface_at_placed(*shape, motion->at(ray.time), ray, hit, uv);
 }
 
 }  // namespace glint

@@ -26,7 +26,7 @@ struct Moving {
     Bounds3 bounds() const { return swept; }
     // As Transformed does, with the transform at ray.time.
     std::optional<ShapeHit> intersect(const Ray& ray, Interval t_range) const;
-    SurfacePoint surface_at(const Ray& ray, const ShapeHit& hit) const;
+    SurfacePoint surface_at(const Ray& ray, const ShapeHit& hit, Uv uv = Uv::compute) const;
 };
 
 }  // namespace glint

@@ -43,8 +43,17 @@ inline std::optional<ShapeHit> intersect(const Shape& shape, const Ray& ray, Int
     return std::visit([&](const auto& s) { return s.intersect(ray, t_range); }, shape);
 }
 
-inline SurfacePoint surface_at(const Shape& shape, const Ray& ray, const ShapeHit& hit) {
-    return std::visit([&](const auto& s) { return s.surface_at(ray, hit); }, shape);
+// Shapes whose uv is cheap take no Uv and always compute it.
+inline SurfacePoint surface_at(const Shape& shape, const Ray& ray, const ShapeHit& hit,
+                               Uv uv = Uv::compute) {
+    return std::visit(
+        [&](const auto& s) {
+            if constexpr (requires { s.surface_at(ray, hit, uv); })
+                return s.surface_at(ray, hit, uv);
+            else
+                return s.surface_at(ray, hit);
+        },
+        shape);
 }
 
 std::string_view shape_name(const Shape& shape);

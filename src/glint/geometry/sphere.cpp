@@ -33,13 +33,14 @@ std::optional<ShapeHit> Sphere::intersect(const Ray& ray, Interval t_range) cons
     return std::nullopt;
 }
 
-SurfacePoint Sphere::surface_at(const Ray& ray, const ShapeHit& hit) const {
+SurfacePoint Sphere::surface_at(const Ray& ray, const ShapeHit& hit, Uv uv) const {
     // 7. S = P0 + t R and 8. N = (S - M) / r. N is normalised and S projected back onto the
     // sphere, which removes the rounding error of t along the ray.
     const Vector3 unit = normalize(ray.at(hit.t) - center);
     SurfacePoint sp;
     sp.p = center + unit * radius;
     sp.normal = sp.shading_normal = Normal3(unit);
+    if (uv == Uv::skip) return sp;
     const float phi = std::atan2(-unit.z, unit.x);
     sp.uv = {(phi < 0 ? phi + 2 * kPi : phi) / (2 * kPi),
              std::acos(std::clamp(-unit.y, -1.0f, 1.0f)) / kPi};

@@ -19,7 +19,7 @@ struct Sphere {
     std::optional<ShapeHit> intersect(const Ray& ray, Interval t_range) const;
     // uv: u = longitude / 2pi around +y from +x, v = latitude from the south pole (0) to the
     // north pole (1).
-    SurfacePoint surface_at(const Ray& ray, const ShapeHit& hit) const;
+    SurfacePoint surface_at(const Ray& ray, const ShapeHit& hit, Uv uv = Uv::compute) const;
 };
 
 }  // namespace glint

@@ -18,6 +18,10 @@ struct ShapeHit {
     std::uint64_t csg_path = 0;
 };
 
+// Whether surface_at() computes SurfacePoint::uv. Most materials never read it, and it costs the
+// sphere an arc tangent and an arc cosine at every hit; skipped, uv is (0, 0).
+enum class Uv : bool { skip, compute };
+
 struct SurfacePoint {
     Point3 p;
     // Unit geometric normal. On closed shapes it points outwards; on open ones (planes,

@@ -27,8 +27,8 @@ std::optional<ShapeHit> Transformed::intersect(const Ray& ray, Interval t_range)
     return intersect_placed(*shape, world_from_object(), ray, t_range);
 }
 
-SurfacePoint Transformed::surface_at(const Ray& ray, const ShapeHit& hit) const {
-    return surface_at_placed(*shape, world_from_object(), ray, hit);
+SurfacePoint Transformed::surface_at(const Ray& ray, const ShapeHit& hit, Uv uv) const {
+    return surface_at_placed(*shape, world_from_object(), ray, hit, uv);
 }
 
 std::optional<ShapeHit> intersect_placed(const Shape& shape, const Transform& world_from_object,
@@ -53,11 +53,11 @@ std::optional<ShapeHit> intersect_placed(const Shape& shape, const Transform& wo
 }
 
 SurfacePoint surface_at_placed(const Shape& shape, const Transform& world_from_object,
-                               const Ray& ray, const ShapeHit& hit) {
+                               const Ray& ray, const ShapeHit& hit, Uv uv) {
     const ObjectRay o = to_object(world_from_object, ray);
     ShapeHit object_hit = hit;
     object_hit.t = hit.t * o.scale;
-    SurfacePoint sp = glint::surface_at(shape, o.ray, object_hit);
+    SurfacePoint sp = glint::surface_at(shape, o.ray, object_hit, uv);
     sp.p = world_from_object(sp.p);
     sp.normal = normalize(world_from_object(sp.normal));
     sp.shading_normal = normalize(world_from_object(sp.shading_normal));

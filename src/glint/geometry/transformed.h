@@ -32,7 +32,7 @@ struct Transformed {
     // directions); t is scaled back, so hits are in world distances.
     std::optional<ShapeHit> intersect(const Ray& ray, Interval t_range) const;
     // The object's surface point mapped to world space: normals by the inverse transpose.
-    SurfacePoint surface_at(const Ray& ray, const ShapeHit& hit) const;
+    SurfacePoint surface_at(const Ray& ray, const ShapeHit& hit, Uv uv = Uv::compute) const;
 };
 
 // A world-space ray in the space of an object placed by world_from_object: its direction
@@ -48,6 +48,6 @@ ObjectRay to_object(const Transform& world_from_object, const Ray& ray);
 std::optional<ShapeHit> intersect_placed(const Shape& shape, const Transform& world_from_object,
                                          const Ray& ray, Interval t_range);
 SurfacePoint surface_at_placed(const Shape& shape, const Transform& world_from_object,
-                               const Ray& ray, const ShapeHit& hit);
+                               const Ray& ray, const ShapeHit& hit, Uv uv = Uv::compute);
 
 }  // namespace glint

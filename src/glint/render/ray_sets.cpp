@@ -86,7 +86,7 @@ RaySets make_ray_sets(const World& world, std::size_t count, std::uint64_t seed)
             const Ray& ray = primary.rays[i];
             const auto hit = world.intersect(ray, {}, kVisibleToCameraRays);
             if (!hit) continue;
-            const SurfacePoint sp = world.surface_at(ray, *hit);
+            const SurfacePoint sp = world.surface_at(ray, *hit, Uv::skip);
             found[i] =
                 SurfaceStart{sp.p, sp.normal, face_forward(sp.normal, -ray.direction), sp.error};
         }

@@ -35,7 +35,7 @@ float ShadowFeelers::transmittance(std::size_t light, const SurfacePoint& sp, No
         factor *= world_.material_of(hit->primitive).transmit;
         if (factor == 0) return 0;
         // Continue from just beyond the surface crossed.
-        const SurfacePoint crossed = world_.surface_at(feeler, *hit);
+        const SurfacePoint crossed = world_.surface_at(feeler, *hit, Uv::skip);
         const Ray next =
             world_.spawn_ray(crossed.p, crossed.normal, feeler.direction, crossed.error, time);
         remaining -= distance(feeler.origin, next.origin);

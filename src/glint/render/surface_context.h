@@ -33,10 +33,10 @@ struct SurfaceContext {
 // shading one (smooth for meshes) enters the formulas.
 inline SurfaceContext surface_context(const World& world, const Ray& ray, const Hit& hit) {
     SurfaceContext c;
-    c.sp = world.surface_at(ray, hit);
     c.primitive = hit.primitive;
     c.material = &world.material_of(hit.primitive);
     const Material& m = *c.material;
+    c.sp = world.surface_at(ray, hit, uv_needed(m.color));
     c.color = evaluate(m.color, c.sp);
     c.reflect = m.reflect;
     c.roughness = m.roughness;

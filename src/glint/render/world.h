@@ -60,8 +60,8 @@ public:
     bool occluded_towards(std::size_t light, const Ray& ray, Interval t_range,
                           std::uint32_t& last_occluder) const;
 
-    SurfacePoint surface_at(const Ray& ray, const Hit& hit) const {
-        return glint::surface_at(primitives_[hit.primitive].shape, ray, hit.shape_hit);
+    SurfacePoint surface_at(const Ray& ray, const Hit& hit, Uv uv = Uv::compute) const {
+        return glint::surface_at(primitives_[hit.primitive].shape, ray, hit.shape_hit, uv);
     }
     const Material& material_of(std::uint32_t primitive) const {
         return materials_[material_of_[primitive]];

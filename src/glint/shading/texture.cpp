@@ -38,7 +38,7 @@ struct Evaluate {
 
 }  // namespace
 
-Color evaluate(const Texture& texture, const SurfacePoint& sp) {
+Color evaluate_pattern(const Texture& texture, const SurfacePoint& sp) {
     return std::visit(Evaluate{sp}, texture);
 }
 

@@ -23,6 +23,23 @@ struct CheckerTexture {
 
 using Texture = std::variant<Color, CheckerTexture, ImageTexture, NoiseTexture>;
 
-Color evaluate(const Texture& texture, const SurfacePoint& sp);
+// evaluate() for the kinds other than a constant colour.
+Color evaluate_pattern(const Texture& texture, const SurfacePoint& sp);
+
+// The texture's colour at sp. A constant colour, the most common, skips the dispatch: this is
+// asked at every hit.
+inline Color evaluate(const Texture& texture, const SurfacePoint& sp) {
+    if (const auto* color = std::get_if<Color>(&texture)) return *color;
+    return evaluate_pattern(texture, sp);
+}
+
+// Whether evaluate() reads the surface point's uv: a checker on the surface or an image.
+inline Uv uv_needed(const Texture& texture) {
+    const auto* checker = std::get_if<CheckerTexture>(&texture);
+    return (checker && checker->space == CheckerSpace::uv) ||
+                   std::holds_alternative<ImageTexture>(texture)
+               ? Uv::compute
+               : Uv::skip;
+}
 
 }  // namespace glint
