@@ -70,13 +70,18 @@ public:
     PatternKeys pattern_keys(std::uint64_t pixel, std::uint32_t dimension) const;
     Point2 get_2d(const PatternKeys& keys, std::uint32_t index, std::uint32_t count,
                   std::uint32_t dimension) const {
-        // regular_2d's pixel positions without the grid worked out again: Whitted's eye rays
-        // ask for them every sample.
-        if (kind_ == SamplerKind::regular && dimension == kPixelDimension &&
-            count == std::uint32_t(spp_))
-            return {(float(index % pixel_columns_) + 0.5f) / float(pixel_columns_),
-                    (float(index / pixel_columns_) + 0.5f) / float(pixel_rows_)};
+        if (on_regular_pixel_grid(dimension, count)) return regular_pixel_position(index);
         return pattern_2d(keys, index, count, dimension);
+    }
+    // Whether get_2d() gives the regular sampler's pixel positions, which need no keys: Whitted's
+    // eye rays ask for them every sample, and they are worked out here without the grid again.
+    bool on_regular_pixel_grid(std::uint32_t dimension, std::uint32_t count) const {
+        return kind_ == SamplerKind::regular && dimension == kPixelDimension &&
+               count == std::uint32_t(spp_);
+    }
+    Point2 regular_pixel_position(std::uint32_t index) const {
+        return {(float(index % pixel_columns_) + 0.5f) / float(pixel_columns_),
+                (float(index / pixel_columns_) + 0.5f) / float(pixel_rows_)};
     }
     float get_1d(const PatternKeys& keys, std::uint32_t index, std::uint32_t count) const;
 
@@ -141,7 +146,10 @@ public:
     }
     // Sub-sample j of n in one dimension (see Sampler::get_2d).
     Point2 get_2d(std::uint32_t dimension, std::uint32_t j, std::uint32_t n) const {
-        return sampler_->get_2d(keys(dimension), index_ * n + j, spp() * n, dimension);
+        const std::uint32_t index = index_ * n + j, count = spp() * n;
+        if (sampler_->on_regular_pixel_grid(dimension, count))
+            return sampler_->regular_pixel_position(index);  // without working out keys
+        return sampler_->get_2d(keys(dimension), index, count, dimension);
     }
 
     // A dimension of its own for the caller, different from every other one of this sample.
