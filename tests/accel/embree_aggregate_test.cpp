@@ -11,6 +11,7 @@
 #include <random>
 #include <vector>
 
+#include "common/under_sanitizer.h"
 #include "glint/accel/make_aggregate.h"
 #include "glint/accel/primitive_list.h"
 
@@ -103,7 +104,9 @@ TEST(EmbreeAggregate, AgreesWithBruteForceOnRandomScenes) {
         std::mt19937 rng(seed + 100);
         std::uniform_real_distribution<float> u(-1, 1);
         int hits = 0, edge_cases = 0, ties = 0, mesh_hits = 0;
-        for (int i = 0; i < 4000; ++i) {
+        // The brute-force list is slow under the sanitizers (220 s for all the rays).
+        const int rays = testing::kUnderSanitizer ? 400 : 4000;
+        for (int i = 0; i < rays; ++i) {
             Vector3 d{u(rng), u(rng), u(rng)};
             if (i % 10 == 0) d = {0, 0, u(rng) < 0 ? -1.0f : 1.0f};  // axis-parallel
             if (length_squared(d) < 1e-4f) continue;
@@ -159,8 +162,8 @@ TEST(EmbreeAggregate, AgreesWithBruteForceOnRandomScenes) {
             const bool occluded = embree.occluded(ray, segment, kVisibleToShadowRays);
             if (occluded != list.occluded(ray, segment, kVisibleToShadowRays)) ++edge_cases;
         }
-        EXPECT_GT(hits, 3000);
-        EXPECT_GT(mesh_hits, 100);
+        EXPECT_GT(hits, rays * 3 / 4);
+        EXPECT_GT(mesh_hits, rays / 40);
         EXPECT_LE(edge_cases, 8) << "seed " << seed;  // about one ray in a thousand at most
         EXPECT_LE(ties, hits / 100) << "seed " << seed;
     }

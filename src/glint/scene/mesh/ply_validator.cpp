@@ -321,22 +321,24 @@ private:
                         " is missing (is the header's count of " + e.name + " entries right?)");
             }
             const Token& t = tokens[k++];
-            const auto value = is_float(type) ? parse_float(t.text) : std::optional<float>{};
-            const auto integer =
-                is_float(type) ? std::optional<long long>{} : parse_integer(t.text);
-            if (is_float(type) ? !value : !integer) {
-                throw lines_.error_at(n, t.column, int(t.text.size()),
-                                      std::string("expected ") +
-                                          (is_float(type) ? "a number" : "an integer") + " for " +
-                                          what + ", got \"" + std::string(t.text) + "\"");
+            const auto error = [&](const std::string& message) {
+                return lines_.error_at(n, t.column, int(t.text.size()), message);
+            };
+            const auto expected = [&](const char* kind) {
+                return error(std::string("expected ") + kind + " for " + what + ", got \"" +
+                             std::string(t.text) + "\"");
+            };
+            if (is_float(type)) {
+                const auto value = parse_float(t.text);
+                if (!value) throw expected("a number");
+                if (!std::isfinite(*value))
+                    throw error(e.name + " " + std::to_string(entry) +
+                                " has a value that is not finite: \"" + std::string(t.text) + "\"");
+                return {double(*value), &t};
             }
-            if (value && !std::isfinite(*value)) {
-                throw lines_.error_at(n, t.column, int(t.text.size()),
-                                      e.name + " " + std::to_string(entry) +
-                                          " has a value that is not finite: \"" +
-                                          std::string(t.text) + "\"");
-            }
-            return {value ? double(*value) : double(*integer), &t};
+            const auto integer = parse_integer(t.text);
+            if (!integer) throw expected("an integer");
+            return {double(*integer), &t};
         };
         for (const PlyProperty& p : e.properties) {
             if (!p.is_list) {
