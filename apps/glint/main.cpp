@@ -1,6 +1,7 @@
 // The glint command-line tool: `glint render SCENE` and `glint bench SCENE`, with --help and
 // --version.
 #include <CLI/CLI.hpp>
+#include <csignal>
 #include <cstdint>
 #include <cstdio>
 #include <limits>
@@ -82,6 +83,9 @@ void add_render_command(CLI::App& app, glint::cli::RenderCommand& c) {
 }  // namespace
 
 int main(int argc, char** argv) {
+    // Under a file-size limit (ulimit -f) a write beyond it then fails with EFBIG, which glint
+    // reports, leaving the previous file intact, instead of the signal killing glint.
+    std::signal(SIGXFSZ, SIG_IGN);
     CLI::App app{
         "glint: a ray tracer that renders the classic algorithms as the textbooks "
         "state them"};

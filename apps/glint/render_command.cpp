@@ -7,12 +7,12 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
 #include <new>
 #include <string>
 #include <utility>
 
 #include "glint/image/atomic_file.h"
+#include "glint/image/file_io.h"
 #include "glint/image/image_error.h"
 #include "glint/image/image_io.h"
 #include "glint/render/render.h"
@@ -128,9 +128,9 @@ void write_samples_image(const std::string& file, Image counts, int most) {
 
 void write_stats(const std::string& file, const std::string& json) {
     write_file_atomically(file, [&](const std::filesystem::path& temporary) {
-        std::ofstream out(temporary, std::ios::binary);
-        out << json;
-        if (!out.flush()) throw ImageError(file + ": cannot write statistics");
+        UniqueFile out = open_file(temporary, "wb");
+        write_bytes(out.get(), json.data(), json.size(), temporary);
+        close_written_file(std::move(out), temporary);
     });
 }
 

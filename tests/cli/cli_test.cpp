@@ -5,6 +5,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 #include <csignal>
 #include <cstdlib>
@@ -383,6 +384,46 @@ TEST_F(Cli, ReadOnlyOutputDirectoryIsRejectedBeforeLoading) {
     EXPECT_NE(r.err.find("cannot write \"locked/a.png\": directory \"locked\" is not writable"),
               std::string::npos)
         << r.err;
+}
+
+// A disk that fills up while the image is written, made by a file-size limit (dash's `ulimit
+// -f` counts blocks of 512 bytes: 8 KiB, less than the 64 x 48 PPM): a clear error, the
+// previous image as it was, no temporary left behind.
+TEST_F(Cli, AFullDiskIsReportedAndLeavesThePreviousImage) {
+    std::ofstream(dir_ / "out.ppm") << "the previous image";
+    const Outcome r = run_glint("render " + scene("showcase.yaml") + " --width 64 -q -o out.ppm",
+                                "ulimit -f 16 && ");
+    EXPECT_EQ(r.exit_code, 1);
+    EXPECT_NE(r.err.find("glint: error: out.ppm: "), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("File too large"), std::string::npos) << r.err;
+    EXPECT_EQ(slurp(dir_ / "out.ppm"), "the previous image");
+    std::vector<std::string> names;
+    for (const auto& entry : fs::directory_iterator(dir_))
+        names.push_back(entry.path().filename().string());
+    std::sort(names.begin(), names.end());
+    EXPECT_EQ(names, (std::vector<std::string>{"out.ppm", "stderr.txt", "stdout.txt"}));
+}
+
+// The same for the statistics: a 15-byte image and some 800 bytes of JSON (it names the scene
+// and the image, given long names here) under a limit of 512 bytes.
+TEST_F(Cli, AFullDiskIsReportedAndLeavesThePreviousStatistics) {
+    const std::string scene_name = std::string(200, 's') + ".yaml",
+                      image_name = std::string(200, 'i') + ".ppm";
+    fs::copy_file(std::string(GLINT_SOURCE_DIR) + "/scenes/showcase.yaml", dir_ / scene_name);
+    std::ofstream(dir_ / "stats.json") << "the previous statistics";
+    const Outcome r = run_glint("render " + scene_name + " --width 1 --height 1 -q -o " +
+                                    image_name + " --stats stats.json",
+                                "ulimit -f 1 && ");
+    EXPECT_EQ(r.exit_code, 1);
+    EXPECT_NE(r.err.find("glint: error: stats.json: "), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("File too large"), std::string::npos) << r.err;
+    EXPECT_EQ(slurp(dir_ / "stats.json"), "the previous statistics");
+    std::vector<std::string> names;
+    for (const auto& entry : fs::directory_iterator(dir_))
+        names.push_back(entry.path().filename().string());
+    std::sort(names.begin(), names.end());
+    EXPECT_EQ(names, (std::vector<std::string>{image_name, scene_name, "stats.json", "stderr.txt",
+                                               "stdout.txt"}));
 }
 
 // Ctrl-C in the middle of a render that would replace a good image: the image stays as it

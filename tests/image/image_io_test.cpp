@@ -1,7 +1,10 @@
 #include "glint/image/image_io.h"
 
 #include <gtest/gtest.h>
+#include <sys/resource.h>
 
+#include <algorithm>
+#include <csignal>
 #include <string>
 #include <vector>
 
@@ -106,6 +109,56 @@ TEST(ImageIo, WriteErrorsNameTheTargetNotTheTemporary) {
             EXPECT_EQ(std::string(e.what()).find(".tmp-"), std::string::npos) << e.what();
         }
     }
+}
+
+// Lowers this process's file-size limit for one test, as `ulimit -f` does, with SIGXFSZ ignored
+// (as glint's tool does) so that writes beyond the limit fail with EFBIG: a full disk that
+// needs no special file system.
+class FileSizeLimit {
+public:
+    explicit FileSizeLimit(rlim_t bytes) {
+        getrlimit(RLIMIT_FSIZE, &previous_);
+        rlimit lowered = previous_;
+        lowered.rlim_cur = bytes;
+        setrlimit(RLIMIT_FSIZE, &lowered);
+        previous_handler_ = std::signal(SIGXFSZ, SIG_IGN);
+    }
+    ~FileSizeLimit() {
+        setrlimit(RLIMIT_FSIZE, &previous_);
+        std::signal(SIGXFSZ, previous_handler_);
+    }
+    FileSizeLimit(const FileSizeLimit&) = delete;
+    FileSizeLimit& operator=(const FileSizeLimit&) = delete;
+
+private:
+    rlimit previous_{};
+    void (*previous_handler_)(int) = SIG_DFL;
+};
+
+TEST(ImageIo, AFullDiskLeavesThePreviousFileAndNoTemporary) {
+    const auto dir = testing::fresh_test_dir();
+    // 64 x 64 pixels of noise: no format compresses them below the limit of 4 KiB.
+    Image noise(64, 64);
+    unsigned state = 12345;
+    for (Color& c : noise.pixels) {
+        const auto next = [&] {
+            return float((state = state * 1664525u + 1013904223u) >> 8) / 0x1p24f;
+        };
+        c = {next(), next(), next()};
+    }
+    for (const char* name : {"out.png", "out.ppm", "out.pfm", "out.exr"}) {
+        SCOPED_TRACE(name);
+        const auto path = dir / name;
+        testing::write_file(path, "the previous image");
+        {
+            const FileSizeLimit limit(4096);
+            testing::expect_image_error([&] { write_image(path, noise); }, path, "File too large");
+        }
+        EXPECT_EQ(testing::read_file(path), "the previous image");
+    }
+    Names names = testing::file_names_in(dir);
+    std::sort(names.begin(), names.end());
+    EXPECT_EQ(names, (Names{"out.exr", "out.pfm", "out.png", "out.ppm"}));
 }
 
 TEST(ImageIo, ReadErrorsNameTheFile) {

@@ -5,6 +5,8 @@
 #include <unistd.h>
 
 #include <atomic>
+#include <cerrno>
+#include <cstring>
 #include <string>
 #include <system_error>
 
@@ -41,14 +43,20 @@ void remove_quietly(const std::filesystem::path& path) {
     std::filesystem::remove(path, ignored);
 }
 
-// Flush the new contents to disk before the rename publishes them; otherwise a power cut soon
-// after can leave an empty file where a good image used to be.
-void sync_file(const std::filesystem::path& path) {
+// Flushes the new contents to disk before the rename publishes them; otherwise a power cut soon
+// after can leave an empty file where a good image used to be. A disk that fills up only now
+// (delayed allocation, network file systems) says so here: the new file is then not whole.
+void sync_file(const std::filesystem::path& path, const std::filesystem::path& target) {
     const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
-    if (fd >= 0) {
-        ::fsync(fd);
+    if (fd < 0)
+        throw ImageError(
+            target, std::string("cannot open the written file again: ") + std::strerror(errno));
+    if (::fsync(fd) != 0) {
+        const std::string reason = std::strerror(errno);
         ::close(fd);
+        throw ImageError(target, "cannot flush the written file to disk: " + reason);
     }
+    ::close(fd);
 }
 
 }  // namespace
@@ -69,7 +77,12 @@ void write_file_atomically(
         remove_quietly(temporary);
         throw;
     }
-    sync_file(temporary);
+    try {
+        sync_file(temporary, target);
+    } catch (...) {
+        remove_quietly(temporary);
+        throw;
+    }
     std::error_code error;
     std::filesystem::rename(temporary, target, error);
     if (error) {

@@ -7,8 +7,10 @@
 
 #include <array>
 #include <bit>
+#include <cerrno>
 #include <cstdint>
 #include <cstdio>
+#include <cstring>
 #include <string>
 #include <vector>
 
@@ -118,8 +120,13 @@ void write_png(const std::filesystem::path& path, const Image& image) {
     s.png = png_create_write_struct(PNG_LIBPNG_VER_STRING, &message, on_png_error, on_png_warning);
     if (s.png) s.info = png_create_info_struct(s.png);
     if (!s.info) throw ImageError(path, "cannot write PNG: libpng could not start");
+    errno = 0;
     if (!encode_png(s.png, s.info, file.get(), png_uint_32(image.width), png_uint_32(image.height),
                     rows.data())) {
+        // libpng says only "Write Error" when the file system refuses; the system says why.
+        const int reason = errno;
+        if (std::ferror(file.get()) && reason != 0)
+            throw ImageError(path, std::string("write failed: ") + std::strerror(reason));
         throw ImageError(path, std::string("cannot write PNG: ") + message.text);
     }
     close_written_file(std::move(file), path);
