@@ -1,9 +1,13 @@
 // stb_image behind glint's Image: size checks first, then decoding, then sRGB to linear.
 #include "glint/image/texture_file.h"
 
+#include <algorithm>
 #include <array>
 #include <climits>
+#include <cstdint>
+#include <cstring>
 #include <memory>
+#include <string>
 #include <system_error>
 
 #include "glint/image/file_io.h"
@@ -32,7 +36,67 @@ struct StbFree {
 
 std::string stb_reason() {
     const char* reason = stbi_failure_reason();
-    return reason ? reason : "unknown error";
+    return reason && *reason ? reason : "unknown error";
+}
+
+// stb_image reading from memory through callbacks, noting whether a decoder asked for bytes
+// beyond the end: stb hands it zeros, which would turn a truncated file into an image with a
+// black end, without a word.
+class MemoryReader {
+public:
+    explicit MemoryReader(std::span<const unsigned char> bytes) : bytes_(bytes) {}
+
+    static const stbi_io_callbacks& callbacks() {
+        static const stbi_io_callbacks c{read, skip, eof};
+        return c;
+    }
+    bool ran_out() const { return ran_out_; }
+
+private:
+    static int read(void* user, char* data, int size) {
+        auto& r = *static_cast<MemoryReader*>(user);
+        const std::size_t n = std::min(std::size_t(std::max(size, 0)), r.bytes_.size() - r.at_);
+        if (n == 0 && size > 0) r.ran_out_ = true;
+        std::memcpy(data, r.bytes_.data() + r.at_, n);
+        r.at_ += n;
+        return int(n);
+    }
+    static void skip(void* user, int n) {
+        auto& r = *static_cast<MemoryReader*>(user);
+        if (n < 0) {  // stb skips back only within what it has read
+            r.at_ -= std::min(r.at_, std::size_t(-std::int64_t(n)));
+            return;
+        }
+        if (std::size_t(n) > r.bytes_.size() - r.at_) r.ran_out_ = true;
+        r.at_ += std::min(std::size_t(n), r.bytes_.size() - r.at_);
+    }
+    static int eof(void* user) {
+        const auto& r = *static_cast<MemoryReader*>(user);
+        return r.at_ >= r.bytes_.size() ? 1 : 0;
+    }
+
+    std::span<const unsigned char> bytes_;
+    std::size_t at_ = 0;
+    bool ran_out_ = false;
+};
+
+// Decodes with stb's `load` (8-bit, 16-bit or float) through a MemoryReader: nothing, with the
+// reason in `error`, when stb fails or the data ends early.
+template <typename T, typename Load>
+std::unique_ptr<T, StbFree> decode(std::span<const unsigned char> bytes, Load load, int width,
+                                   int height, std::string& error) {
+    MemoryReader reader(bytes);
+    int w = 0, h = 0, n = 0;
+    std::unique_ptr<T, StbFree> decoded(load(&MemoryReader::callbacks(), &reader, &w, &h, &n, 3));
+    if (reader.ran_out()) {
+        error = "the image data ends early (the file is truncated)";
+        return nullptr;
+    }
+    if (!decoded || w != width || h != height) {
+        error = stb_reason();
+        return nullptr;
+    }
+    return decoded;
 }
 
 // Decoding 8-bit values through a table keeps the pow() calls to 256.
@@ -63,34 +127,26 @@ Image decode_texture_image(std::span<const unsigned char> bytes,
 
     Image image(width, height);
     const std::size_t pixels = std::size_t(width) * std::size_t(height);
-    int w = 0, h = 0, n = 0;
+    std::string error;
     if (stbi_is_hdr_from_memory(data, length)) {
-        const std::unique_ptr<float, StbFree> decoded(
-            stbi_loadf_from_memory(data, length, &w, &h, &n, 3));
-        if (!decoded || w != width || h != height) {
-            throw ImageError(name, "cannot decode HDR image: " + stb_reason());
-        }
+        const auto decoded = decode<float>(bytes, stbi_loadf_from_callbacks, width, height, error);
+        if (!decoded) throw ImageError(name, "cannot decode HDR image: " + error);
         for (std::size_t i = 0; i < pixels; ++i) {
             const float* p = decoded.get() + 3 * i;
             image.pixels[i] = {p[0], p[1], p[2]};
         }
     } else if (stbi_is_16_bit_from_memory(data, length)) {
-        const std::unique_ptr<stbi_us, StbFree> decoded(
-            stbi_load_16_from_memory(data, length, &w, &h, &n, 3));
-        if (!decoded || w != width || h != height) {
-            throw ImageError(name, "cannot decode image: " + stb_reason());
-        }
+        const auto decoded =
+            decode<stbi_us>(bytes, stbi_load_16_from_callbacks, width, height, error);
+        if (!decoded) throw ImageError(name, "cannot decode image: " + error);
         for (std::size_t i = 0; i < pixels; ++i) {
             const stbi_us* p = decoded.get() + 3 * i;
             image.pixels[i] = {srgb_to_linear(p[0] / 65535.0f), srgb_to_linear(p[1] / 65535.0f),
                                srgb_to_linear(p[2] / 65535.0f)};
         }
     } else {
-        const std::unique_ptr<stbi_uc, StbFree> decoded(
-            stbi_load_from_memory(data, length, &w, &h, &n, 3));
-        if (!decoded || w != width || h != height) {
-            throw ImageError(name, "cannot decode image: " + stb_reason());
-        }
+        const auto decoded = decode<stbi_uc>(bytes, stbi_load_from_callbacks, width, height, error);
+        if (!decoded) throw ImageError(name, "cannot decode image: " + error);
         const auto& table = srgb8_table();
         for (std::size_t i = 0; i < pixels; ++i) {
             const stbi_uc* p = decoded.get() + 3 * i;
