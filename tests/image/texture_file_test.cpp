@@ -3,12 +3,22 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <string>
+#include <vector>
 
 #include "glint/image/image_error.h"
 #include "glint/image/image_io.h"
+#include "glint/image/srgb.h"
+
+// stb's writer, for files of every texture format that glint did not write itself.
+#define STB_IMAGE_WRITE_STATIC
+#define STB_IMAGE_WRITE_IMPLEMENTATION
+#include <stb/stb_image_write.h>
 
 namespace glint {
 namespace {
@@ -29,6 +39,85 @@ TEST(TextureFile, SpotTextureLoads) {
     EXPECT_EQ(image.height, 1024);
     for (const Color& c : image.pixels) {
         ASSERT_TRUE(c.r >= 0 && c.r <= 1 && c.g >= 0 && c.g <= 1 && c.b >= 0 && c.b <= 1);
+    }
+}
+
+// Every format, written by another library (stb_image_write), loads whole, and refused as
+// truncated when cut in half: the check for data that ends early must catch every decoder and
+// refuse no good file, whichever way it reads (TGA with and without run-length encoding,
+// baseline JPEG, Radiance HDR's run-length scanlines).
+TEST(TextureFile, EveryFormatLoadsWholeAndIsRefusedTruncated) {
+    constexpr int kWidth = 37, kHeight = 23;  // odd sizes: no format's blocks fit exactly
+    std::vector<unsigned char> bytes;
+    std::vector<float> linear;
+    for (int y = 0; y < kHeight; ++y) {
+        for (int x = 0; x < kWidth; ++x) {
+            for (const int v : {x * 255 / (kWidth - 1), y * 255 / (kHeight - 1), 128}) {
+                bytes.push_back(static_cast<unsigned char>(v));
+                linear.push_back(srgb_to_linear(float(v) / 255));
+            }
+        }
+    }
+    const auto append = [](void* file, void* data, int size) {
+        static_cast<std::string*>(file)->append(static_cast<const char*>(data), size);
+    };
+    const auto* rgb = bytes.data();
+    struct Format {
+        std::string name;
+        double tolerance;
+        std::function<int(std::string*)> write;
+    };
+    const Format formats[] = {
+        {"a.png", 1e-6,
+         [&](std::string* f) {
+             return stbi_write_png_to_func(append, f, kWidth, kHeight, 3, rgb, 0);
+         }},
+        {"a.bmp", 1e-6,
+         [&](std::string* f) {
+             return stbi_write_bmp_to_func(append, f, kWidth, kHeight, 3, rgb);
+         }},
+        {"raw.tga", 1e-6,
+         [&](std::string* f) {
+             stbi_write_tga_with_rle = 0;
+             return stbi_write_tga_to_func(append, f, kWidth, kHeight, 3, rgb);
+         }},
+        {"rle.tga", 1e-6,
+         [&](std::string* f) {
+             stbi_write_tga_with_rle = 1;
+             return stbi_write_tga_to_func(append, f, kWidth, kHeight, 3, rgb);
+         }},
+        {"a.jpg", 0.05,  // lossy
+         [&](std::string* f) {
+             return stbi_write_jpg_to_func(append, f, kWidth, kHeight, 3, rgb, 95);
+         }},
+        {"a.hdr", 0.01,  // RGBE: 8 bits of mantissa
+         [&](std::string* f) {
+             return stbi_write_hdr_to_func(append, f, kWidth, kHeight, 3, linear.data());
+         }},
+    };
+    for (const Format& format : formats) {
+        SCOPED_TRACE(format.name);
+        std::string file;
+        ASSERT_NE(format.write(&file), 0);
+        const Image image = load_texture_image(write_bytes(format.name, file));
+        ASSERT_EQ(image.width, kWidth);
+        ASSERT_EQ(image.height, kHeight);
+        double worst = 0;
+        for (std::size_t i = 0; i < image.pixels.size(); ++i) {
+            const Color c = image.pixels[i];
+            worst = std::max({worst, std::abs(double(c.r) - linear[3 * i]),
+                              std::abs(double(c.g) - linear[3 * i + 1]),
+                              std::abs(double(c.b) - linear[3 * i + 2])});
+        }
+        EXPECT_LE(worst, format.tolerance);
+
+        const auto half = write_bytes("half-" + format.name, file.substr(0, file.size() / 2));
+        try {
+            load_texture_image(half);
+            ADD_FAILURE() << "half a file loaded";
+        } catch (const ImageError& e) {
+            EXPECT_NE(std::string(e.what()).find("truncated"), std::string::npos) << e.what();
+        }
     }
 }
 
