@@ -61,7 +61,7 @@ private:
         auto& r = *static_cast<MemoryReader*>(user);
         const std::size_t n = std::min(std::size_t(std::max(size, 0)), r.bytes_.size() - r.at_);
         if (n == 0 && size > 0) r.ran_out_ = true;
-        std::memcpy(data, r.bytes_.data() + r.at_, n);
+        if (n > 0) std::memcpy(data, r.bytes_.data() + r.at_, n);
         r.at_ += n;
         return int(n);
     }
