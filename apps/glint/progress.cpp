@@ -4,6 +4,7 @@
 
 #include <unistd.h>
 
+#include <atomic>
 #include <chrono>
 #include <csignal>
 #include <cstdio>
@@ -13,9 +14,12 @@ namespace glint::cli {
 
 namespace {
 
-volatile std::sig_atomic_t g_interrupted = 0;
+// Set by the handler on the main thread and read by the watcher's: a lock-free atomic, which a
+// signal handler may write (a volatile sig_atomic_t is safe only within one thread).
+std::atomic<bool> g_interrupted = false;
+static_assert(std::atomic<bool>::is_always_lock_free);
 
-extern "C" void on_interrupt(int) { g_interrupted = 1; }
+extern "C" void on_interrupt(int) { g_interrupted = true; }
 
 std::string format_duration(double seconds) {
     const long s = static_cast<long>(seconds + 0.5);
@@ -31,7 +35,7 @@ std::string format_duration(double seconds) {
 
 ProgressWatcher::ProgressWatcher(RenderProgress& progress, bool show)
     : progress_(progress), show_(show), terminal_(isatty(STDERR_FILENO) != 0) {
-    g_interrupted = 0;
+    g_interrupted = false;
     std::signal(SIGINT, on_interrupt);
     thread_ = std::thread([this] { run(); });
 }

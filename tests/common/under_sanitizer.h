@@ -5,8 +5,11 @@
 
 namespace glint::testing {
 
-#if defined(__SANITIZE_ADDRESS__) || defined(__SANITIZE_THREAD__)
+#if defined(__SANITIZE_ADDRESS__) || defined(__SANITIZE_THREAD__)  // GCC
 inline constexpr bool kUnderSanitizer = true;
+#elif defined(__has_feature)  // Clang
+inline constexpr bool kUnderSanitizer =
+    __has_feature(address_sanitizer) || __has_feature(thread_sanitizer);
 #else
 inline constexpr bool kUnderSanitizer = false;
 #endif
