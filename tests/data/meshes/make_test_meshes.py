@@ -1,6 +1,7 @@
 #!/usr/bin/env python3
 # Writes the small hand-made test meshes of this folder (glTF, GLB, PLY, STL, OBJ/MTL), so that
-# their contents are reviewable and reproducible: python3 make_test_meshes.py
+# their contents are reviewable and reproducible: python3 make_test_meshes.py. The PLY and STL
+# files go to scenes/features/models too, where the example scenes read them.
 import base64
 import json
 import struct
@@ -8,6 +9,17 @@ import zlib
 from pathlib import Path
 
 HERE = Path(__file__).resolve().parent
+SCENE_MODELS = HERE.parents[2] / "scenes" / "features" / "models"
+
+
+def write_both(name, data):
+    """Writes the file here and beside the example scenes (a scene reads only its own folder)."""
+    for folder in (HERE, SCENE_MODELS):
+        path = folder / name
+        if isinstance(data, str):
+            path.write_text(data)
+        else:
+            path.write_bytes(data)
 
 
 def png_2x2(pixels):
@@ -140,11 +152,11 @@ def write_ply():
     text = header.format("ascii 1.0")
     text += "".join("{} {} {}\n".format(*v) for v in CUBE_VERTICES)
     text += "".join("4 {} {} {} {}\n".format(*f) for f in CUBE_FACES)
-    (HERE / "cube_ascii.ply").write_text(text)
+    write_both("cube_ascii.ply", text)
     binary = header.format("binary_little_endian 1.0").encode()
     binary += b"".join(struct.pack("<3f", *v) for v in CUBE_VERTICES)
     binary += b"".join(struct.pack("<B4i", 4, *f) for f in CUBE_FACES)
-    (HERE / "cube_binary.ply").write_bytes(binary)
+    write_both("cube_binary.ply", binary)
 
 
 # A tetrahedron with corners at the origin and on the three axes: 4 triangles, outward winding.
@@ -159,12 +171,12 @@ def write_stl():
         lines += ["      vertex {} {} {}".format(*v) for v in tri]
         lines.append("    endloop\n  endfacet")
     lines.append("endsolid tetra\n")
-    (HERE / "tetra_ascii.stl").write_text("\n".join(lines))
+    write_both("tetra_ascii.stl", "\n".join(lines))
     data = b"glint test tetrahedron".ljust(80, b" ") + struct.pack("<I", len(TETRA))
     for tri in TETRA:
         data += struct.pack("<3f", 0, 0, 0) + b"".join(struct.pack("<3f", *v) for v in tri)
         data += b"\x00\x00"
-    (HERE / "tetra_binary.stl").write_bytes(data)
+    write_both("tetra_binary.stl", data)
 
 
 if __name__ == "__main__":
