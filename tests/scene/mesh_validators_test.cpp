@@ -18,6 +18,8 @@ namespace glint {
 namespace {
 
 const std::filesystem::path kMeshes = std::filesystem::path(GLINT_SOURCE_DIR) / "tests/data/meshes";
+// The test meshes read only their own folder.
+const ReadSandbox kSandbox = make_read_sandbox(kMeshes / "inline.obj");
 
 std::string read(const std::filesystem::path& p) {
     std::ifstream in(p, std::ios::binary);
@@ -28,7 +30,7 @@ std::string read(const std::filesystem::path& p) {
 
 SceneError obj_error(const std::string& text) {
     try {
-        validate_obj(kMeshes / "inline.obj", text);
+        validate_obj(kMeshes / "inline.obj", text, kSandbox);
     } catch (const SceneError& e) {
         return e;
     }
@@ -41,7 +43,8 @@ TEST(ObjValidator, AcceptsTheFormsAssimpReads) {
         "# comment\nv 0 0 0\nv 1 0 0 1\nv +0 1e0 -0.0 0.5 0.5 0.5\nvt 0\nvt 1 0\nvt 0 1 0\n"
         "vn 0 0 1\nf 1 2 3\nf 1/1 2/2 3/3\nf 1//1 2//1 3//1\nf -3/-3/-1 -2/-2/-1 -1/-1/-1\n"
         "f 1 2 3 1\ng group\ns 1\nl 1 2\np 1\r\nf 4 2 3\nv 0 0 1\n";
-    EXPECT_NO_THROW(validate_obj(kMeshes / "inline.obj", text));  // forward index 4 is fine
+    EXPECT_NO_THROW(
+        validate_obj(kMeshes / "inline.obj", text, kSandbox));  // forward index 4 is fine
 }
 
 TEST(ObjValidator, ErrorsPointAtTheToken) {
@@ -64,7 +67,8 @@ TEST(ObjValidator, ErrorsPointAtTheToken) {
 }
 
 TEST(ObjValidator, FindsMaterialLibrariesAndUndefinedMaterials) {
-    const ObjCheck check = validate_obj(kMeshes / "materials.obj", read(kMeshes / "materials.obj"));
+    const ObjCheck check =
+        validate_obj(kMeshes / "materials.obj", read(kMeshes / "materials.obj"), kSandbox);
     ASSERT_EQ(check.material_libraries.size(), 1u);
     EXPECT_EQ(check.material_libraries[0].filename(), "materials.mtl");
     ASSERT_EQ(check.undefined_materials.size(), 1u);
@@ -185,8 +189,9 @@ TEST(MeshValidators, SurviveMutatedFiles) {
         survive_mutations(read(kMeshes / name),
                           [&](const std::string& t) { validate_ply(kMeshes / name, t); });
     }
-    survive_mutations(read(kMeshes / "materials.obj"),
-                      [&](const std::string& t) { validate_obj(kMeshes / "materials.obj", t); });
+    survive_mutations(read(kMeshes / "materials.obj"), [&](const std::string& t) {
+        validate_obj(kMeshes / "materials.obj", t, kSandbox);
+    });
     survive_mutations(read(kMeshes / "tetra_ascii.stl"),
                       [&](const std::string& t) { validate_stl(kMeshes / "tetra_ascii.stl", t); });
 }

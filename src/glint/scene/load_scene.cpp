@@ -6,22 +6,30 @@
 
 #include "glint/scene/mesh/model_scene.h"
 #include "glint/scene/nff/nff_to_scene.h"
+#include "glint/scene/read_sandbox.h"
 #include "glint/scene/scene_error.h"
 #include "glint/scene/yaml/yaml_scene_loader.h"
 
 namespace glint {
 
-Scene load_scene(const std::filesystem::path& file) {
+Scene load_scene(const std::filesystem::path& file, const LoadOptions& options) {
     std::string extension = file.extension().string();
     std::transform(extension.begin(), extension.end(), extension.begin(),
                    [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-    if (extension == ".yaml" || extension == ".yml") return load_yaml_scene(file);
-    if (extension == ".nff" || (extension == ".gz" && file.stem().extension() == ".nff"))
-        return load_nff_scene(file);
-    if (is_model_file(file)) return load_model_scene(file);
-    throw SceneError({file.string()}, "unknown scene format \"" + extension + "\"",
-                     {"scene formats are: .yaml, .yml (glint), .nff, .nff.gz (Haines' NFF), and "
-                      ".obj, .ply, .gltf, .glb, .stl (models)"});
+    const bool yaml = extension == ".yaml" || extension == ".yml";
+    const bool nff =
+        extension == ".nff" || (extension == ".gz" && file.stem().extension() == ".nff");
+    if (!yaml && !nff && !is_model_file(file)) {
+        throw SceneError(
+            {file.string()}, "unknown scene format \"" + extension + "\"",
+            {"scene formats are: .yaml, .yml (glint), .nff, .nff.gz (Haines' NFF), and "
+             ".obj, .ply, .gltf, .glb, .stl (models)"});
+    }
+    const ReadSandbox sandbox = make_read_sandbox(file, options.allow_read);
+    if (yaml) return load_yaml_scene(file, sandbox);
+    // An NFF file names no other files: the sandbox has nothing to check.
+    if (nff) return load_nff_scene(file);
+    return load_model_scene(file, sandbox);
 }
 
 }  // namespace glint

@@ -3,14 +3,22 @@
 #pragma once
 
 #include <filesystem>
+#include <vector>
 
 #include "glint/scene/scene.h"
 
 namespace glint {
 
+struct LoadOptions {
+    // Folders whose files, at any depth, the scene may read besides its own folder's (textures,
+    // meshes, and the files these name). Anything else is refused: see read_sandbox.h.
+    std::vector<std::filesystem::path> allow_read;
+};
+
 // .yaml and .yml (glint's format), .nff and .nff.gz (Haines' NFF), and the model files Assimp
 // reads (.obj, .ply, .gltf, .glb, .stl). Throws SceneError for unknown formats and for whatever
-// the loader rejects.
-Scene load_scene(const std::filesystem::path& file);
+// the loader rejects, including a file the scene names outside the folders it may read. Without
+// options a scene reads only under its own folder.
+Scene load_scene(const std::filesystem::path& file, const LoadOptions& options = {});
 
 }  // namespace glint

@@ -3,9 +3,9 @@
 
 namespace glint {
 
-std::string quote(std::string_view text) {
+std::string quote(std::string_view text, std::size_t max_length) {
     std::string out = "\"";
-    for (std::size_t i = 0; i < text.size() && i < kMaxQuoted; ++i) {
+    for (std::size_t i = 0; i < text.size() && i < max_length; ++i) {
         const auto c = static_cast<unsigned char>(text[i]);
         if (c == '"' || c == '\\') {
             out += '\\';
@@ -19,7 +19,7 @@ std::string quote(std::string_view text) {
             out += char(c);
         }
     }
-    if (text.size() > kMaxQuoted) out += "...";
+    if (text.size() > max_length) out += "...";
     return out + "\"";
 }
 

@@ -8,9 +8,10 @@
 
 namespace glint {
 
-// Text longer than this is cut short.
+// Names and tokens longer than this are cut short.
 inline constexpr std::size_t kMaxQuoted = 40;
 
-std::string quote(std::string_view text);
+// Text longer than max_length is cut short.
+std::string quote(std::string_view text, std::size_t max_length = kMaxQuoted);
 
 }  // namespace glint

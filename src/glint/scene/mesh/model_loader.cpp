@@ -25,6 +25,7 @@
 #include "glint/scene/mesh/mesh_limits.h"
 #include "glint/scene/mesh/obj_validator.h"
 #include "glint/scene/mesh/ply_validator.h"
+#include "glint/scene/mesh/sandboxed_io_system.h"
 #include "glint/scene/mesh/stl_validator.h"
 #include "glint/scene/mesh/text_lines.h"
 #include "glint/scene/scene_error.h"
@@ -94,7 +95,10 @@ struct PartKey {
 class Importer {
 public:
     Importer(std::filesystem::path file, const ModelOptions& options)
-        : file_(std::move(file)), name_(file_.string()), options_(options) {}
+        : file_(std::move(file)),
+          name_(file_.string()),
+          options_(options),
+          sandbox_(options.sandbox ? *options.sandbox : make_read_sandbox(file_)) {}
 
     Model run() {
         const Format format = format_of(file_);
@@ -121,7 +125,7 @@ private:
     void validate(Format format) {
         if (format == Format::obj) {
             const std::string text = read_text_file(name_, kMaxMeshFileBytes);
-            ObjCheck check = validate_obj(file_, text);
+            ObjCheck check = validate_obj(file_, text, sandbox_);
             model_.warnings = std::move(check.warnings);
             material_libraries_ = std::move(check.material_libraries);
             undefined_materials_ = std::move(check.undefined_materials);
@@ -158,12 +162,24 @@ private:
             flags |= aiProcess_RemoveComponent;
             importer_.SetPropertyInteger(AI_CONFIG_PP_RVC_FLAGS, aiComponent_NORMALS);
         }
+        // The importer owns its IOSystem.
+        auto* io = new SandboxedIOSystem(sandbox_, file_);
+        importer_.SetIOHandler(io);
         const aiScene* scene = nullptr;
         const AssimpWarnings log;
         try {
             scene = importer_.ReadFile(name_, flags);
         } catch (const std::exception& e) {
             throw error(std::string("Assimp cannot read it: ") + e.what());
+        }
+        // Assimp reports a refused file as one it could not open (or, asking whether it exists,
+        // not at all): the sandbox says why, whatever Assimp made of it.
+        if (io->refused()) {
+            auto refusal = check_read(sandbox_, *io->refused(), "referenced file", *io->refused());
+            refusal->notes.insert(
+                refusal->notes.begin() + 1,
+                "Assimp opens it for the model (a glTF buffer, an OBJ material library)");
+            throw error(refusal->message, refusal->notes);
         }
         check_assimp_log(format, log);
         if (!scene)
@@ -308,7 +324,8 @@ private:
                                  notes);
             }
         }
-        // Relative to the MTL files first (OBJ), then to the model file.
+        // Relative to the MTL files first (OBJ), then to the model file; only those inside the
+        // sandbox are looked at.
         std::vector<std::filesystem::path> candidates;
         for (const auto& library : material_libraries_) {
             candidates.push_back(library.parent_path() / path);
@@ -316,9 +333,15 @@ private:
         candidates.push_back(file_.parent_path() / path);
         std::error_code ec;
         const auto found = std::find_if(candidates.begin(), candidates.end(), [&](const auto& c) {
-            return std::filesystem::is_regular_file(c, ec);
+            return may_read(sandbox_, c) && std::filesystem::is_regular_file(c, ec);
         });
         if (found == candidates.end()) {
+            for (const auto& candidate : candidates) {
+                if (auto refusal = check_read(sandbox_, candidate, "texture file", path)) {
+                    refusal->notes.push_back(notes[0]);
+                    throw error(refusal->message, refusal->notes);
+                }
+            }
             throw SceneError({name_, 0, 0}, "texture file \"" + path + "\" not found",
                              {"looked for " + candidates.back().string(), notes[0]});
         }
@@ -432,6 +455,7 @@ private:
     std::filesystem::path file_;
     std::string name_;
     ModelOptions options_;
+    ReadSandbox sandbox_;
     Assimp::Importer importer_;
     Model model_;
     std::map<PartKey, MeshData> arrays_;

@@ -13,6 +13,7 @@
 #include "glint/camera/camera_spec.h"
 #include "glint/geometry/triangle_mesh.h"
 #include "glint/math/bounds.h"
+#include "glint/scene/read_sandbox.h"
 #include "glint/shading/light.h"
 #include "glint/shading/material.h"
 
@@ -23,6 +24,9 @@ struct ModelOptions {
     // the file's normals are ignored; otherwise the file's normals are kept, and meshes without
     // them are shaded flat.
     std::optional<float> crease_angle_degrees;
+    // The folders whose files the model may use (MTL files, textures, glTF buffers and images);
+    // nothing: the model file's folder only.
+    std::optional<ReadSandbox> sandbox;
 };
 
 // A camera of the file (glTF perspective or orthographic), placed in world space.
@@ -57,7 +61,8 @@ inline constexpr float kGltfLightUnitsToGlint = 1;
 // Throws SceneError only: file:line:col for bad lines of OBJ, MTL, ASCII PLY and ASCII STL files
 // (checked before Assimp reads them), the file and Assimp's message for files Assimp refuses,
 // the file and a clear message for what Assimp only logs (glTF indices out of range) and for
-// what validation after import finds (no triangles, non-finite coordinates).
+// what validation after import finds (no triangles, non-finite coordinates), and for a file the
+// model names outside the sandbox (at the OBJ or MTL line that names it, or the glTF file).
 Model load_model(const std::filesystem::path& file, const ModelOptions& options = {});
 
 }  // namespace glint

@@ -52,6 +52,12 @@ Scene model_to_scene(const Model& model) {
     return scene;
 }
 
+Scene load_model_scene(const std::filesystem::path& file, const ReadSandbox& sandbox) {
+    ModelOptions options;
+    options.sandbox = sandbox;
+    return model_to_scene(load_model(file, options));
+}
+
 Scene load_model_scene(const std::filesystem::path& file) {
     return model_to_scene(load_model(file));
 }

@@ -12,7 +12,9 @@ namespace glint {
 
 Scene model_to_scene(const Model& model);
 
-// load_model then model_to_scene. Throws SceneError only.
+// load_model then model_to_scene. Throws SceneError only. Without a sandbox the model reads only
+// under its own folder.
+Scene load_model_scene(const std::filesystem::path& file, const ReadSandbox& sandbox);
 Scene load_model_scene(const std::filesystem::path& file);
 
 // Whether the file's extension names a model format load_model reads.

@@ -129,9 +129,20 @@ bool is_file(const std::filesystem::path& p) {
     return std::filesystem::is_regular_file(p, ec);
 }
 
+// Refuses a file the line names outside the sandbox, at its token, before anything looks for it.
+void check_sandbox(const TextLines& lines, std::size_t line, const Token& token,
+                   const ReadSandbox& sandbox, const std::filesystem::path& path,
+                   std::string_view what, const std::string& name) {
+    if (const auto refusal = check_read(sandbox, path, what, name)) {
+        throw lines.error_at(line, token.column, int(token.text.size()), refusal->message,
+                             refusal->notes);
+    }
+}
+
 }  // namespace
 
-std::vector<std::string> validate_mtl(const std::filesystem::path& file, std::string_view text) {
+std::vector<std::string> validate_mtl(const std::filesystem::path& file, std::string_view text,
+                                      const ReadSandbox& sandbox) {
     const TextLines lines(text, file.string());
     std::vector<std::string> names;
     for (std::size_t i = 0; i < lines.size(); ++i) {
@@ -155,6 +166,7 @@ std::vector<std::string> validate_mtl(const std::filesystem::path& file, std::st
             }
             const auto [name, token] = named_file(tokens, line);
             const std::filesystem::path texture = file.parent_path() / name;
+            check_sandbox(lines, n, token, sandbox, texture, "texture file", name);
             if (!is_file(texture)) {
                 throw lines.error_at(n, token.column, int(token.text.size()),
                                      "texture file " + in_quotes(name) + " not found",
@@ -165,7 +177,8 @@ std::vector<std::string> validate_mtl(const std::filesystem::path& file, std::st
     return names;
 }
 
-ObjCheck validate_obj(const std::filesystem::path& file, std::string_view text) {
+ObjCheck validate_obj(const std::filesystem::path& file, std::string_view text,
+                      const ReadSandbox& sandbox) {
     const TextLines lines(text, file.string());
     // Positive indices may point forwards (Assimp resolves them after reading), so the totals
     // come first.
@@ -206,7 +219,8 @@ ObjCheck validate_obj(const std::filesystem::path& file, std::string_view text) 
             // Assimp takes the rest of the line as one name; several names are also accepted.
             const auto [name, token] = named_file(tokens, line);
             std::vector<std::pair<std::string, Token>> libraries;
-            if (is_file(file.parent_path() / name) || tokens.size() == 2) {
+            const std::filesystem::path whole = file.parent_path() / name;
+            if ((may_read(sandbox, whole) && is_file(whole)) || tokens.size() == 2) {
                 libraries.push_back({name, token});
             } else {
                 for (std::size_t k = 1; k < tokens.size(); ++k) {
@@ -215,13 +229,14 @@ ObjCheck validate_obj(const std::filesystem::path& file, std::string_view text) 
             }
             for (const auto& [library, at] : libraries) {
                 const std::filesystem::path path = file.parent_path() / library;
+                check_sandbox(lines, n, at, sandbox, path, "material library", library);
                 if (!is_file(path)) {
                     throw lines.error_at(n, at.column, int(at.text.size()),
                                          "material library " + in_quotes(library) + " not found",
                                          {"looked for " + path.string()});
                 }
                 const std::string mtl = read_text_file(path.string(), kMaxMeshFileBytes);
-                const auto names = validate_mtl(path, mtl);
+                const auto names = validate_mtl(path, mtl, sandbox);
                 result.material_libraries.push_back(path);
                 materials.insert(materials.end(), names.begin(), names.end());
             }

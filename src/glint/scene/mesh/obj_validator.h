@@ -7,13 +7,16 @@
 #include <string_view>
 #include <vector>
 
+#include "glint/scene/read_sandbox.h"
+
 namespace glint {
 
 // Scans v, vt, vn and f lines and mtllib/usemtl, and the MTL files' colour, number and map_Kd
 // lines. Throws SceneError at the first bad one: a non-numeric or non-finite coordinate, a face
 // with fewer than 3 vertices, a face index that is 0 or out of range (positive indices against
 // the file's total, negative ones against the elements before the face, as Assimp resolves
-// them), a missing MTL file, a missing texture. Returns what the loader needs besides: warnings
+// them), a missing MTL file, a missing texture, an MTL file or texture outside the sandbox.
+// Returns what the loader needs besides: warnings
 // (e.g. usemtl of an unknown material), the MTL files and the undefined material names. Everything
 // else (groups, lines, points, smoothing groups) passes unchecked.
 struct ObjCheck {
@@ -21,10 +24,12 @@ struct ObjCheck {
     std::vector<std::filesystem::path> material_libraries;  // the MTL files, as found
     std::vector<std::string> undefined_materials;           // usemtl names that no MTL defines
 };
-ObjCheck validate_obj(const std::filesystem::path& file, std::string_view text);
+ObjCheck validate_obj(const std::filesystem::path& file, std::string_view text,
+                      const ReadSandbox& sandbox);
 
 // The same for an MTL file on its own; `text` is its contents. Returns the material names it
 // defines.
-std::vector<std::string> validate_mtl(const std::filesystem::path& file, std::string_view text);
+std::vector<std::string> validate_mtl(const std::filesystem::path& file, std::string_view text,
+                                      const ReadSandbox& sandbox);
 
 }  // namespace glint

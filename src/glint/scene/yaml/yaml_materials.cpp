@@ -11,6 +11,7 @@
 #include "glint/image/image_error.h"
 #include "glint/image/texture_file.h"
 #include "glint/scene/suggest.h"
+#include "glint/scene/yaml/yaml_file_path.h"
 #include "glint/shading/noise.h"
 
 namespace glint {
@@ -45,12 +46,13 @@ constexpr std::size_t kMaxListedNames = 30;
 
 namespace {
 
-// An image file, relative to the scene file, decoded to linear RGB.
-Texture read_image_texture(const YamlSource& source, const MapReader& map) {
+// An image file, relative to the scene file and inside the sandbox, decoded to linear RGB.
+Texture read_image_texture(const YamlSource& source, const ReadSandbox& sandbox,
+                           const MapReader& map) {
     ImageTexture texture;
     const MapEntry& file = map.require("file");
     const std::string name = read_string(source, file.value, map.field("file"));
-    const auto path = std::filesystem::path(source.file_name()).parent_path() / name;
+    const auto path = scene_file_path(source, sandbox, file.value, name, "texture");
     try {
         texture.image = std::make_shared<const Image>(load_texture_image(path));
     } catch (const ImageError& e) {
@@ -164,7 +166,8 @@ std::optional<BumpMap> read_bump(const MapReader& material) {
 
 }  // namespace
 
-Texture read_texture(const YamlSource& source, const YAML::Node& node, const Field& field) {
+Texture read_texture(const YamlSource& source, const ReadSandbox& sandbox, const YAML::Node& node,
+                     const Field& field) {
     auto entries = read_map(source, node, field);
     const std::string type = read_type(source, node, entries, "texture", kTextureTypes);
     if (std::find(std::begin(kNoiseTypes), std::end(kNoiseTypes), type) != std::end(kNoiseTypes)) {
@@ -175,7 +178,7 @@ Texture read_texture(const YamlSource& source, const YAML::Node& node, const Fie
     if (type == "image") {
         const MapReader map(source, node, std::move(entries), "image texture",
                             {"type", "file", "scale", "wrap", "filter"});
-        return read_image_texture(source, map);
+        return read_image_texture(source, sandbox, map);
     }
     const MapReader map(source, node, std::move(entries), "checker texture",
                         {"type", "even", "odd", "size", "space"});
@@ -247,8 +250,8 @@ void read_dispersion(const MapReader& map, Material& m) {
 
 }  // namespace
 
-Material read_material(const YamlSource& source, const YAML::Node& node, const Field& field,
-                       std::string what, std::string name) {
+Material read_material(const YamlSource& source, const ReadSandbox& sandbox, const YAML::Node& node,
+                       const Field& field, std::string what, std::string name) {
     const MapReader map(
         source, node, field, std::move(what),
         {"color", "ka", "kd", "ks", "shininess", "highlight", "reflect", "transmit", "ior",
@@ -257,7 +260,7 @@ Material read_material(const YamlSource& source, const YAML::Node& node, const F
     m.name = std::move(name);
     if (const MapEntry* color = map.find("color")) {
         m.color = color->value.IsMap()
-                      ? read_texture(source, color->value, map.field("color"))
+                      ? read_texture(source, sandbox, color->value, map.field("color"))
                       : Texture(read_color(source, color->value, map.field("color")));
     }
     m.ka = map.number("ka", kNonNegative, m.ka);
@@ -289,8 +292,9 @@ Material read_material(const YamlSource& source, const YAML::Node& node, const F
 void MaterialTable::read_named(const YAML::Node& section, const Field& field) {
     for (const MapEntry& entry : read_map(source_, section, field)) {
         if (entry.key.empty()) throw source_.error_at(entry.key_node, "material name is empty");
-        Material material = read_material(source_, entry.value, {"", entry.key, entry.key_node},
-                                          "material " + quote(entry.key), entry.key);
+        Material material =
+            read_material(source_, sandbox_, entry.value, {"", entry.key, entry.key_node},
+                          "material " + quote(entry.key), entry.key);
         named_.emplace(entry.key, add(std::move(material)));
     }
 }
@@ -311,7 +315,7 @@ std::uint32_t MaterialTable::resolve(const MapEntry* entry, std::size_t object_i
     const Field field{"", "material", entry->key_node};
     if (value.IsMap()) {
         const std::string name = "(object " + std::to_string(object_index) + ")";
-        return add(read_material(source_, value, field, "material", name));
+        return add(read_material(source_, sandbox_, value, field, "material", name));
     }
     if (!value.IsScalar()) throw type_error(source_, value, field, "a material name or map");
     const std::string& name = value.Scalar();

@@ -8,16 +8,19 @@
 #include <string>
 #include <vector>
 
+#include "glint/scene/read_sandbox.h"
 #include "glint/scene/yaml/yaml_map_reader.h"
 #include "glint/shading/material.h"
 
 namespace glint {
 
-// A material map; `what` names it in messages (`material "glass"`).
-Material read_material(const YamlSource& source, const YAML::Node& node, const Field& field,
-                       std::string what, std::string name);
+// A material map; `what` names it in messages (`material "glass"`). Image textures must lie
+// inside the sandbox.
+Material read_material(const YamlSource& source, const ReadSandbox& sandbox, const YAML::Node& node,
+                       const Field& field, std::string what, std::string name);
 // A texture map such as {type: checker, even: 1, odd: 0}.
-Texture read_texture(const YamlSource& source, const YAML::Node& node, const Field& field);
+Texture read_texture(const YamlSource& source, const ReadSandbox& sandbox, const YAML::Node& node,
+                     const Field& field);
 
 // Appends materials to a scene's list and hands out their indices.
 class MaterialTable {
@@ -25,8 +28,9 @@ public:
     // The name an object without a material gets, unless the file defines a material so named.
     static constexpr std::string_view kDefaultName = "default";
 
-    MaterialTable(const YamlSource& source, std::vector<Material>& materials)
-        : source_(source), materials_(materials) {}
+    MaterialTable(const YamlSource& source, const ReadSandbox& sandbox,
+                  std::vector<Material>& materials)
+        : source_(source), sandbox_(sandbox), materials_(materials) {}
 
     // Reads the top-level `materials` map of name -> material map.
     void read_named(const YAML::Node& section, const Field& field);
@@ -38,6 +42,7 @@ public:
 
 private:
     const YamlSource& source_;
+    const ReadSandbox& sandbox_;
     std::vector<Material>& materials_;
     std::map<std::string, std::uint32_t, std::less<>> named_;
     std::optional<std::uint32_t> default_;

@@ -66,7 +66,7 @@ void add_light_face(LightEntry& entry, std::size_t index, MaterialTable& materia
                              /*casts_shadow=*/false, /*emits_light=*/false});
 }
 
-Scene read_scene(const YamlSource& source, const YAML::Node& root) {
+Scene read_scene(const YamlSource& source, const ReadSandbox& sandbox, const YAML::Node& root) {
     const MapReader scene(
         source, root, Field("", "scene"), "scene",
         {"image", "camera", "ambient", "materials", "lights", "define", "objects"});
@@ -77,7 +77,7 @@ Scene read_scene(const YamlSource& source, const YAML::Node& root) {
     result.camera = read_camera(source, scene.require("camera").value, scene.field("camera"));
     result.ambient = scene.color("ambient", result.ambient);
 
-    MaterialTable materials(source, result.materials);
+    MaterialTable materials(source, sandbox, result.materials);
     if (const MapEntry* named = section(scene, "materials")) {
         materials.read_named(named->value, scene.field("materials"));
     }
@@ -90,7 +90,7 @@ Scene read_scene(const YamlSource& source, const YAML::Node& root) {
             result.lights.push_back(std::move(entry.light));
         }
     }
-    ShapeReader shapes(source);
+    ShapeReader shapes(source, sandbox);
     if (const MapEntry* define = section(scene, "define")) {
         shapes.read_definitions(define->value, scene.field("define"));
     }
@@ -164,7 +164,7 @@ bool may_hold_more_documents(const YamlSource& source, const YAML::Node& root) {
     return false;
 }
 
-Scene parse_documents(const YamlSource& source, std::string_view text) {
+Scene parse_documents(const YamlSource& source, const ReadSandbox& sandbox, std::string_view text) {
     const std::string yaml(text);
     const YAML::Node root = YAML::Load(yaml);
     if (may_hold_more_documents(source, root)) check_single_document(source, yaml);
@@ -178,7 +178,7 @@ Scene parse_documents(const YamlSource& source, std::string_view text) {
                               "(image, camera, materials, lights, objects), got " +
                                   describe(root));
     }
-    return read_scene(source, root);
+    return read_scene(source, sandbox, root);
 }
 
 struct FileCloser {
@@ -187,10 +187,11 @@ struct FileCloser {
 
 }  // namespace
 
-Scene parse_yaml_scene(std::string_view text, const std::string& file_name) {
+Scene parse_yaml_scene(std::string_view text, const std::string& file_name,
+                       const ReadSandbox& sandbox) {
     const YamlSource source(text, file_name);
     try {
-        return parse_documents(source, text);
+        return parse_documents(source, sandbox, text);
     } catch (const SceneError&) {
         throw;
     } catch (const YAML::DeepRecursion& e) {
@@ -210,7 +211,15 @@ Scene parse_yaml_scene(std::string_view text, const std::string& file_name) {
     }
 }
 
+Scene parse_yaml_scene(std::string_view text, const std::string& file_name) {
+    return parse_yaml_scene(text, file_name, make_read_sandbox(file_name));
+}
+
 Scene load_yaml_scene(const std::filesystem::path& file) {
+    return load_yaml_scene(file, make_read_sandbox(file));
+}
+
+Scene load_yaml_scene(const std::filesystem::path& file, const ReadSandbox& sandbox) {
     const std::string name = file.string();
     const auto fail = [&](const std::string& why) {
         return SceneError({name, 0, 0}, "cannot read scene file: " + why);
@@ -237,7 +246,7 @@ Scene load_yaml_scene(const std::filesystem::path& file) {
         if (text.size() > kMaxSceneFileBytes) throw too_large();
     }
     if (std::ferror(f.get())) throw fail(std::strerror(errno));
-    return parse_yaml_scene(text, name);
+    return parse_yaml_scene(text, name, sandbox);
 }
 
 }  // namespace glint

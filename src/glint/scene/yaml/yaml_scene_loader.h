@@ -6,6 +6,7 @@
 #include <string>
 #include <string_view>
 
+#include "glint/scene/read_sandbox.h"
 #include "glint/scene/scene.h"
 #include "glint/scene/scene_error.h"
 
@@ -15,10 +16,15 @@ namespace glint {
 inline constexpr std::uintmax_t kMaxSceneFileBytes = std::uintmax_t(64) << 20;
 
 // Reads and parses a scene file. Throws SceneError only; a file that cannot be read gives an
-// error without a line number.
+// error without a line number. The textures and meshes the scene names must lie inside the
+// sandbox; without one, inside the scene's folder.
+Scene load_yaml_scene(const std::filesystem::path& file, const ReadSandbox& sandbox);
 Scene load_yaml_scene(const std::filesystem::path& file);
 
-// Parses scene text; file_name is used in error locations. Throws SceneError only.
+// Parses scene text; file_name is used in error locations, and its folder is where the files
+// the scene names are looked for. Throws SceneError only.
+Scene parse_yaml_scene(std::string_view text, const std::string& file_name,
+                       const ReadSandbox& sandbox);
 Scene parse_yaml_scene(std::string_view text, const std::string& file_name);
 
 }  // namespace glint

@@ -6,6 +6,7 @@
 #include <optional>
 #include <string>
 
+#include "glint/scene/yaml/yaml_file_path.h"
 #include "glint/scene/yaml/yaml_shapes.h"
 #include "glint/scene/yaml/yaml_transform.h"
 
@@ -147,8 +148,9 @@ std::shared_ptr<const Model> ShapeReader::model(const MapReader& map) {
     const MapEntry& entry = map.require("file");
     const std::string name = read_string(source_, entry.value, map.field("file"));
     const std::filesystem::path file =
-        std::filesystem::path(source_.file_name()).parent_path() / name;
+        scene_file_path(source_, sandbox_, entry.value, name, "mesh file");
     ModelOptions options;
+    options.sandbox = sandbox_;
     if (map.has("crease_angle"))
         options.crease_angle_degrees = map.number("crease_angle", {0, 180});
     const auto key =

@@ -10,13 +10,16 @@
 
 #include "glint/geometry/shape.h"
 #include "glint/scene/mesh/model_loader.h"
+#include "glint/scene/read_sandbox.h"
 #include "glint/scene/yaml/yaml_map_reader.h"
 
 namespace glint {
 
 class ShapeReader {
 public:
-    explicit ShapeReader(const YamlSource& source) : source_(source) {}
+    // Mesh files must lie inside the sandbox, and so must the files they name.
+    ShapeReader(const YamlSource& source, const ReadSandbox& sandbox)
+        : source_(source), sandbox_(sandbox) {}
 
     const YamlSource& source() const { return source_; }
 
@@ -59,6 +62,7 @@ private:
                              std::vector<std::string_view> extra_keys, bool all_mesh_parts);
 
     const YamlSource& source_;
+    const ReadSandbox& sandbox_;
     std::map<std::pair<std::string, float>, std::shared_ptr<const Model>> models_;
     std::vector<std::string> warnings_;
     std::map<std::string, std::shared_ptr<const Shape>, std::less<>> definitions_;

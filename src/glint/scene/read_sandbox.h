@@ -1,0 +1,48 @@
+// The sandbox of a scene's reads: a scene reads files only inside its own folder and the folders
+// its user allows (`--allow-read`), so that a scene from elsewhere cannot make glint read, say,
+// ~/.ssh through a texture path. docs/reliability.md has what is checked and what is not.
+#pragma once
+
+#include <filesystem>
+#include <optional>
+#include <span>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace glint {
+
+struct ReadSandbox {
+    // Absolute, with every symbolic link resolved; the scene's own folder first.
+    std::vector<std::filesystem::path> folders;
+};
+
+// The sandbox of a scene (or model) file: its own folder and `allowed`. Throws SceneError for an
+// allowed folder that does not exist or is not a folder.
+ReadSandbox make_read_sandbox(const std::filesystem::path& scene_file,
+                              std::span<const std::filesystem::path> allowed = {});
+
+// Where a path leads: absolute, with ".", ".." and the symbolic links of the part that exists
+// resolved (std::filesystem::weakly_canonical). Nothing when it cannot be worked out (a loop
+// of links, a folder that cannot be searched).
+std::optional<std::filesystem::path> resolve_path(const std::filesystem::path& path);
+
+// Whether `path` is `folder` or lies under it, compared component by component: /a/bc is not
+// inside /a/b. Both are taken as they are; callers pass resolved paths.
+bool is_inside(const std::filesystem::path& path, const std::filesystem::path& folder);
+
+// Whether the sandbox lets the file at `path` (as the loader will open it) be read.
+bool may_read(const ReadSandbox& sandbox, const std::filesystem::path& path);
+
+// Why a path is refused, for the error the caller places (at the YAML key, the OBJ line, ...).
+struct ReadRefusal {
+    std::string message;
+    std::vector<std::string> notes;
+};
+
+// Nothing when the sandbox allows `path`; otherwise the error's text. `what` names the file's
+// role ("texture", "mesh file") and `written` is the path as the file gives it.
+std::optional<ReadRefusal> check_read(const ReadSandbox& sandbox, const std::filesystem::path& path,
+                                      std::string_view what, std::string_view written);
+
+}  // namespace glint
