@@ -14,11 +14,12 @@ namespace glint::cli {
 
 struct BenchCommand {
     std::string scene;
-    bool json = false;                  // one JSON object a line instead of a table
-    std::vector<std::string> accels;    // empty: every structure but the brute-force list
-    std::vector<std::string> ray_sets;  // empty: all three (primary, incoherent, shadow)
-    int threads = 0;                    // the "all threads" count; 0: every core
-    std::size_t rays = 1'000'000;       // rays a set
+    bool json = false;                    // one JSON object a line instead of a table
+    std::vector<std::string> accels;      // empty: every structure but the brute-force list
+    std::vector<std::string> ray_sets;    // empty: all three (primary, incoherent, shadow)
+    int threads = 0;                      // the "all threads" count; 0: every core
+    std::size_t rays = 1'000'000;         // rays a set
+    std::vector<std::string> allow_read;  // folders the scene may read besides its own
 };
 
 // Registers the subcommand and its options on app; returns it (to ask whether it was chosen).

@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <limits>
 
+#include "allow_read_option.h"
 #include "bench_command.h"
 #include "glint/accel/make_aggregate.h"
 #include "glint/scene/scene.h"
@@ -29,6 +30,7 @@ Examples:
   glint render scenes/showcase.yaml                     writes showcase.png
   glint render scenes/showcase.yaml -o big.exr --width 1920 --spp 16
   glint render scene.yaml --threads 1 --stats stats.json --quiet
+  glint render scenes/room.yaml --allow-read ~/models   the scene may read ~/models too
   glint bench scene.nff --json --rays 100000           build time, Mrays/s per structure
 )";
 
@@ -78,6 +80,7 @@ void add_render_command(CLI::App& app, glint::cli::RenderCommand& c) {
     render->add_flag("--ppm-ascii", c.ppm_ascii,
                      "Write .ppm images as ASCII (P3), not binary (P6)");
     render->add_flag("-q,--quiet", c.quiet, "No progress and no summary");
+    glint::cli::add_allow_read_option(*render, c.allow_read);
 }
 
 }  // namespace

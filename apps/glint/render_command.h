@@ -4,6 +4,7 @@
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace glint::cli {
 
@@ -21,8 +22,9 @@ struct RenderCommand {
     std::uint64_t seed = 0;
     bool quiet = false;
     bool ppm_ascii = false;
-    std::string stats_file;     // empty: none
-    std::string samples_image;  // empty: none
+    std::string stats_file;               // empty: none
+    std::string samples_image;            // empty: none
+    std::vector<std::string> allow_read;  // folders the scene may read besides its own
 };
 
 // Exit status: 0 on success, 2 on bad input (scene, options, an unwritable output path), 1 on

@@ -319,6 +319,60 @@ TEST_F(Cli, BenchTableAndBadInput) {
     EXPECT_NE(bad.err.find("bad.nff:5:7: error:"), std::string::npos) << bad.err;
 }
 
+// A scene reads only under its own folder unless --allow-read (repeatable, on render and bench)
+// names another; a folder that does not exist is bad usage.
+TEST_F(Cli, AllowReadLetsASceneReadAnotherFolder) {
+    fs::create_directories(dir_ / "scene");
+    fs::create_directories(dir_ / "models");
+    fs::create_directories(dir_ / "more");
+    const fs::path meshes = fs::path(GLINT_SOURCE_DIR) / "tests/data/meshes";
+    fs::copy_file(meshes / "tetra_ascii.stl", dir_ / "models" / "tetra.stl");
+    fs::copy_file(meshes / "cube_ascii.ply", dir_ / "more" / "cube.ply");
+    write_scene("scene/s.yaml",
+                "camera: {from: [0, 1, -5], at: [0, 0, 0]}\n"
+                "lights: [{type: point, position: [0, 5, -5]}]\n"
+                "objects:\n"
+                "  - {type: mesh, file: ../models/tetra.stl}\n"
+                "  - {type: mesh, file: ../more/cube.ply}\n");
+    const std::string render = "render scene/s.yaml --width 8 --spp 1 -q -o a.png";
+
+    const Outcome refused = run_glint(render);
+    EXPECT_EQ(refused.exit_code, 2);
+    EXPECT_NE(refused.err.find("scene/s.yaml:4:24: error: mesh file \"../models/tetra.stl\" is "
+                               "outside the folders the scene may read"),
+              std::string::npos)
+        << refused.err;
+    EXPECT_NE(refused.err.find("note: allow the folder with --allow-read DIR"), std::string::npos);
+    EXPECT_FALSE(fs::exists(dir_ / "a.png"));
+
+    const Outcome one = run_glint(render + " --allow-read models");
+    EXPECT_EQ(one.exit_code, 2);
+    EXPECT_NE(one.err.find("mesh file \"../more/cube.ply\""), std::string::npos) << one.err;
+
+    const Outcome both = run_glint(render + " --allow-read models --allow-read more");
+    EXPECT_EQ(both.exit_code, 0) << both.err;
+    EXPECT_TRUE(fs::exists(dir_ / "a.png"));
+    // Before the scene, too: each --allow-read takes one folder.
+    EXPECT_EQ(run_glint("render --allow-read models --allow-read more scene/s.yaml --width 8 "
+                        "--spp 1 -q -o b.png")
+                  .exit_code,
+              0);
+
+    const Outcome bench = run_glint(
+        "bench scene/s.yaml --rays 200 --threads 1 --accel bvh --allow-read models "
+        "--allow-read more");
+    EXPECT_EQ(bench.exit_code, 0) << bench.err;
+    EXPECT_EQ(run_glint("bench scene/s.yaml --rays 200 --threads 1 --accel bvh").exit_code, 2);
+
+    for (const std::string verb : {"render scene/s.yaml -q", "bench scene/s.yaml"}) {
+        const Outcome missing = run_glint(verb + " --allow-read nowhere");
+        EXPECT_EQ(missing.exit_code, 2) << verb;
+        EXPECT_NE(missing.err.find("nowhere"), std::string::npos) << missing.err;
+        const Outcome file = run_glint(verb + " --allow-read scene/s.yaml");
+        EXPECT_EQ(file.exit_code, 2) << verb;
+    }
+}
+
 TEST_F(Cli, BadNffExitsWithTwoAtTheOffendingToken) {
     write_scene("bad.nff",
                 "v\nfrom 0 0 -5\nat 0 0 0\nup 0 1 0\nangle 45\nhither 1\n"
