@@ -50,18 +50,26 @@ ReadSandbox make_read_sandbox(const std::filesystem::path& scene_file,
     return sandbox;
 }
 
+namespace {
+
+bool inside_a_folder(const ReadSandbox& sandbox, const std::filesystem::path& resolved) {
+    for (const std::filesystem::path& folder : sandbox.folders) {
+        if (is_inside(resolved, folder)) return true;
+    }
+    return false;
+}
+
+}  // namespace
+
 bool may_read(const ReadSandbox& sandbox, const std::filesystem::path& path) {
-    return !check_read(sandbox, path, "", "");
+    const auto resolved = resolve_path(path);
+    return resolved && inside_a_folder(sandbox, *resolved);
 }
 
 std::optional<ReadRefusal> check_read(const ReadSandbox& sandbox, const std::filesystem::path& path,
                                       std::string_view what, std::string_view written) {
     const auto resolved = resolve_path(path);
-    if (resolved) {
-        for (const std::filesystem::path& folder : sandbox.folders) {
-            if (is_inside(*resolved, folder)) return std::nullopt;
-        }
-    }
+    if (resolved && inside_a_folder(sandbox, *resolved)) return std::nullopt;
     ReadRefusal refusal;
     // A path is quoted whole, however long: the user must see which file it is.
     refusal.message = std::string(what) + " " + quote(written, written.size()) +
