@@ -266,6 +266,32 @@ TEST_F(SceneSandbox, AGltfBufferWithAnAbsoluteUriIsNotRead) {
     }
 }
 
+// glint loads a glTF file's images itself, looked for beside the file.
+TEST_F(SceneSandbox, AGltfImageLeadingOutIsRefusedNamingTheGltfFile) {
+    std::string gltf = read_text(kMeshes / "quad.gltf");
+    const std::string pbr = "\"pbrMetallicRoughness\": {", materials = "\"materials\": [";
+    ASSERT_NE(gltf.find(pbr), std::string::npos);
+    ASSERT_NE(gltf.find(materials), std::string::npos);
+    gltf.replace(gltf.find(pbr), pbr.size(), pbr + "\"baseColorTexture\": {\"index\": 0},");
+    fs::copy_file(kMeshes / "quad.bin", scene_ / "quad.bin");
+    const auto textured = [&](const std::string& image) {
+        std::string text = gltf;
+        text.replace(text.find(materials), materials.size(),
+                     "\"images\": [{\"uri\": \"" + image +
+                         "\"}], \"textures\": [{\"source\": 0}], " + materials);
+        write_text(scene_ / "textured.gltf", text);
+        return scene_ / "textured.gltf";
+    };
+    expect_loads(textured("sub/tex.png"));
+    const SceneError e = load_error(textured("../outside/tex.png"));
+    EXPECT_EQ(e.location().file, (scene_ / "textured.gltf").string());
+    EXPECT_EQ(e.message(),
+              "texture file \"../outside/tex.png\" is outside the folders the scene may read")
+        << format_scene_error(e);
+    EXPECT_TRUE(any_note_contains(e, "it resolves to " + (outside_ / "tex.png").string()));
+    expect_loads(textured("../outside/tex.png"), allowing_outside());
+}
+
 TEST_F(SceneSandbox, AModelFileRenderedOnItsOwnReadsOnlyItsFolder) {
     fs::copy_file(kMeshes / "spot.obj", scene_ / "spot.obj");
     fs::copy_file(kMeshes / "spot.mtl", scene_ / "spot.mtl");
