@@ -15,8 +15,12 @@ inline void add_allow_read_option(CLI::App& command, std::vector<std::string>& f
                     "Let the scene read files under DIR too (textures, meshes); it reads only "
                     "under its own folder otherwise. Repeatable")
         ->type_name("DIR")
-        ->check(CLI::ExistingDirectory)
-        ->allow_extra_args(false);
+        // Without a description of its own, the check's would read "DIR:DIR" in the help.
+        ->check(CLI::Validator(CLI::ExistingDirectory).description(""))
+        // One folder an occurrence, so that the scene after it is not taken for a second.
+        ->expected(1)
+        ->allow_extra_args(false)
+        ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
 }
 
 }  // namespace glint::cli
