@@ -15,6 +15,7 @@
 #include "glint/image/file_io.h"
 #include "glint/image/image_error.h"
 #include "glint/image/image_io.h"
+#include "glint/render/memory_estimate.h"
 #include "glint/render/render.h"
 #include "glint/render/world.h"
 #include "glint/scene/load_scene.h"
@@ -81,6 +82,22 @@ std::string with_thousands(std::uint64_t n) {
         out += digits[i];
     }
     return out;
+}
+
+// Refuses a render whose structures, film and images would not fit, before building them.
+void check_memory(const Scene& scene, AccelKind accel, const RenderCommand& c) {
+    const MemoryEstimate need = estimate_render_memory(scene, accel, !c.samples_image.empty());
+    const std::optional<std::uint64_t> room = c.max_memory ? c.max_memory : available_memory();
+    if (!room || need.total() <= *room) return;
+    const RenderSettings& s = scene.settings;
+    throw UsageError{"the render needs about " + format_bytes(need.total()) + " of memory (the " +
+                     std::string(accel_name(accel)) + " " + format_bytes(need.acceleration) +
+                     " for " + with_thousands(need.references) +
+                     " primitives and triangles, the film " + format_bytes(need.film) + " for " +
+                     std::to_string(s.width) + "x" + std::to_string(s.height) +
+                     " pixels), more than the " + format_bytes(*room) +
+                     (c.max_memory ? " --max-memory allows" : " this machine has available") +
+                     "; render fewer pixels, or set the limit with --max-memory SIZE"};
 }
 
 void print_summary(const std::string& output, const RenderSettings& s, const RenderResult& r) {
@@ -157,6 +174,7 @@ int run_render(const RenderCommand& command) {
         apply_overrides(command, scene.settings);
         const auto accel = accel_from_name(command.accel);
         if (!accel) throw UsageError{"unknown acceleration structure \"" + command.accel + "\""};
+        check_memory(scene, *accel, command);
         ShadowAcceleration shadows;
         shadows.light_buffer = command.shadow_accel != "none";
         shadows.occluder_cache = command.shadow_accel == "light-buffer+cache";

@@ -25,6 +25,9 @@ struct RenderCommand {
     std::string stats_file;               // empty: none
     std::string samples_image;            // empty: none
     std::vector<std::string> allow_read;  // folders the scene may read besides its own
+    // The most memory the render may take beyond the loaded scene; none: what the machine has
+    // available. Checked against an estimate before anything is built.
+    std::optional<std::uint64_t> max_memory;
 };
 
 // Exit status: 0 on success, 2 on bad input (scene, options, an unwritable output path), 1 on

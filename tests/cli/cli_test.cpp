@@ -138,12 +138,32 @@ TEST_F(Cli, OutOfMemoryIsReportedInWords) {
     GTEST_SKIP() << "the sanitizers' shadow memory does not fit under the limit";
 #endif
     const Outcome r = run_glint("render " + scene("showcase.yaml") +
-                                    " --width 20000 --height 13000 --threads 1 -q -o big.exr",
+                                    " --width 20000 --height 13000 --threads 1 -q -o big.exr"
+                                    " --max-memory 1T",  // past the estimate, into the limit
                                 "ulimit -v 1000000 && ");
     EXPECT_EQ(r.exit_code, 1) << r.err;
     EXPECT_EQ(r.err,
               "glint: error: out of memory: the scene or image is too large for this machine\n");
     EXPECT_FALSE(fs::exists(dir_ / "big.exr"));
+}
+
+TEST_F(Cli, ARenderTooLargeForItsMemoryIsRefusedBeforeBuilding) {
+    // 4000 x 3000 pixels of the gaussian film at 80 bytes a pixel: 916 MiB.
+    const Outcome r = run_glint("render " + scene("showcase.yaml") +
+                                " --width 4000 --filter gaussian -q -o big.png --max-memory 64M");
+    EXPECT_EQ(r.exit_code, 2) << r.err;
+    EXPECT_NE(r.err.find("glint: error: the render needs about "), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("the film 916 MiB for 4000x3000 pixels"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("more than the 64 MiB --max-memory allows"), std::string::npos) << r.err;
+    EXPECT_FALSE(fs::exists(dir_ / "big.png"));
+
+    EXPECT_EQ(
+        run_glint("render " + scene("showcase.yaml") + " --width 40 -q --max-memory 64M").exit_code,
+        0);
+    const Outcome bad = run_glint("render " + scene("showcase.yaml") + " --max-memory lots");
+    EXPECT_EQ(bad.exit_code, 2);
+    EXPECT_NE(bad.err.find("expected a size such as 512M or 16G, got \"lots\""), std::string::npos)
+        << bad.err;
 }
 
 TEST_F(Cli, RendersAndSummarisesTheRays) {

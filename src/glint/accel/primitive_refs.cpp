@@ -4,12 +4,14 @@
 
 namespace glint {
 
+std::size_t reference_count(const Shape& shape) {
+    const auto* mesh = std::get_if<TriangleMesh>(&shape);
+    return mesh ? mesh->data->triangles.size() : 1;
+}
+
 PrimitiveRefs::PrimitiveRefs(std::span<const Primitive> primitives) : primitives_(primitives) {
     std::size_t count = 0;
-    for (const Primitive& p : primitives) {
-        const auto* mesh = std::get_if<TriangleMesh>(&p.shape);
-        count += mesh ? mesh->data->triangles.size() : 1;
-    }
+    for (const Primitive& p : primitives) count += reference_count(p.shape);
     refs_.reserve(count);
     for (std::uint32_t i = 0; i < primitives.size(); ++i) {
         const auto* mesh = std::get_if<TriangleMesh>(&primitives[i].shape);

@@ -25,6 +25,9 @@ struct PrimitiveRef {
 // two-level structure) one reference. References run in primitive order and, within a mesh, in
 // triangle order, so "the lower reference" is "the lower primitive, then the lower triangle":
 // nearer()'s order at equal t.
+// The references a shape becomes: its triangles for a TriangleMesh, else one.
+std::size_t reference_count(const Shape& shape);
+
 class PrimitiveRefs {
 public:
     explicit PrimitiveRefs(std::span<const Primitive> primitives);

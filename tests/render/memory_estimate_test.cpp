@@ -1,0 +1,87 @@
+// The render's memory estimate: its counts and sizes worked out by hand, sizes as users write
+// them, and the estimate against what a built structure and film take.
+#include "glint/render/memory_estimate.h"
+
+#include <gtest/gtest.h>
+
+#include "glint/geometry/triangle_mesh.h"
+#include "glint/render/world.h"
+
+namespace glint {
+namespace {
+
+Scene spheres_and_a_mesh(int spheres, int triangles) {
+    Scene scene;
+    scene.settings.width = 400;
+    scene.settings.height = 300;
+    scene.materials.push_back({});
+    for (int i = 0; i < spheres; ++i) scene.objects.push_back({Sphere{{float(i), 0, 0}, 0.4f}});
+    MeshData arrays;
+    for (int i = 0; i < triangles; ++i) {
+        const auto first = std::uint32_t(arrays.positions.size());
+        arrays.positions.push_back({float(i), 0, 0});
+        arrays.positions.push_back({float(i) + 1, 0, 0});
+        arrays.positions.push_back({float(i), 1, 0});
+        arrays.triangles.push_back({first, first + 1, first + 2});
+    }
+    scene.objects.push_back({TriangleMesh{build_mesh(std::move(arrays)).mesh}});
+    return scene;
+}
+
+TEST(MemoryEstimate, CountsEveryTriangleAndEveryPixel) {
+    Scene scene = spheres_and_a_mesh(10, 1000);
+    const MemoryEstimate box = estimate_render_memory(scene, AccelKind::bvh, false);
+    EXPECT_EQ(box.references, 1010u);
+    // The one-pixel box: its float sums (16 bytes), the image (12) and the 8-bit copy (4).
+    EXPECT_EQ(box.film, 400u * 300u * (16 + 12 + 4));
+    EXPECT_EQ(estimate_render_memory(scene, AccelKind::bvh, true).film,
+              400u * 300u * (16 + 12 + 4 + 24));
+
+    scene.settings.filter = FilterSpec{FilterKind::gaussian, 1.5f, 0.5f};
+    // Fixed-point sums: four 128-bit integers a pixel.
+    EXPECT_EQ(estimate_render_memory(scene, AccelKind::bvh, false).film,
+              400u * 300u * (64 + 12 + 4));
+    EXPECT_EQ(box.total(), box.acceleration + box.film);
+}
+
+TEST(MemoryEstimate, IsNoLessThanWhatTheBuiltStructureTakes) {
+    for (const AccelKind accel :
+         {AccelKind::list, AccelKind::bvh, AccelKind::grid, AccelKind::kdtree}) {
+        Scene scene = spheres_and_a_mesh(2000, 20000);
+        const MemoryEstimate estimate = estimate_render_memory(scene, accel, false);
+        const World world(std::move(scene), accel);
+        const std::size_t built = make_aggregate(accel, world.primitives())->memory_bytes();
+        EXPECT_GE(estimate.acceleration, built) << accel_name(accel);
+        // And not wildly more (the kd-tree's allowance is for its worst scenes).
+        EXPECT_LE(estimate.acceleration, 16 * built + (1 << 20)) << accel_name(accel);
+    }
+}
+
+TEST(MemoryEstimate, SizesAsUsersWriteThem) {
+    EXPECT_EQ(parse_bytes("512"), 512u);
+    EXPECT_EQ(parse_bytes("512B"), 512u);
+    EXPECT_EQ(parse_bytes("4K"), 4096u);
+    EXPECT_EQ(parse_bytes("4k"), 4096u);
+    EXPECT_EQ(parse_bytes("64M"), 64u << 20);
+    EXPECT_EQ(parse_bytes("64MiB"), 64u << 20);
+    EXPECT_EQ(parse_bytes("1.5G"), 3u << 29);
+    EXPECT_EQ(parse_bytes("2GB"), std::uint64_t(2) << 30);
+    EXPECT_EQ(parse_bytes("1T"), std::uint64_t(1) << 40);
+    for (const char* bad :
+         {"", "G", "lots", "-1G", "1.5", "1e9", "0x10", "4Q", "nanG", "inf", "9999999T", "1 G"})
+        EXPECT_FALSE(parse_bytes(bad)) << bad;
+
+    EXPECT_EQ(format_bytes(512), "512 bytes");
+    EXPECT_EQ(format_bytes(4096), "4.0 KiB");
+    EXPECT_EQ(format_bytes(64u << 20), "64 MiB");
+    EXPECT_EQ(format_bytes(3u << 29), "1.5 GiB");
+}
+
+TEST(MemoryEstimate, TheMachineHasSomeMemoryAvailable) {
+    const auto available = available_memory();
+    ASSERT_TRUE(available);  // Linux: /proc/meminfo
+    EXPECT_GT(*available, std::uint64_t(16) << 20);
+}
+
+}  // namespace
+}  // namespace glint
