@@ -11,13 +11,13 @@
 #include <string_view>
 #include <utility>
 
-#include "allow_read_option.h"
 #include "glint/accel/make_aggregate.h"
 #include "glint/render/accel_benchmark.h"
 #include "glint/render/ray_sets.h"
 #include "glint/render/world.h"
 #include "glint/scene/load_scene.h"
 #include "glint/scene/scene_error.h"
+#include "scene_read_options.h"
 
 namespace glint::cli {
 
@@ -132,15 +132,14 @@ CLI::App* add_bench_command(CLI::App& app, BenchCommand& c) {
         ->check(CLI::Range(0, 4096));
     bench->add_option("--rays", c.rays, "Rays in each set (primary, incoherent, shadow)")
         ->check(CLI::Range(std::size_t(1), kMaxRaysPerSet));
-    add_allow_read_option(*bench, c.allow_read);
+    add_scene_read_options(*bench, c.reading);
     return bench;
 }
 
 int run_bench(const BenchCommand& command) {
     try {
         const std::vector<AccelKind> kinds = chosen_structures(command);
-        Scene scene =
-            load_scene(command.scene, {{command.allow_read.begin(), command.allow_read.end()}});
+        Scene scene = load_scene(command.scene, command.reading.load_options());
         for (const std::string& warning : scene.warnings)
             std::fprintf(stderr, "glint: warning: %s\n", warning.c_str());
 

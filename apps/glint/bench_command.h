@@ -6,20 +6,18 @@
 #include <string>
 #include <vector>
 
-namespace CLI {
-class App;
-}
+#include "scene_read_options.h"
 
 namespace glint::cli {
 
 struct BenchCommand {
     std::string scene;
-    bool json = false;                    // one JSON object a line instead of a table
-    std::vector<std::string> accels;      // empty: every structure but the brute-force list
-    std::vector<std::string> ray_sets;    // empty: all three (primary, incoherent, shadow)
-    int threads = 0;                      // the "all threads" count; 0: every core
-    std::size_t rays = 1'000'000;         // rays a set
-    std::vector<std::string> allow_read;  // folders the scene may read besides its own
+    bool json = false;                  // one JSON object a line instead of a table
+    std::vector<std::string> accels;    // empty: every structure but the brute-force list
+    std::vector<std::string> ray_sets;  // empty: all three (primary, incoherent, shadow)
+    int threads = 0;                    // the "all threads" count; 0: every core
+    std::size_t rays = 1'000'000;       // rays a set
+    SceneReadOptions reading;           // --allow-read, --max-file-size
 };
 
 // Registers the subcommand and its options on app; returns it (to ask whether it was chosen).

@@ -6,12 +6,12 @@
 #include <cstdio>
 #include <limits>
 
-#include "allow_read_option.h"
 #include "bench_command.h"
 #include "glint/accel/make_aggregate.h"
-#include "glint/render/memory_estimate.h"
 #include "glint/scene/scene.h"
 #include "render_command.h"
+#include "scene_read_options.h"
+#include "size_option.h"
 #include "whole_number_option.h"
 
 #ifndef GLINT_VERSION
@@ -81,20 +81,11 @@ void add_render_command(CLI::App& app, glint::cli::RenderCommand& c) {
     render->add_flag("--ppm-ascii", c.ppm_ascii,
                      "Write .ppm images as ASCII (P3), not binary (P6)");
     render->add_flag("-q,--quiet", c.quiet, "No progress and no summary");
-    glint::cli::add_allow_read_option(*render, c.allow_read);
-    render
-        ->add_option_function<std::string>(
-            "--max-memory",
-            [&c](const std::string& text) { c.max_memory = glint::parse_bytes(text); },
-            "Most memory the render may take beyond the scene (its structure, film and images), "
-            "checked before building them: 512M, 16G, ...; default: what the machine has free")
-        ->type_name("SIZE")
-        ->check(CLI::Validator(
-            [](std::string& text) -> std::string {
-                if (glint::parse_bytes(text)) return {};
-                return "expected a size such as 512M or 16G, got \"" + text + "\"";
-            },
-            "SIZE"));
+    glint::cli::add_scene_read_options(*render, c.reading);
+    glint::cli::add_size_option(
+        *render, "--max-memory", c.max_memory,
+        "Most memory the render may take beyond the scene (its structure, film and images), "
+        "checked before building them: 512M, 16G, ...; default: what the machine has free");
 }
 
 }  // namespace

@@ -167,8 +167,7 @@ int run_render(const RenderCommand& command) {
             if (const auto reason = unwritable_image_reason(command.samples_image))
                 throw UsageError{*reason};
         }
-        Scene scene =
-            load_scene(command.scene, {{command.allow_read.begin(), command.allow_read.end()}});
+        Scene scene = load_scene(command.scene, command.reading.load_options());
         for (const std::string& warning : scene.warnings)
             std::fprintf(stderr, "glint: warning: %s\n", warning.c_str());
         apply_overrides(command, scene.settings);

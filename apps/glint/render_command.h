@@ -6,6 +6,8 @@
 #include <string>
 #include <vector>
 
+#include "scene_read_options.h"
+
 namespace glint::cli {
 
 struct RenderCommand {
@@ -22,9 +24,9 @@ struct RenderCommand {
     std::uint64_t seed = 0;
     bool quiet = false;
     bool ppm_ascii = false;
-    std::string stats_file;               // empty: none
-    std::string samples_image;            // empty: none
-    std::vector<std::string> allow_read;  // folders the scene may read besides its own
+    std::string stats_file;     // empty: none
+    std::string samples_image;  // empty: none
+    SceneReadOptions reading;   // --allow-read, --max-file-size
     // The most memory the render may take beyond the loaded scene; none: what the machine has
     // available. Checked against an estimate before anything is built.
     std::optional<std::uint64_t> max_memory;

@@ -166,6 +166,26 @@ TEST_F(Cli, ARenderTooLargeForItsMemoryIsRefusedBeforeBuilding) {
         << bad.err;
 }
 
+TEST_F(Cli, MaxFileSizeLimitsEveryFileTheSceneReads) {
+    const Outcome r =
+        run_glint("render " + scene("features/meshes.yaml") + " --width 40 -q --max-file-size 64K");
+    EXPECT_EQ(r.exit_code, 2) << r.err;
+    EXPECT_NE(r.err.find("spot.obj: error: file is 330652 bytes, more than the limit of 65536 "
+                         "bytes"),
+              std::string::npos)
+        << r.err;
+    EXPECT_NE(r.err.find("note: raise the limit with --max-file-size SIZE"), std::string::npos)
+        << r.err;
+    EXPECT_EQ(
+        run_glint("render " + scene("features/meshes.yaml") + " --width 40 -q --max-file-size 1M")
+            .exit_code,
+        0);
+    const Outcome bench =
+        run_glint("bench " + scene("features/meshes.yaml") + " --rays 100 --max-file-size 64K");
+    EXPECT_EQ(bench.exit_code, 2) << bench.err;
+    EXPECT_EQ(run_glint("render " + scene("showcase.yaml") + " --max-file-size 1.5").exit_code, 2);
+}
+
 TEST_F(Cli, RendersAndSummarisesTheRays) {
     const Outcome r = run_glint("render " + scene("showcase.yaml") + " --width 40 --spp 1");
     ASSERT_EQ(r.exit_code, 0) << r.err;

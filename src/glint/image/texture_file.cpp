@@ -150,8 +150,8 @@ const std::array<float, 256>& srgb8_table() {
 
 Image decode_texture_image(std::span<const unsigned char> bytes,
                            const std::filesystem::path& name) {
-    if (bytes.size() > kMaxTextureFileBytes || bytes.size() > std::size_t(INT_MAX)) {
-        throw ImageError(name, "texture is larger than 1 GiB");
+    if (bytes.size() > kMaxDecodableTextureBytes) {
+        throw ImageError(name, "texture is larger than the decoder takes (2 GiB)");
     }
     const auto* data = bytes.data();
     const int length = int(bytes.size());
@@ -195,12 +195,13 @@ Image decode_texture_image(std::span<const unsigned char> bytes,
     return image;
 }
 
-Image load_texture_image(const std::filesystem::path& path) {
+Image load_texture_image(const std::filesystem::path& path, std::uintmax_t max_bytes) {
+    max_bytes = std::min(max_bytes, kMaxDecodableTextureBytes);
     std::error_code ec;
     const auto size = std::filesystem::file_size(path, ec);
-    if (!ec && size > kMaxTextureFileBytes) {
-        throw ImageError(path,
-                         "texture file is larger than 1 GiB (" + std::to_string(size) + " bytes)");
+    if (!ec && size > max_bytes) {
+        throw ImageError(path, "texture file is " + std::to_string(size) +
+                                   " bytes, more than the limit of " + std::to_string(max_bytes));
     }
     const std::vector<unsigned char> bytes = read_whole_file(path);  // names the file on failure
     return decode_texture_image(bytes, path);

@@ -12,10 +12,14 @@ namespace glint {
 
 // Larger texture files are refused before they are read (stb_image takes an int length).
 inline constexpr std::uintmax_t kMaxTextureFileBytes = std::uintmax_t(1) << 30;
+// The decoder takes sizes as int: no limit raises a texture file past this.
+inline constexpr std::uintmax_t kMaxDecodableTextureBytes = 0x7fffffff;
 
-// Throws ImageError naming `path` when the file cannot be read, is too large, is not an image
-// stb_image knows, or claims a size beyond check_image_size (checked before decoding).
-Image load_texture_image(const std::filesystem::path& path);
+// Throws ImageError naming `path` when the file cannot be read, is larger than max_bytes (or
+// kMaxDecodableTextureBytes), is not an image stb_image knows, or claims a size beyond
+// check_image_size (checked before decoding).
+Image load_texture_image(const std::filesystem::path& path,
+                         std::uintmax_t max_bytes = kMaxTextureFileBytes);
 
 // The same for an image already in memory (textures embedded in .glb files); `name` stands for
 // the file in errors.

@@ -12,6 +12,8 @@
 #include <new>
 #include <vector>
 
+#include "glint/scene/read_sandbox.h"
+
 namespace glint {
 
 namespace {
@@ -22,14 +24,6 @@ struct FileCloser {
     void operator()(std::FILE* f) const { std::fclose(f); }
 };
 
-std::string describe_limit(std::uint64_t max_bytes) {
-    constexpr std::uint64_t kMiB = std::uint64_t(1) << 20;
-    if (max_bytes >= kMiB && max_bytes % kMiB == 0) {
-        return std::to_string(max_bytes / kMiB) + " MiB";
-    }
-    return std::to_string(max_bytes) + " bytes";
-}
-
 class Reader {
 public:
     Reader(const std::filesystem::path& file, std::uint64_t max_bytes)
@@ -39,8 +33,10 @@ public:
         return SceneError({name_, 0, 0}, "cannot read scene file: " + why);
     }
     SceneError too_large(const char* what) const {
-        return SceneError({name_, 0, 0}, std::string("scene file ") + what + " the limit of " +
-                                             describe_limit(max_bytes_));
+        return SceneError(
+            {name_, 0, 0},
+            std::string("scene file ") + what + " the limit of " + describe_file_limit(max_bytes_),
+            {kRaiseFileLimitNote});
     }
 
     // Appends n bytes to text unless that passes the limit.

@@ -25,10 +25,10 @@ Scene load_scene(const std::filesystem::path& file, const LoadOptions& options) 
             {"scene formats are: .yaml, .yml (glint), .nff, .nff.gz (Haines' NFF), and "
              ".obj, .ply, .gltf, .glb, .stl (models)"});
     }
-    const ReadSandbox sandbox = make_read_sandbox(file, options.allow_read);
+    const ReadSandbox sandbox = make_read_sandbox(file, options.allow_read, options.max_file_bytes);
     if (yaml) return load_yaml_scene(file, sandbox);
-    // An NFF file names no other files: the sandbox has nothing to check.
-    if (nff) return load_nff_scene(file);
+    // An NFF file names no other files: only its own size is checked.
+    if (nff) return load_nff_scene(file, sandbox.file_limit(kMaxNffFileBytes));
     return load_model_scene(file, sandbox);
 }
 

@@ -2,7 +2,9 @@
 // that every front end (the tool, tests, bindings) loads scenes the same way.
 #pragma once
 
+#include <cstdint>
 #include <filesystem>
+#include <optional>
 #include <vector>
 
 #include "glint/scene/scene.h"
@@ -13,6 +15,9 @@ struct LoadOptions {
     // Folders whose files, at any depth, the scene may read besides its own folder's (textures,
     // meshes, and the files these name). Anything else is refused: see read_sandbox.h.
     std::vector<std::filesystem::path> allow_read;
+    // The largest file of any kind the scene may read, itself included; nothing: each kind's
+    // own limit (docs/cli.md, "Limits").
+    std::optional<std::uintmax_t> max_file_bytes;
 };
 
 // .yaml and .yml (glint's format), .nff and .nff.gz (Haines' NFF), and the model files Assimp

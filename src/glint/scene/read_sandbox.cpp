@@ -30,9 +30,17 @@ bool is_inside(const std::filesystem::path& path, const std::filesystem::path& f
     return true;
 }
 
+std::string describe_file_limit(std::uintmax_t bytes) {
+    constexpr std::uintmax_t kMiB = std::uintmax_t(1) << 20;
+    if (bytes >= kMiB && bytes % kMiB == 0) return std::to_string(bytes / kMiB) + " MiB";
+    return std::to_string(bytes) + " bytes";
+}
+
 ReadSandbox make_read_sandbox(const std::filesystem::path& scene_file,
-                              std::span<const std::filesystem::path> allowed) {
+                              std::span<const std::filesystem::path> allowed,
+                              std::optional<std::uintmax_t> max_file_bytes) {
     ReadSandbox sandbox;
+    sandbox.max_file_bytes = max_file_bytes;
     const std::filesystem::path own = scene_file.parent_path();
     // A scene's folder that cannot be resolved allows nothing: every read is refused.
     if (const auto folder = resolve_path(own.empty() ? "." : own))

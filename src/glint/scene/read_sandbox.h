@@ -3,6 +3,7 @@
 // ~/.ssh through a texture path. docs/reliability.md has what is checked and what is not.
 #pragma once
 
+#include <cstdint>
 #include <filesystem>
 #include <optional>
 #include <span>
@@ -15,12 +16,27 @@ namespace glint {
 struct ReadSandbox {
     // Absolute, with every symbolic link resolved; the scene's own folder first.
     std::vector<std::filesystem::path> folders;
+    // The largest file of any kind the scene may read (`--max-file-size`); nothing: each kind's
+    // own limit (kMaxSceneFileBytes, kMaxMeshFileBytes, ...).
+    std::optional<std::uintmax_t> max_file_bytes;
+
+    // The limit for a kind of file whose own limit is `kind_limit`.
+    std::uintmax_t file_limit(std::uintmax_t kind_limit) const {
+        return max_file_bytes.value_or(kind_limit);
+    }
 };
+
+// A file limit as messages give it: "64 MiB", or "1000 bytes" when not whole mebibytes.
+std::string describe_file_limit(std::uintmax_t bytes);
+
+// The note that goes with a file refused for its size.
+inline constexpr const char* kRaiseFileLimitNote = "raise the limit with --max-file-size SIZE";
 
 // The sandbox of a scene (or model) file: its own folder and `allowed`. Throws SceneError for an
 // allowed folder that does not exist or is not a folder.
 ReadSandbox make_read_sandbox(const std::filesystem::path& scene_file,
-                              std::span<const std::filesystem::path> allowed = {});
+                              std::span<const std::filesystem::path> allowed = {},
+                              std::optional<std::uintmax_t> max_file_bytes = {});
 
 // Where a path leads: absolute, with ".", ".." and the symbolic links of the part that exists
 // resolved (std::filesystem::weakly_canonical). Nothing when it cannot be worked out (a loop

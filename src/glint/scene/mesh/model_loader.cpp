@@ -28,6 +28,7 @@
 #include "glint/scene/mesh/sandboxed_io_system.h"
 #include "glint/scene/mesh/stl_validator.h"
 #include "glint/scene/mesh/text_lines.h"
+#include "glint/scene/read_sandbox.h"
 #include "glint/scene/scene_error.h"
 
 namespace glint {
@@ -53,7 +54,7 @@ Format format_of(const std::filesystem::path& file) {
 }
 
 // Size and kind of the file, before anything is read.
-void check_file(const std::filesystem::path& file) {
+void check_file(const std::filesystem::path& file, std::uintmax_t max_bytes) {
     std::error_code ec;
     const auto status = std::filesystem::status(file, ec);
     if (ec || !std::filesystem::exists(status)) {
@@ -65,10 +66,11 @@ void check_file(const std::filesystem::path& file) {
     const auto size = std::filesystem::file_size(file, ec);
     if (ec) throw SceneError({file.string(), 0, 0}, "cannot read file: " + ec.message());
     if (size == 0) throw SceneError({file.string(), 0, 0}, "file is empty");
-    if (size > kMaxMeshFileBytes) {
-        throw SceneError({file.string(), 0, 0}, "file is " + std::to_string(size) +
-                                                    " bytes; mesh files are limited to " +
-                                                    std::to_string(kMaxMeshFileBytes) + " bytes");
+    if (size > max_bytes) {
+        throw SceneError({file.string(), 0, 0},
+                         "file is " + std::to_string(size) + " bytes, more than the limit of " +
+                             describe_file_limit(max_bytes),
+                         {kRaiseFileLimitNote});
     }
 }
 
@@ -102,7 +104,7 @@ public:
 
     Model run() {
         const Format format = format_of(file_);
-        check_file(file_);
+        check_file(file_, mesh_limit());
         validate(format);
         const aiScene* scene = import(format);
         if (!scene->mRootNode) throw error("the file has no scene");
@@ -118,22 +120,24 @@ public:
     }
 
 private:
+    std::uintmax_t mesh_limit() const { return sandbox_.file_limit(kMaxMeshFileBytes); }
+
     SceneError error(std::string message, std::vector<std::string> notes = {}) const {
         return SceneError({name_, 0, 0}, std::move(message), std::move(notes));
     }
 
     void validate(Format format) {
         if (format == Format::obj) {
-            const std::string text = read_text_file(name_, kMaxMeshFileBytes);
+            const std::string text = read_text_file(name_, mesh_limit());
             ObjCheck check = validate_obj(file_, text, sandbox_);
             model_.warnings = std::move(check.warnings);
             material_libraries_ = std::move(check.material_libraries);
             undefined_materials_ = std::move(check.undefined_materials);
         } else if (format == Format::ply) {
-            const std::string bytes = read_text_file(name_, kMaxMeshFileBytes);
+            const std::string bytes = read_text_file(name_, mesh_limit());
             validate_ply(file_, bytes);
         } else if (format == Format::stl) {
-            const std::string bytes = read_text_file(name_, kMaxMeshFileBytes);
+            const std::string bytes = read_text_file(name_, mesh_limit());
             validate_stl(file_, bytes);
         }
     }
@@ -148,6 +152,33 @@ private:
                 "the count of its POSITION accessor",
                 {"Assimp drops the triangles that use such indices; glint refuses the "
                  "file rather than render it with holes"});
+        }
+    }
+
+    // Every position, normal and texture coordinate finite.
+    void check_finite(const aiScene& scene) const {
+        const auto finite = [](const aiVector3D& v) {
+            return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
+        };
+        for (unsigned m = 0; m < scene.mNumMeshes; ++m) {
+            const aiMesh& mesh = *scene.mMeshes[m];
+            const std::string mesh_name = mesh.mName.length > 0
+                                              ? "mesh \"" + std::string(mesh.mName.C_Str()) + "\""
+                                              : "mesh " + std::to_string(m);
+            const auto refuse = [&](const char* what, unsigned v, const aiVector3D& value) {
+                throw error(mesh_name + ": " + what + " " + std::to_string(v) +
+                            " has a coordinate that is not finite (" + std::to_string(value.x) +
+                            ", " + std::to_string(value.y) + ", " + std::to_string(value.z) + ")");
+            };
+            for (unsigned v = 0; v < mesh.mNumVertices; ++v) {
+                if (!finite(mesh.mVertices[v])) refuse("vertex", v, mesh.mVertices[v]);
+                if (mesh.mNormals && !finite(mesh.mNormals[v]))
+                    refuse("normal", v, mesh.mNormals[v]);
+                for (unsigned c = 0; c < AI_MAX_NUMBER_OF_TEXTURECOORDS; ++c) {
+                    if (mesh.mTextureCoords[c] && !finite(mesh.mTextureCoords[c][v]))
+                        refuse("texture coordinate", v, mesh.mTextureCoords[c][v]);
+                }
+            }
         }
     }
 
@@ -168,7 +199,9 @@ private:
         const aiScene* scene = nullptr;
         const AssimpWarnings log;
         try {
-            scene = importer_.ReadFile(name_, flags);
+            // Numbers are checked before post-processing: joining vertices compares positions,
+            // and a NaN one would be merged away with its triangle instead of being reported.
+            scene = importer_.ReadFile(name_, aiProcess_ValidateDataStructure);
         } catch (const std::exception& e) {
             throw error(std::string("Assimp cannot read it: ") + e.what());
         }
@@ -180,6 +213,14 @@ private:
                 refusal->notes.begin() + 1,
                 "Assimp opens it for the model (a glTF buffer, an OBJ material library)");
             throw error(refusal->message, refusal->notes);
+        }
+        if (scene) {
+            check_finite(*scene);
+            try {
+                scene = importer_.ApplyPostProcessing(flags);
+            } catch (const std::exception& e) {
+                throw error(std::string("Assimp cannot read it: ") + e.what());
+            }
         }
         check_assimp_log(format, log);
         if (!scene)
@@ -230,13 +271,7 @@ private:
         const bool flip = world.Determinant() < 0;
         const Matrix normal_matrix = Matrix(world).Inverse().Transpose();
         for (unsigned v = 0; v < mesh.mNumVertices; ++v) {
-            const aiVector3D p = mesh.mVertices[v];
-            if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z)) {
-                throw error(mesh_name + ": vertex " + std::to_string(v) +
-                            " has a coordinate that is not finite (" + std::to_string(p.x) + ", " +
-                            std::to_string(p.y) + ", " + std::to_string(p.z) + ")");
-            }
-            out.positions.push_back(transform_point(world, p));
+            out.positions.push_back(transform_point(world, mesh.mVertices[v]));
             if (normals) {
                 const Vector3 n = transform_vector(normal_matrix, mesh.mNormals[v]);
                 out.normals.push_back(Normal3(n));  // build_mesh normalises
@@ -348,7 +383,8 @@ private:
         const std::string key = found->lexically_normal().string();
         if (auto it = textures_.find(key); it != textures_.end()) return it->second;
         try {
-            return textures_[key] = std::make_shared<const Image>(load_texture_image(*found));
+            return textures_[key] = std::make_shared<const Image>(
+                       load_texture_image(*found, sandbox_.file_limit(kMaxTextureFileBytes)));
         } catch (const ImageError& e) {
             throw SceneError({found->string(), 0, 0}, e.detail, notes);
         }

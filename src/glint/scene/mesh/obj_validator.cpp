@@ -235,7 +235,8 @@ ObjCheck validate_obj(const std::filesystem::path& file, std::string_view text,
                                          "material library " + in_quotes(library) + " not found",
                                          {"looked for " + path.string()});
                 }
-                const std::string mtl = read_text_file(path.string(), kMaxMeshFileBytes);
+                const std::string mtl =
+                    read_text_file(path.string(), sandbox.file_limit(kMaxMeshFileBytes));
                 const auto names = validate_mtl(path, mtl, sandbox);
                 result.material_libraries.push_back(path);
                 materials.insert(materials.end(), names.begin(), names.end());

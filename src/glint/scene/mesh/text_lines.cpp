@@ -9,6 +9,8 @@
 #include <limits>
 #include <system_error>
 
+#include "glint/scene/read_sandbox.h"
+
 namespace glint {
 
 namespace {
@@ -91,9 +93,10 @@ std::string read_text_file(const std::string& file, std::uintmax_t max_bytes) {
     const auto size = std::filesystem::file_size(file, ec);
     if (ec) throw SceneError({file, 0, 0}, "cannot read file: " + ec.message());
     if (size > max_bytes) {
-        throw SceneError({file, 0, 0}, "file is " + std::to_string(size) +
-                                           " bytes, more than the limit of " +
-                                           std::to_string(max_bytes));
+        throw SceneError({file, 0, 0},
+                         "file is " + std::to_string(size) + " bytes, more than the limit of " +
+                             describe_file_limit(max_bytes),
+                         {kRaiseFileLimitNote});
     }
     std::ifstream in(file, std::ios::binary);
     std::string text(size, '\0');

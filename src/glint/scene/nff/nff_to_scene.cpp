@@ -226,6 +226,8 @@ Scene nff_to_scene(const NffScene& nff) {
     return scene;
 }
 
-Scene load_nff_scene(const std::filesystem::path& file) { return nff_to_scene(load_nff(file)); }
+Scene load_nff_scene(const std::filesystem::path& file, std::uint64_t max_bytes) {
+    return nff_to_scene(load_nff(file, max_bytes));
+}
 
 }  // namespace glint

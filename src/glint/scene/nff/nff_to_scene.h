@@ -3,8 +3,10 @@
 // the light and material conventions documented in docs/nff.md.
 #pragma once
 
+#include <cstdint>
 #include <filesystem>
 
+#include "glint/scene/nff/nff_parser.h"
 #include "glint/scene/nff/nff_scene.h"
 #include "glint/scene/scene.h"
 
@@ -13,7 +15,8 @@ namespace glint {
 // Throws SceneError when the file has no view.
 Scene nff_to_scene(const NffScene& nff);
 
-// load_nff (plain or gzip-compressed) then nff_to_scene. Throws SceneError only.
-Scene load_nff_scene(const std::filesystem::path& file);
+// load_nff (plain or gzip-compressed, at most max_bytes uncompressed) then nff_to_scene. Throws
+// SceneError only.
+Scene load_nff_scene(const std::filesystem::path& file, std::uint64_t max_bytes = kMaxNffFileBytes);
 
 }  // namespace glint

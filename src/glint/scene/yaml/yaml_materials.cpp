@@ -54,7 +54,8 @@ Texture read_image_texture(const YamlSource& source, const ReadSandbox& sandbox,
     const std::string name = read_string(source, file.value, map.field("file"));
     const auto path = scene_file_path(source, sandbox, file.value, name, "texture");
     try {
-        texture.image = std::make_shared<const Image>(load_texture_image(path));
+        texture.image = std::make_shared<const Image>(
+            load_texture_image(path, sandbox.file_limit(kMaxTextureFileBytes)));
     } catch (const ImageError& e) {
         throw source.error_at(file.value, "cannot read texture " + quote(name) + ": " + e.detail,
                               {"looked for " + path.string()});

@@ -224,8 +224,11 @@ Scene load_yaml_scene(const std::filesystem::path& file, const ReadSandbox& sand
     const auto fail = [&](const std::string& why) {
         return SceneError({name, 0, 0}, "cannot read scene file: " + why);
     };
+    const std::uintmax_t limit = sandbox.file_limit(kMaxSceneFileBytes);
     const auto too_large = [&] {
-        return SceneError({name, 0, 0}, "scene file is larger than the limit of 64 MiB");
+        return SceneError({name, 0, 0},
+                          "scene file is larger than the limit of " + describe_file_limit(limit),
+                          {kRaiseFileLimitNote});
     };
     std::error_code ec;
     const auto status = std::filesystem::status(file, ec);
@@ -235,7 +238,7 @@ Scene load_yaml_scene(const std::filesystem::path& file, const ReadSandbox& sand
     if (std::filesystem::is_regular_file(status)) {
         const auto size = std::filesystem::file_size(file, ec);
         if (ec) throw fail(ec.message());
-        if (size > kMaxSceneFileBytes) throw too_large();
+        if (size > limit) throw too_large();
     }
     const std::unique_ptr<std::FILE, FileCloser> f(std::fopen(name.c_str(), "rb"));
     if (!f) throw fail(std::strerror(errno));
@@ -243,7 +246,7 @@ Scene load_yaml_scene(const std::filesystem::path& file, const ReadSandbox& sand
     char buffer[1 << 16];
     while (const std::size_t n = std::fread(buffer, 1, sizeof buffer, f.get())) {
         text.append(buffer, n);
-        if (text.size() > kMaxSceneFileBytes) throw too_large();
+        if (text.size() > limit) throw too_large();
     }
     if (std::ferror(f.get())) throw fail(std::strerror(errno));
     return parse_yaml_scene(text, name, sandbox);

@@ -1,0 +1,43 @@
+// The options of the verbs that load a scene about what it may read: `--allow-read DIR`, the
+// folders besides its own (glint's sandbox, docs/reliability.md), and `--max-file-size SIZE`.
+#pragma once
+
+#include <CLI/CLI.hpp>
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "glint/scene/load_scene.h"
+#include "size_option.h"
+
+namespace glint::cli {
+
+struct SceneReadOptions {
+    std::vector<std::string> allow_read;         // folders the scene may read besides its own
+    std::optional<std::uint64_t> max_file_size;  // none: each kind of file's own limit
+
+    LoadOptions load_options() const {
+        return {{allow_read.begin(), allow_read.end()}, max_file_size};
+    }
+};
+
+inline void add_scene_read_options(CLI::App& command, SceneReadOptions& options) {
+    // Repeatable; a folder that does not exist is bad usage (exit 2), not a scene error later.
+    command
+        .add_option("--allow-read", options.allow_read,
+                    "Let the scene read files under DIR too (textures, meshes); it reads only "
+                    "under its own folder otherwise. Repeatable")
+        ->type_name("DIR")
+        // Without a description of its own, the check's would read "DIR:DIR" in the help.
+        ->check(CLI::Validator(CLI::ExistingDirectory).description(""))
+        // One folder an occurrence, so that the scene after it is not taken for a second.
+        ->expected(1)
+        ->allow_extra_args(false)
+        ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
+    add_size_option(command, "--max-file-size", options.max_file_size,
+                    "Largest file the scene may read, itself, meshes and textures alike (textures "
+                    "at most 2G); default: 64M for YAML, 1G for NFF and textures, 2G for meshes");
+}
+
+}  // namespace glint::cli
