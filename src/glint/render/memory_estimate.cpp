@@ -40,7 +40,7 @@ std::uint64_t bytes_per_reference(AccelKind accel) {
 // smallest array of cells).
 constexpr std::uint64_t kStructureBaseBytes = std::uint64_t(1) << 20;
 
-// Where the value of "Key:  123 kB" lines is, in bytes.
+// The value of /proc/meminfo's line "Key:  123 kB", in bytes.
 std::optional<std::uint64_t> meminfo_value(const std::string& key) {
     std::ifstream in("/proc/meminfo");
     std::string line;
