@@ -5,6 +5,7 @@ set -euo pipefail
 
 packages=(
     build-essential cmake pkg-config clang-format git
+    clang libclang-rt-14-dev
     libyaml-cpp-dev libtbb-dev libpng-dev zlib1g-dev libopenexr-dev libstb-dev
     libassimp-dev libembree-dev
     libcli11-dev libgtest-dev libgmock-dev libbenchmark-dev

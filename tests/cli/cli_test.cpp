@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "glint/image/image_io.h"
+#include "glint/math/sanitizer_build.h"
 
 namespace glint {
 namespace {
@@ -134,7 +135,7 @@ TEST_F(Cli, NonNumericOptionValuesAreNamedAsSuch) {
 // Too little memory for the image (1 GB of address space, 3 GB of pixels) is reported in
 // words, not as "std::bad_alloc". The sanitizers need far more address space than the limit.
 TEST_F(Cli, OutOfMemoryIsReportedInWords) {
-#if defined(__SANITIZE_ADDRESS__) || defined(__SANITIZE_THREAD__)
+#ifdef GLINT_UNDER_SANITIZER
     GTEST_SKIP() << "the sanitizers' shadow memory does not fit under the limit";
 #endif
     const Outcome r = run_glint("render " + scene("showcase.yaml") +

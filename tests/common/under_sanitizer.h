@@ -3,13 +3,12 @@
 // the whole suite runs under the sanitizers on every CI run.
 #pragma once
 
+#include "glint/math/sanitizer_build.h"
+
 namespace glint::testing {
 
-#if defined(__SANITIZE_ADDRESS__) || defined(__SANITIZE_THREAD__)  // GCC
+#ifdef GLINT_UNDER_SANITIZER
 inline constexpr bool kUnderSanitizer = true;
-#elif defined(__has_feature)  // Clang
-inline constexpr bool kUnderSanitizer =
-    __has_feature(address_sanitizer) || __has_feature(thread_sanitizer);
 #else
 inline constexpr bool kUnderSanitizer = false;
 #endif

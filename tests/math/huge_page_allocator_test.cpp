@@ -8,6 +8,8 @@
 #include <cstring>
 #include <numeric>
 
+#include "glint/math/sanitizer_build.h"
+
 namespace glint {
 namespace {
 
@@ -31,7 +33,7 @@ TEST(HugePageAllocator, SmallAndLargeBlocksAreAlignedAndWritable) {
     }
 }
 
-#if defined(__linux__) && !defined(__SANITIZE_ADDRESS__) && !defined(__SANITIZE_THREAD__)
+#if defined(__linux__) && !defined(GLINT_UNDER_SANITIZER)
 TEST(HugePageAllocator, LargeBlocksStartOnTwoMebibyteBoundaries) {
     for (const std::size_t bytes : {2 * kMiB, 3 * kMiB, 9 * kMiB + 7}) {
         void* p = allocate_large(bytes, 8);

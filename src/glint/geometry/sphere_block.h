@@ -96,6 +96,15 @@ struct Ray4 {
 // One ray's sphere-block tests on the path a traversal runs (kSimd), as BlockTester's for
 // triangles; accept(lane) is asked only about lanes the ray hits.
 class SphereTester {
+    // Lane k by Sphere::intersect. Above the templates that call it: clang must know a deduced
+    // return type where it is used.
+    auto scalar_hit(const SphereBlock& b, Interval t_range) const {
+        return [&b, t_range, this](int k) {
+            const auto hit = b.sphere(k).intersect(ray_, t_range);
+            return hit ? BlockHit{hit->t, 0, 0, k} : BlockHit{};
+        };
+    }
+
 public:
     explicit SphereTester(const Ray& ray)
         : ray_(ray)
@@ -148,13 +157,6 @@ private:
         unsigned lanes = 0;
         for (int k = 0; k < 4; ++k) lanes |= unsigned(b.id[k] != kNoSphere) << k;
         return lanes;
-    }
-    // Lane k by Sphere::intersect.
-    auto scalar_hit(const SphereBlock& b, Interval t_range) const {
-        return [&b, t_range, this](int k) {
-            const auto hit = b.sphere(k).intersect(ray_, t_range);
-            return hit ? BlockHit{hit->t, 0, 0, k} : BlockHit{};
-        };
     }
 
     Ray ray_;

@@ -152,6 +152,16 @@ Float4 exact_zero_edge(unsigned lanes, const TriangleBlock& b, const Ray4& r, Fl
 // has one. accept(lane) says whether a lane may be hit at all (a visibility mask, say); it is
 // asked only about lanes the ray hits.
 class BlockTester {
+    // Lane k by the scalar watertight test. Above the templates that call it: clang must know a
+    // deduced return type where it is used.
+    auto scalar_hit(const TriangleBlock& b, Interval t_range) const {
+        return [&b, t_range, this](int k) {
+            const auto hit = intersect_watertight(b.corner(k, 0), b.corner(k, 1), b.corner(k, 2),
+                                                  ray_.ray, ray_.shear, t_range);
+            return hit ? BlockHit{hit->t, hit->u, hit->v, k} : BlockHit{};
+        };
+    }
+
 public:
     explicit BlockTester(const Ray& ray)
         : ray_(ray)
@@ -205,14 +215,6 @@ private:
         unsigned lanes = 0;
         for (int k = 0; k < 4; ++k) lanes |= unsigned(b.id[k] != kNoTriangle) << k;
         return lanes;
-    }
-    // Lane k by the scalar watertight test.
-    auto scalar_hit(const TriangleBlock& b, Interval t_range) const {
-        return [&b, t_range, this](int k) {
-            const auto hit = intersect_watertight(b.corner(k, 0), b.corner(k, 1), b.corner(k, 2),
-                                                  ray_.ray, ray_.shear, t_range);
-            return hit ? BlockHit{hit->t, hit->u, hit->v, k} : BlockHit{};
-        };
     }
 
     BlockRay ray_;

@@ -3,7 +3,9 @@
 
 #include <cstdint>
 
-#if defined(__linux__) && !defined(__SANITIZE_ADDRESS__) && !defined(__SANITIZE_THREAD__)
+#include "glint/math/sanitizer_build.h"
+
+#if defined(__linux__) && !defined(GLINT_UNDER_SANITIZER)
 #include <sys/mman.h>
 #define GLINT_HUGE_PAGES 1
 #endif
