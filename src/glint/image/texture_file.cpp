@@ -16,6 +16,7 @@
 #include "glint/image/image_error.h"
 #include "glint/image/image_limits.h"
 #include "glint/image/srgb.h"
+#include "glint/image/stb_hazards.h"
 
 // Only the formats glint documents; static so that nothing clashes with a libstb linked elsewhere.
 #define STB_IMAGE_STATIC
@@ -40,8 +41,6 @@ std::string stb_reason() {
     const char* reason = stbi_failure_reason();
     return reason && *reason ? reason : "unknown error";
 }
-
-constexpr const char* kTruncated = "the image data ends early (the file is truncated)";
 
 // stb_image reading from memory through callbacks, noting whether a decoder asked for bytes
 // beyond the end: stb hands it zeros, which would turn a truncated file into an image with a
@@ -93,7 +92,7 @@ std::unique_ptr<T, StbFree> decode(std::span<const unsigned char> bytes, Load lo
     int w = 0, h = 0, n = 0;
     std::unique_ptr<T, StbFree> decoded(load(&MemoryReader::callbacks(), &reader, &w, &h, &n, 3));
     if (reader.ran_out()) {
-        error = kTruncated;
+        error = kTruncatedTexture;
         return nullptr;
     }
     if (!decoded || w != width || h != height) {
@@ -101,39 +100,6 @@ std::unique_ptr<T, StbFree> decode(std::span<const unsigned char> bytes, Load lo
         return nullptr;
     }
     return decoded;
-}
-
-// Why stb_image's Radiance HDR decoder would loop forever on `bytes`, if it would: its
-// run-length scanlines never advance past a count of zero, and past the end of the data it reads
-// zeros. The scanlines are walked here as stb walks them (stb refuses other damage itself).
-std::optional<std::string> hdr_hang(std::span<const unsigned char> bytes, int width, int height) {
-    if (width < 8 || width >= 32768) return std::nullopt;  // flat data, read straight
-    const std::string_view text(reinterpret_cast<const char*>(bytes.data()), bytes.size());
-    std::size_t p = text.find("\n\n");  // the header's end; the size line follows
-    if (p != std::string_view::npos) p = text.find('\n', p + 2);
-    if (p == std::string_view::npos) return std::nullopt;
-    ++p;
-    const auto next = [&]() -> int { return p < bytes.size() ? bytes[p++] : -1; };
-    for (int j = 0; j < height; ++j) {
-        const int c1 = next(), c2 = next(), high = next();
-        if (high < 0) return kTruncated;
-        if (c1 != 2 || c2 != 2 || (high & 0x80)) return std::nullopt;  // flat from here on
-        if (next() < 0) return kTruncated;
-        for (int channel = 0; channel < 4; ++channel) {
-            for (int i = 0; i < width;) {
-                const int count = next();
-                if (count < 0) return kTruncated;
-                if (count == 0)
-                    return "corrupt HDR: a run-length count of 0 in scanline " + std::to_string(j);
-                const int run = count > 128 ? count - 128 : count;
-                const std::size_t bytes_of_run = count > 128 ? 1 : std::size_t(count);
-                if (bytes_of_run > bytes.size() - p) return kTruncated;
-                p += bytes_of_run;
-                i += run;
-            }
-        }
-    }
-    return std::nullopt;
 }
 
 // Decoding 8-bit values through a table keeps the pow() calls to 256.
@@ -155,12 +121,17 @@ Image decode_texture_image(std::span<const unsigned char> bytes,
     }
     const auto* data = bytes.data();
     const int length = int(bytes.size());
+    // Before stbi_info, which reads the tables that come before a JPEG's frame header.
+    if (const auto overflow = jpeg_overflow(bytes))
+        throw ImageError(name, "cannot decode JPEG image: " + *overflow);
     int width = 0, height = 0, channels = 0;
     if (!stbi_info_from_memory(data, length, &width, &height, &channels)) {
         throw ImageError(name, "not a PNG, JPEG, HDR, TGA or BMP image stb_image can read (" +
                                    stb_reason() + ")");
     }
     check_image_size(name, width, height);
+    if (tga_too_short(bytes, width, height))
+        throw ImageError(name, std::string("cannot decode image: ") + kTruncatedTexture);
 
     Image image(width, height);
     const std::size_t pixels = std::size_t(width) * std::size_t(height);
