@@ -5,8 +5,13 @@
 #include <ImfChannelList.h>
 #include <ImfFrameBuffer.h>
 #include <ImfHeader.h>
+#include <ImfIO.h>
 #include <ImfInputFile.h>
 #include <ImfOutputFile.h>
+#include <ImfStdIO.h>
+#include <ImfTileDescription.h>
+#include <ImfVersion.h>
+#include <ImfXdr.h>
 
 #include <cstddef>
 #include <cstdint>
@@ -24,6 +29,38 @@ static_assert(sizeof(Color) == 3 * sizeof(float) && offsetof(Color, g) == sizeof
               offsetof(Color, b) == 2 * sizeof(float));
 
 constexpr const char* kChannels[3] = {"R", "G", "B"};
+
+// The first part's header, read alone: Imf::InputFile's constructor allocates line and tile
+// buffers as large as the header claims, before glint could refuse an absurd size. Files whose
+// header does not parse are left to InputFile, which says what is wrong with them.
+void check_exr_header(const std::filesystem::path& path) {
+    Imf::Header header;
+    try {
+        Imf::StdIFStream stream(path.c_str());
+        char magic[4];
+        stream.read(magic, 4);
+        if (!Imf::isImfMagic(magic)) return;
+        int version = 0;
+        Imf::Xdr::read<Imf::StreamIO>(stream, version);
+        header.readFrom(stream, version);
+        header.sanityCheck(Imf::isTiled(version));
+    } catch (const std::exception&) {
+        return;
+    }
+    const Imath::Box2i window = header.dataWindow();
+    check_image_size(path, std::int64_t(window.max.x) - window.min.x + 1,
+                     std::int64_t(window.max.y) - window.min.y + 1);
+    if (header.hasTileDescription()) {
+        const Imf::TileDescription& tile = header.tileDescription();
+        if (tile.xSize > std::uint64_t(kMaxImageDimension) ||
+            tile.ySize > std::uint64_t(kMaxImageDimension) ||
+            std::uint64_t(tile.xSize) * tile.ySize > std::uint64_t(kMaxImagePixels)) {
+            throw ImageError(path, "tile size " + std::to_string(tile.xSize) + "x" +
+                                       std::to_string(tile.ySize) +
+                                       " is larger than glint accepts");
+        }
+    }
+}
 
 }  // namespace
 
@@ -52,6 +89,7 @@ void write_exr(const std::filesystem::path& path, const Image& image) {
 
 Image read_exr(const std::filesystem::path& path) {
     try {
+        check_exr_header(path);
         Imf::InputFile file(path.c_str());
         const Imath::Box2i window = file.header().dataWindow();
         const std::int64_t width = std::int64_t(window.max.x) - window.min.x + 1;
