@@ -60,14 +60,14 @@ std::size_t size_of(PlyType t) {
     return 1;
 }
 
-// List lengths are counts; a float count type could hold anything, and the cast to an integer
-// is defined only in range.
 // A value for a message: integers as such, anything else (NaN, huge) as a double.
 std::string number_text(double v) {
     if (std::abs(v) < 1e15 && v == std::floor(v)) return std::to_string((long long)v);
     return std::to_string(v);
 }
 
+// List lengths are counts; a float count type could hold anything, and the cast to an integer
+// is defined only in range.
 bool valid_length(double n) { return n >= 0 && n < 2147483648.0 && n == std::floor(n); }
 
 bool is_float(PlyType t) { return t == PlyType::float32 || t == PlyType::float64; }
@@ -75,6 +75,12 @@ bool is_float(PlyType t) { return t == PlyType::float32 || t == PlyType::float64
 bool is_face_index_list(const PlyElement& e, const PlyProperty& p) {
     return e.name == "face" && p.is_list &&
            (p.name == "vertex_indices" || p.name == "vertex_index");
+}
+
+// As for OBJ faces; Assimp's triangulation also aborts on a face of none.
+std::string too_few_vertices(long long face, double length) {
+    return "face " + std::to_string(face) + " has " + std::to_string((long long)length) +
+           " vertices; a face needs at least 3";
 }
 
 std::string count_of(long long n, const std::string& name) {
@@ -350,6 +356,10 @@ private:
                 throw lines_.error_at(n, at->column, int(at->text.size()),
                                       "list length must be a whole number in [0, 2^31)");
             }
+            if (is_face_index_list(e, p) && length < 3) {
+                throw lines_.error_at(n, at->column, int(at->text.size()),
+                                      too_few_vertices(entry, length));
+            }
             for (long long i = 0; i < (long long)length; ++i) {
                 const auto [value, token] = next(p.type, p.name.c_str());
                 if (is_face_index_list(e, p)) {
@@ -396,6 +406,9 @@ private:
                                               e.name + " " + std::to_string(entry) +
                                                   " has a list length that is not a whole number "
                                                   "in [0, 2^31)");
+                    }
+                    if (is_face_index_list(e, p) && *length < 3) {
+                        throw lines_.error_at(e.line, 1, span, too_few_vertices(entry, *length));
                     }
                     for (long long i = 0; i < (long long)*length; ++i) {
                         const auto v = reader.read(p.type);
