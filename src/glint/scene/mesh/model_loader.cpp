@@ -193,7 +193,7 @@ private:
             flags |= aiProcess_RemoveComponent;
             importer_.SetPropertyInteger(AI_CONFIG_PP_RVC_FLAGS, aiComponent_NORMALS);
         }
-        // The importer owns its IOSystem.
+        // The importer owns its IOSystem, which also closes the files an import leaves open.
         auto* io = new SandboxedIOSystem(sandbox_, file_);
         importer_.SetIOHandler(io);
         const aiScene* scene = nullptr;

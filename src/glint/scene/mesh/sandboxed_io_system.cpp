@@ -1,4 +1,5 @@
-// The sandboxed IOSystem: Assimp's default file access behind the sandbox check.
+// The sandboxed IOSystem: Assimp's file access (closing what an import leaves open) behind the
+// sandbox check.
 #include "glint/scene/mesh/sandboxed_io_system.h"
 
 #include <utility>
@@ -24,7 +25,7 @@ Assimp::IOStream* SandboxedIOSystem::Open(const char* file, const char* mode) {
     if (mode == nullptr || mode[0] != 'r' || std::string(mode).find('+') != std::string::npos) {
         return nullptr;
     }
-    return allowed(file) ? DefaultIOSystem::Open(file, mode) : nullptr;
+    return allowed(file) ? ClosingIOSystem::Open(file, mode) : nullptr;
 }
 
 }  // namespace glint

@@ -3,17 +3,16 @@
 // would open any of them. Internal to glint_scene: Assimp stays private.
 #pragma once
 
-#include <assimp/DefaultIOSystem.h>
-
 #include <filesystem>
 #include <optional>
 #include <string>
 
+#include "glint/scene/mesh/closing_io_system.h"
 #include "glint/scene/read_sandbox.h"
 
 namespace glint {
 
-class SandboxedIOSystem : public Assimp::DefaultIOSystem {
+class SandboxedIOSystem : public ClosingIOSystem {
 public:
     // The model file itself may be read wherever it is: the scene or the user named it.
     SandboxedIOSystem(ReadSandbox sandbox, const std::filesystem::path& model_file);
