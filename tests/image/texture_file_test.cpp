@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <fstream>
 #include <functional>
+#include <iterator>
 #include <string>
 #include <vector>
 
@@ -136,6 +137,24 @@ TEST(TextureFile, EightBitPngIsDecodedFromSrgb) {
     EXPECT_NEAR(back.at(0, 0).r, 0.5f, 0.005f);
     EXPECT_NEAR(back.at(0, 0).g, 0.21586f, 0.002f);
     EXPECT_EQ(back.at(0, 0).b, 1);
+    EXPECT_EQ(back.at(1, 0).r, 0);
+}
+
+TEST(TextureFile, PngWhoseFirstDataChunkIsEmptyLoads) {
+    // Empty IDAT chunks are allowed; stb's decoder passed a null pointer to memcpy for a first
+    // one (found by fuzzing, under UBSan), so glint drops them before decoding.
+    Image image(2, 1);
+    image.at(0, 0) = {1, 1, 1};
+    const auto path = kOut / "written.png";
+    std::filesystem::create_directories(kOut);
+    write_image(path, image);
+    std::ifstream in(path, std::ios::binary);
+    std::string png((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    const std::size_t first_data = png.find("IDAT") - 4;  // the chunk starts with its length
+    png.insert(first_data, std::string("\0\0\0\0IDAT\x35\xAF\x06\x1E", 12));  // CRC of "IDAT"
+    const Image back = load_texture_image(write_bytes("empty-first-idat.png", png));
+    ASSERT_EQ(back.width, 2);
+    EXPECT_EQ(back.at(0, 0).r, 1);
     EXPECT_EQ(back.at(1, 0).r, 0);
 }
 

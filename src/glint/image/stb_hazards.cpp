@@ -2,7 +2,9 @@
 #include "glint/image/stb_hazards.h"
 
 #include <cstddef>
+#include <cstdint>
 #include <string_view>
+#include <utility>
 
 namespace glint {
 
@@ -37,65 +39,121 @@ std::optional<std::string> hdr_hang(std::span<const unsigned char> bytes, int wi
     return std::nullopt;
 }
 
-bool tga_too_short(std::span<const unsigned char> bytes, int width, int height) {
-    const auto starts = [&](std::string_view magic) {
-        return bytes.size() >= magic.size() &&
-               std::string_view(reinterpret_cast<const char*>(bytes.data()), magic.size()) == magic;
-    };
-    if (starts("\x89PNG") || starts("\xFF\xD8") || starts("BM") || starts("#?")) return false;
-    if (bytes.size() < 18) return true;
-    const std::size_t palette_entry_bytes = (std::size_t(bytes[7]) + 7) / 8;
-    const std::size_t palette_bytes =
-        (std::size_t(bytes[5]) | std::size_t(bytes[6]) << 8) * (bytes[1] ? palette_entry_bytes : 0);
-    const std::size_t header = 18 + std::size_t(bytes[0]) + palette_bytes;
-    const std::size_t pixel_bytes = (std::size_t(bytes[16]) + 7) / 8;
-    const std::size_t pixels = std::size_t(width) * std::size_t(height);
-    const bool run_length = bytes[2] >= 9;
-    const std::size_t data =
-        run_length ? (pixels + 127) / 128 * (1 + pixel_bytes) : pixels * pixel_bytes;
-    return bytes.size() < header + data;
+namespace {
+
+bool starts_with(std::span<const unsigned char> bytes, std::string_view magic) {
+    return bytes.size() >= magic.size() &&
+           std::string_view(reinterpret_cast<const char*>(bytes.data()), magic.size()) == magic;
 }
 
-// Markers as stb reads them: segments carry a length and are stepped over whole; between them,
-// in entropy-coded data, a 0xFF is followed by 0x00 (a stuffed byte) or a restart marker.
+// As stb tells a JPEG: its first marker, after any fill bytes FF, is SOI (FF D8).
+bool is_jpeg(std::span<const unsigned char> bytes) {
+    if (bytes.empty() || bytes[0] != 0xFF) return false;
+    std::size_t p = 1;
+    while (p < bytes.size() && bytes[p] == 0xFF) ++p;
+    return p < bytes.size() && bytes[p] == 0xD8;
+}
+
+std::uint64_t big_endian32(std::span<const unsigned char> bytes, std::size_t at) {
+    return std::uint64_t(bytes[at]) << 24 | std::uint64_t(bytes[at + 1]) << 16 |
+           std::uint64_t(bytes[at + 2]) << 8 | bytes[at + 3];
+}
+
+// The fewest bytes a TGA of this size takes: a run-length packet holds at most 128 pixels.
+std::uint64_t tga_bytes(std::span<const unsigned char> bytes, std::uint64_t pixels) {
+    if (bytes.size() < 18) return 18;
+    const std::uint64_t palette_entry_bytes = (std::uint64_t(bytes[7]) + 7) / 8;
+    const std::uint64_t palette_bytes = (std::uint64_t(bytes[5]) | std::uint64_t(bytes[6]) << 8) *
+                                        (bytes[1] ? palette_entry_bytes : 0);
+    const std::uint64_t pixel_bytes = (std::uint64_t(bytes[16]) + 7) / 8;
+    const bool run_length = bytes[2] >= 9;
+    return 18 + bytes[0] + palette_bytes +
+           (run_length ? (pixels + 127) / 128 * (1 + pixel_bytes) : pixels * pixel_bytes);
+}
+
+// Deflate packs at most 1032 bytes into one; a row is a filter byte and its packed samples.
+std::uint64_t png_bytes(std::span<const unsigned char> bytes, std::uint64_t width,
+                        std::uint64_t height) {
+    if (bytes.size() < 26) return 26;
+    const unsigned depth = bytes[24], colour_type = bytes[25];
+    const unsigned channels = colour_type == 2   ? 3
+                              : colour_type == 4 ? 2
+                              : colour_type == 6 ? 4
+                                                 : 1;
+    const std::uint64_t row = 1 + (width * depth * channels + 7) / 8;
+    return height * row / 1032;
+}
+
+}  // namespace
+
+bool too_short_for_size(std::span<const unsigned char> bytes, int width, int height) {
+    const std::uint64_t w = std::uint64_t(width), h = std::uint64_t(height), pixels = w * h;
+    std::uint64_t least = 0;
+    if (starts_with(bytes, "\x89PNG")) {
+        least = png_bytes(bytes, w, h);
+    } else if (is_jpeg(bytes)) {
+        // Every 8 x 8 block of the full-resolution component codes its DC term in 1 bit or more.
+        least = pixels / 512;
+    } else if (starts_with(bytes, "BM")) {
+        const unsigned bits = bytes.size() >= 30 ? bytes[28] | unsigned(bytes[29]) << 8 : 0;
+        least = h * ((w * bits + 7) / 8);  // stb reads no run-length BMPs
+    } else if (starts_with(bytes, "#?")) {
+        // A run-length scanline: a 4-byte header, then per channel 2 bytes a run of up to 127.
+        least = h * (4 + 4 * 2 * ((w + 126) / 127));
+    } else {
+        least = tga_bytes(bytes, pixels);
+    }
+    return bytes.size() < least;
+}
+
+std::vector<unsigned char> png_without_empty_data(std::span<const unsigned char> bytes) {
+    if (!starts_with(bytes, "\x89PNG\r\n\x1a\n")) return {};
+    // Chunks: a 4-byte length, a 4-byte type, the data, a 4-byte CRC.
+    std::vector<std::pair<std::size_t, std::size_t>> empty_data;  // offset and size of each
+    std::size_t p = 8;
+    while (p + 12 <= bytes.size()) {
+        const std::uint64_t length = big_endian32(bytes, p);
+        if (length > bytes.size() - p - 12) break;
+        if (length == 0 && starts_with(bytes.subspan(p + 4), "IDAT")) empty_data.push_back({p, 12});
+        p += 12 + std::size_t(length);
+    }
+    if (empty_data.empty()) return {};
+    std::vector<unsigned char> out;
+    out.reserve(bytes.size());
+    std::size_t from = 0;
+    for (const auto& [at, size] : empty_data) {
+        out.insert(out.end(), bytes.begin() + std::ptrdiff_t(from),
+                   bytes.begin() + std::ptrdiff_t(at));
+        from = at + size;
+    }
+    out.insert(out.end(), bytes.begin() + std::ptrdiff_t(from), bytes.end());
+    return out;
+}
+
+// Every FF C4 pair is taken for a DHT marker, wherever it is: stb's reading of the segments
+// drifts from their lengths on damaged data (it reads tables past a segment's end), so only the
+// superset is sure to hold every table stb reads. In a sound file FF C4 appears only as the
+// marker (entropy-coded data escapes FF), or inside an embedded thumbnail's own sound tables.
 std::optional<std::string> jpeg_overflow(std::span<const unsigned char> bytes) {
-    if (bytes.size() < 2 || bytes[0] != 0xFF || bytes[1] != 0xD8) return std::nullopt;
+    if (!is_jpeg(bytes)) return std::nullopt;
     const std::size_t size = bytes.size();
-    std::size_t p = 2;
-    while (p + 1 < size) {
-        if (bytes[p] != 0xFF) {
-            ++p;
-            continue;
-        }
-        const unsigned marker = bytes[p + 1];
-        if (marker == 0xFF) {  // fill byte
-            ++p;
-            continue;
-        }
-        const bool bare = marker == 0x00 || marker == 0x01 || (marker >= 0xD0 && marker <= 0xD8);
-        if (bare) {
-            p += 2;
-            continue;
-        }
-        if (marker == 0xD9 || p + 3 >= size) return std::nullopt;  // end of image
+    for (std::size_t p = 0; p + 4 <= size; ++p) {
+        if (bytes[p] != 0xFF || bytes[p + 1] != 0xC4) continue;
         const std::size_t length = std::size_t(bytes[p + 2]) << 8 | bytes[p + 3];
-        if (marker == 0xC4) {
-            // stb reads tables while the length it counts down stays positive, even past the
-            // segment: each a class byte, 16 counts, and as many symbols as they add up to.
-            long left = long(length) - 2;
-            std::size_t q = p + 4;
-            while (left > 0 && q + 17 <= size) {
-                int codes = 0;
-                for (std::size_t i = 1; i <= 16; ++i) codes += bytes[q + i];
-                if (codes > 256) {
-                    return "corrupt JPEG: a Huffman table has " + std::to_string(codes) +
-                           " codes, more than 256";
-                }
-                left -= 17 + codes;
-                q += 17 + std::size_t(codes);
+        // stb reads tables while the length it counts down stays positive, even past the
+        // segment: each a class byte, 16 counts, and as many symbols as they add up to.
+        long left = long(length) - 2;
+        std::size_t q = p + 4;
+        while (left > 0 && q < size) {
+            int codes = 0;  // past the end of the data stb reads zeros
+            for (std::size_t i = 1; i <= 16 && q + i < size; ++i) codes += bytes[q + i];
+            if (codes > 256) {
+                return "corrupt JPEG: a Huffman table has " + std::to_string(codes) +
+                       " codes, more than 256";
             }
+            left -= 17 + codes;
+            q += 17 + std::size_t(codes);
         }
-        p += 2 + length;
     }
     return std::nullopt;
 }

@@ -5,6 +5,7 @@
 #include <optional>
 #include <span>
 #include <string>
+#include <vector>
 
 namespace glint {
 
@@ -16,11 +17,15 @@ inline constexpr const char* kTruncatedTexture =
 // zeros.
 std::optional<std::string> hdr_hang(std::span<const unsigned char> bytes, int width, int height);
 
-// Whether a TGA file (whatever stb_image does not take for another format) is too short for the
-// size its header claims: stb decodes every pixel of it, past the end of the data too, which for
-// a tiny file claiming millions of pixels takes seconds before glint can refuse it as truncated.
-// A run-length packet holds at most 128 pixels.
-bool tga_too_short(std::span<const unsigned char> bytes, int width, int height);
+// Whether the file is too short for the size its header claims, by the most pixels its format
+// can pack into a byte: stb decodes every pixel, past the end of the data too, so a file of a
+// few hundred bytes claiming hundreds of millions of pixels would take gigabytes and minutes
+// before glint could refuse it as truncated.
+bool too_short_for_size(std::span<const unsigned char> bytes, int width, int height);
+
+// The PNG without its empty IDAT chunks, or nothing when it has none: stb's PNG decoder passes
+// a null pointer to memcpy (undefined, though it copies nothing) for one that comes first.
+std::vector<unsigned char> png_without_empty_data(std::span<const unsigned char> bytes);
 
 // Why stb_image's JPEG decoder would write out of bounds on `bytes`, if it would: it sizes a
 // Huffman table's codes by the table's 16 counts without checking that they add up to at most

@@ -11,6 +11,7 @@
 #include <string>
 #include <string_view>
 #include <system_error>
+#include <vector>
 
 #include "glint/image/file_io.h"
 #include "glint/image/image_error.h"
@@ -114,11 +115,14 @@ const std::array<float, 256>& srgb8_table() {
 
 }  // namespace
 
-Image decode_texture_image(std::span<const unsigned char> bytes,
+Image decode_texture_image(std::span<const unsigned char> file_bytes,
                            const std::filesystem::path& name) {
-    if (bytes.size() > kMaxDecodableTextureBytes) {
+    if (file_bytes.size() > kMaxDecodableTextureBytes) {
         throw ImageError(name, "texture is larger than the decoder takes (2 GiB)");
     }
+    const std::vector<unsigned char> repaired = png_without_empty_data(file_bytes);
+    const std::span<const unsigned char> bytes =
+        repaired.empty() ? file_bytes : std::span<const unsigned char>(repaired);
     const auto* data = bytes.data();
     const int length = int(bytes.size());
     // Before stbi_info, which reads the tables that come before a JPEG's frame header.
@@ -130,13 +134,17 @@ Image decode_texture_image(std::span<const unsigned char> bytes,
                                    stb_reason() + ")");
     }
     check_image_size(name, width, height);
-    if (tga_too_short(bytes, width, height))
-        throw ImageError(name, std::string("cannot decode image: ") + kTruncatedTexture);
+    const bool hdr = stbi_is_hdr_from_memory(data, length);
+    if (too_short_for_size(bytes, width, height)) {
+        throw ImageError(name,
+                         std::string(hdr ? "cannot decode HDR image: " : "cannot decode image: ") +
+                             kTruncatedTexture);
+    }
 
     Image image(width, height);
     const std::size_t pixels = std::size_t(width) * std::size_t(height);
     std::string error;
-    if (stbi_is_hdr_from_memory(data, length)) {
+    if (hdr) {
         if (const auto hang = hdr_hang(bytes, width, height))
             throw ImageError(name, "cannot decode HDR image: " + *hang);
         const auto decoded = decode<float>(bytes, stbi_loadf_from_callbacks, width, height, error);
