@@ -70,6 +70,11 @@ std::string number_text(double v) {
 // is defined only in range.
 bool valid_length(double n) { return n >= 0 && n < 2147483648.0 && n == std::floor(n); }
 
+bool is_ply_magic(std::string_view three) {
+    return three.size() == 3 && (three[0] | 0x20) == 'p' && (three[1] | 0x20) == 'l' &&
+           (three[2] | 0x20) == 'y';
+}
+
 bool is_float(PlyType t) { return t == PlyType::float32 || t == PlyType::float64; }
 
 bool is_face_index_list(const PlyElement& e, const PlyProperty& p) {
@@ -164,12 +169,14 @@ private:
         return bytes.substr(0, newline == std::string_view::npos ? bytes.size() : newline + 1);
     }
 
-    // False when the file is not PLY at all (Assimp reports that).
+    // False when the file is not PLY at all (Assimp reports that). Assimp takes a file whose
+    // first three bytes are "ply" in any case for PLY, so this checks every such file.
     bool parse_header() {
-        if (lines_.size() == 0 || split_tokens(lines_.line(0), false).empty() ||
-            (split_tokens(lines_.line(0), false)[0].text != "ply" &&
-             split_tokens(lines_.line(0), false)[0].text != "PLY")) {
-            return false;
+        if (bytes_.size() < 3 || !is_ply_magic(bytes_.substr(0, 3))) return false;
+        const auto first = split_tokens(lines_.line(0), false);
+        if (first.empty() || first[0].text.size() != 3) {
+            throw lines_.error_at(1, 1, int(lines_.line(0).size()),
+                                  "the first line must be \"ply\"");
         }
         bool have_format = false;
         for (std::size_t i = 1; i < lines_.size(); ++i) {
