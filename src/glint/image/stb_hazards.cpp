@@ -95,7 +95,8 @@ bool too_short_for_size(std::span<const unsigned char> bytes, int width, int hei
         // Every 8 x 8 block of the full-resolution component codes its DC term in 1 bit or more.
         least = pixels / 512;
     } else if (starts_with(bytes, "BM")) {
-        const unsigned bits = bytes.size() >= 30 ? bytes[28] | unsigned(bytes[29]) << 8 : 0;
+        if (bytes.size() < 30) return true;  // the header ends before the bits per pixel
+        const unsigned bits = bytes[28] | unsigned(bytes[29]) << 8;
         least = h * ((w * bits + 7) / 8);  // stb reads no run-length BMPs
     } else if (starts_with(bytes, "#?")) {
         // A run-length scanline: a 4-byte header, then per channel 2 bytes a run of up to 127.
