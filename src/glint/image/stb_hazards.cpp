@@ -12,9 +12,16 @@ namespace glint {
 std::optional<std::string> hdr_hang(std::span<const unsigned char> bytes, int width, int height) {
     if (width < 8 || width >= 32768) return std::nullopt;  // flat data, read straight
     const std::string_view text(reinterpret_cast<const char*>(bytes.data()), bytes.size());
-    std::size_t p = text.find("\n\n");  // the header's end; the size line follows
-    if (p != std::string_view::npos) p = text.find('\n', p + 2);
-    if (p == std::string_view::npos) return std::nullopt;
+    // stb reads the header's lines into a C string, so the header ends at a line that is empty
+    // or starts with a NUL; the size line follows, then the data.
+    constexpr auto npos = std::string_view::npos;
+    std::size_t p = text.find('\n');
+    while (p != npos && p + 1 < text.size() && text[p + 1] != '\n' && text[p + 1] != '\0')
+        p = text.find('\n', p + 1);
+    if (p == npos || p + 1 >= text.size()) return std::nullopt;
+    p = text.find('\n', p + 1);                 // the end of the line that ends the header
+    if (p != npos) p = text.find('\n', p + 1);  // the end of the size line
+    if (p == npos) return std::nullopt;
     ++p;
     const auto next = [&]() -> int { return p < bytes.size() ? bytes[p++] : -1; };
     for (int j = 0; j < height; ++j) {
