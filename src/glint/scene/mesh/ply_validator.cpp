@@ -149,7 +149,7 @@ public:
         : file_(file.string()), bytes_(bytes), lines_(header_of(bytes), file_) {}
 
     void run() {
-        if (!parse_header()) return;
+        parse_header();
         if (ascii_) lines_ = TextLines(bytes_, file_);
         const std::size_t vertex = find_vertex_element();
         vertex_count_ = vertex < elements_.size() ? elements_[vertex].count : 0;
@@ -169,14 +169,12 @@ private:
         return bytes.substr(0, newline == std::string_view::npos ? bytes.size() : newline + 1);
     }
 
-    // False when the file is not PLY at all (Assimp reports that). Assimp takes a file whose
-    // first three bytes are "ply" in any case for PLY, so this checks every such file.
-    bool parse_header() {
-        if (bytes_.size() < 3 || !is_ply_magic(bytes_.substr(0, 3))) return false;
-        const auto first = split_tokens(lines_.line(0), false);
-        if (first.empty() || first[0].text.size() != 3) {
-            throw lines_.error_at(1, 1, int(lines_.line(0).size()),
-                                  "the first line must be \"ply\"");
+    // Assimp reads a file for PLY when it finds "ply" in any case near its start, after blank
+    // lines or NULs too, and hangs or leaks on some such files: anything else is refused here.
+    void parse_header() {
+        if (bytes_.size() < 3 || !is_ply_magic(bytes_.substr(0, 3)) ||
+            split_tokens(lines_.line(0), false)[0].text.size() != 3) {
+            throw lines_.error_at(1, 1, 3, "a PLY file must start with a line \"ply\"");
         }
         bool have_format = false;
         for (std::size_t i = 1; i < lines_.size(); ++i) {
@@ -189,7 +187,7 @@ private:
                 data_line_ = i + 1;
                 const std::size_t newline = bytes_.find('\n', line_offset(i));
                 data_offset_ = newline == std::string_view::npos ? bytes_.size() : newline + 1;
-                return true;
+                return;
             }
             if (key == "comment" || key == "obj_info") continue;
             if (key == "format") {

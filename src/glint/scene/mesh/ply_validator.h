@@ -12,8 +12,8 @@ namespace glint {
 // files walks every data token (each must be a finite number, list lengths included) and checks
 // face indices against the vertex count; for binary files checks that the data is at least as
 // long as the counts need before walking it the same way. Throws SceneError at file:line:col
-// (the header line of the element concerned for binary data). Files without a PLY header are
-// left to Assimp, whose error message is then used.
+// (the header line of the element concerned for binary data), also for a file that does not
+// start with the line "ply".
 void validate_ply(const std::filesystem::path& file, std::string_view bytes);
 
 }  // namespace glint
