@@ -21,6 +21,7 @@
 #include "glint/image/texture_file.h"
 #include "glint/math/constants.h"
 #include "glint/scene/mesh/assimp_warnings.h"
+#include "glint/scene/mesh/glb_validator.h"
 #include "glint/scene/mesh/material_mapping.h"
 #include "glint/scene/mesh/mesh_limits.h"
 #include "glint/scene/mesh/obj_validator.h"
@@ -139,6 +140,9 @@ private:
         } else if (format == Format::stl) {
             const std::string bytes = read_text_file(name_, mesh_limit());
             validate_stl(file_, bytes);
+        } else if (lower(file_.extension().string()) == ".glb") {
+            const std::string bytes = read_text_file(name_, mesh_limit());
+            validate_glb(file_, bytes);
         }
     }
 
