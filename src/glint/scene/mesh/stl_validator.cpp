@@ -63,7 +63,16 @@ private:
             case State::outside:
                 // As Assimp, which takes "solid" followed by anything for the start of a solid.
                 if (!key.starts_with("solid")) unexpected("\"solid\"");
-                state_ = State::in_solid;  // the rest of the line is the solid's name
+                // The rest of the line is the solid's name, to glint; Assimp's name ends at the
+                // first space, and it starts a facet at a word "facet" after it.
+                for (std::size_t k = 1; k < tokens_.size(); ++k) {
+                    if (tokens_[k].text == "facet") {
+                        throw error_at(tokens_[k], "a facet on the line of \"solid\"",
+                                       {"a solid's name cannot hold the word \"facet\": start the "
+                                        "facet on a line of its own"});
+                    }
+                }
+                state_ = State::in_solid;
                 return;
             case State::in_solid:
                 if (key == "endsolid") {
