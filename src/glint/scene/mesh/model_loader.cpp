@@ -22,6 +22,7 @@
 #include "glint/math/constants.h"
 #include "glint/scene/mesh/assimp_warnings.h"
 #include "glint/scene/mesh/glb_validator.h"
+#include "glint/scene/mesh/gltf_validator.h"
 #include "glint/scene/mesh/material_mapping.h"
 #include "glint/scene/mesh/mesh_limits.h"
 #include "glint/scene/mesh/obj_validator.h"
@@ -140,9 +141,11 @@ private:
         } else if (format == Format::stl) {
             const std::string bytes = read_text_file(name_, mesh_limit());
             validate_stl(file_, bytes);
-        } else if (lower(file_.extension().string()) == ".glb") {
+        } else if (format == Format::gltf) {
             const std::string bytes = read_text_file(name_, mesh_limit());
-            validate_glb(file_, bytes);
+            const bool binary = lower(file_.extension().string()) == ".glb";
+            if (binary) validate_glb(file_, bytes);
+            validate_gltf_json(file_, bytes, binary);
         }
     }
 
