@@ -2,6 +2,7 @@
 // node tree into world-space parts per material, and maps materials, lights and cameras.
 #include "glint/scene/mesh/model_loader.h"
 
+#include <assimp/BaseImporter.h>
 #include <assimp/postprocess.h>
 #include <assimp/scene.h>
 
@@ -11,6 +12,7 @@
 #include <cmath>
 #include <exception>
 #include <map>
+#include <set>
 #include <span>
 #include <system_error>
 #include <utility>
@@ -189,6 +191,25 @@ private:
         }
     }
 
+    // Assimp offers a file that the importers of its extension do not recognise to every other
+    // importer it has, parsers glint's checks know nothing of (its OpenGEX importer took 19
+    // bytes of text named .gltf and overflowed a buffer). glTF files, which glint checks least,
+    // must be recognised by a glTF importer. (Assimp reads OBJ, PLY and STL files with their own
+    // importers whatever those say of them.)
+    bool recognised_by_gltf_importer() const {
+        const std::string extension = lower(file_.extension().string()).substr(1);
+        for (std::size_t i = 0; i < importer_.GetImporterCount(); ++i) {
+            Assimp::BaseImporter* candidate = importer_.GetImporter(i);
+            std::set<std::string> extensions;
+            candidate->GetExtensionList(extensions);
+            if (extensions.contains(extension) &&
+                candidate->CanRead(name_, importer_.GetIOHandler(), false)) {
+                return true;
+            }
+        }
+        return false;
+    }
+
     const aiScene* import(Format format) {
         unsigned flags = aiProcess_Triangulate | aiProcess_JoinIdenticalVertices |
                          aiProcess_SortByPType | aiProcess_ValidateDataStructure;
@@ -205,6 +226,11 @@ private:
         importer_.SetIOHandler(io);
         const aiScene* scene = nullptr;
         const AssimpWarnings log;
+        if (format == Format::gltf && !recognised_by_gltf_importer()) {
+            throw error(
+                "Assimp's glTF importers do not recognise it (it is neither glTF JSON "
+                "nor a GLB container they can parse)");
+        }
         try {
             // Numbers are checked before post-processing: joining vertices compares positions,
             // and a NaN one would be merged away with its triangle instead of being reported.
