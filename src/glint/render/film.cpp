@@ -100,23 +100,34 @@ Film::Film(int width, int height, const FilterSpec& filter)
       filter_(filter),
       one_pixel_(filter.kind == FilterKind::box && filter.radius == 0.5f) {
     if (one_pixel_) {
-        resolved_ = Image(width, height);
+        box_sums_.resize(std::size_t(width) * height);
     } else {
         sums_.resize(std::size_t(width) * height);
     }
 }
 
+FilmTile Film::make_tile(const Tile& tile) const {
+    FilmTile film_tile(tile, width_, height_, filter_);
+    if (one_pixel_) {
+        const Tile& r = film_tile.region();
+        for (int y = r.y0; y < r.y1; ++y)
+            for (int x = r.x0; x < r.x1; ++x)
+                film_tile.box_sums_[film_tile.index(x, y)] = box_sums_[std::size_t(y) * width_ + x];
+    }
+    return film_tile;
+}
+
 void Film::merge(const FilmTile& tile) {
     const Tile& r = tile.region();
     if (one_pixel_) {
-        // No other tile's samples reach these pixels: they are final, and need no lock.
+        // No other tile's samples reach these pixels: the tile's sums replace the film's, which
+        // they started from, and need no lock.
         for (int y = r.y0; y < r.y1; ++y)
             for (int x = r.x0; x < r.x1; ++x)
-                if (const BoxSum& s = tile.box_at(x, y); s.count > 0)
-                    resolved_.at(x, y) = s.sum / s.count;
+                box_sums_[std::size_t(y) * width_ + x] = tile.box_at(x, y);
         return;
     }
-    const std::lock_guard lock(merge_mutex_);
+    const std::lock_guard lock(*merge_mutex_);
     for (int y = r.y0; y < r.y1; ++y)
         for (int x = r.x0; x < r.x1; ++x) {
             PixelSum& sum = sums_[std::size_t(y) * width_ + x];
@@ -129,8 +140,12 @@ void Film::merge(const FilmTile& tile) {
 }
 
 Image Film::resolve() const {
-    if (one_pixel_) return resolved_;
     Image image(width_, height_);
+    if (one_pixel_) {
+        for (std::size_t i = 0; i < box_sums_.size(); ++i)
+            if (const BoxSum& s = box_sums_[i]; s.count > 0) image.pixels[i] = s.sum / s.count;
+        return image;
+    }
     for (std::size_t i = 0; i < sums_.size(); ++i) image.pixels[i] = resolved(sums_[i]);
     return image;
 }

@@ -2,13 +2,14 @@
 // pixel and tile borders, resolved to an image. The sums are kept in fixed point, so that adding
 // is exact and the image is the same bit for bit whatever order the tiles, threads, passes or
 // machines add their samples in. A box of radius 1/2 (Whitted's film) keeps each sample in its
-// own pixel, whose samples all arrive from one tile in sample order: plain float sums are as
-// deterministic there, and cheaper.
+// own pixel, whose samples all arrive from one tile in sample order, pass after pass: plain float
+// sums are as deterministic there, and cheaper.
 #pragma once
 
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <memory>
 #include <mutex>
 #include <optional>
 #include <vector>
@@ -62,7 +63,9 @@ struct BoxSum {
 };
 
 // One tile's private part of the film: the pixels its samples reach, which extend past the tile
-// by the filter's radius. A render thread fills it without locks; Film::merge adds it in.
+// by the filter's radius. A render thread fills it without locks; Film::merge adds it in. Under
+// the one-pixel box it starts from the film's running sums of its pixels (Film::make_tile), so
+// that each pixel's float additions happen in sample order across passes.
 class FilmTile {
 public:
     FilmTile(const Tile& tile, int image_width, int image_height, const Filter& filter);
@@ -87,6 +90,7 @@ public:
     const BoxSum& box_at(int x, int y) const { return box_sums_[index(x, y)]; }
 
 private:
+    friend class Film;  // starts a one-pixel tile from the film's sums
     int width() const { return region_.x1 - region_.x0; }
     std::size_t index(int x, int y) const {
         return std::size_t(y - region_.y0) * width() + std::size_t(x - region_.x0);
@@ -108,8 +112,12 @@ public:
     int width() const { return width_; }
     int height() const { return height_; }
     const Filter& filter() const { return filter_; }
+    // A box of radius 1/2: the film keeps box_sums(), not sums().
+    bool one_pixel() const { return one_pixel_; }
 
-    FilmTile make_tile(const Tile& tile) const { return {tile, width_, height_, filter_}; }
+    // A tile to fill; for the one-pixel box it holds the film's sums of its pixels so far.
+    // Concurrent with merges of other tiles only for the one-pixel box (tiles share no pixels).
+    FilmTile make_tile(const Tile& tile) const;
     // Adds a finished tile's sums. Thread-safe; the order of merges does not matter.
     void merge(const FilmTile& tile);
 
@@ -117,16 +125,23 @@ public:
     // of an interrupted render). Not concurrent with merge().
     Image resolve() const;
 
+    // Every pixel's sums, row by row, to save a render and continue it (render_state.h).
+    std::vector<PixelSum>& sums() { return sums_; }
+    const std::vector<PixelSum>& sums() const { return sums_; }
+    std::vector<BoxSum>& box_sums() { return box_sums_; }
+    const std::vector<BoxSum>& box_sums() const { return box_sums_; }
+
 private:
     int width_, height_;
     Filter filter_;
-    // A box of radius 1/2 keeps each sample in its own pixel, so tiles never share pixels: a
-    // merged tile's pixels are final and go straight into the image, and the whole film of
-    // sums (64 bytes a pixel) is never built.
+    // A box of radius 1/2 keeps each sample in its own pixel, so tiles never share pixels: its
+    // float sums (16 bytes a pixel) need no lock, and the fixed-point film of sums (64 bytes a
+    // pixel) is never built.
     bool one_pixel_;
     std::vector<PixelSum> sums_;
-    Image resolved_;
-    std::mutex merge_mutex_;
+    std::vector<BoxSum> box_sums_;  // instead of sums_ for one_pixel_
+    // Behind a pointer so that a Film moves (a RenderState holds one).
+    std::unique_ptr<std::mutex> merge_mutex_ = std::make_unique<std::mutex>();
 };
 
 }  // namespace glint

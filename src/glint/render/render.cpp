@@ -1,7 +1,8 @@
-// The render loop: tiles as oneTBB tasks in an arena of the requested size, one integrator per
-// tile, each tile's samples splatted into its own part of the film and merged when done, totals
-// merged under a lock, and a cancel flag checked before each tile. The integrator is a template
-// argument, chosen once per render: no virtual call per ray.
+// The render loop: passes of a few samples per pixel, each pass's tiles as oneTBB tasks in an
+// arena of the requested size, one integrator per tile, each tile's samples splatted into its own
+// part of the film and merged when done, totals merged under a lock, and the stop flags checked
+// before each tile and after each pass. The integrator is a template argument, chosen once per
+// render: no virtual call per ray.
 #include "glint/render/render.h"
 
 #include <tbb/blocked_range.h>
@@ -14,6 +15,7 @@
 #include <cmath>
 #include <mutex>
 #include <optional>
+#include <stdexcept>
 
 #include "glint/render/distributed.h"
 #include "glint/render/tiles.h"
@@ -29,43 +31,29 @@ struct TileTotals {
     BadSamples bad;
 };
 
-// A pixel's running mean and variance of luminance (Welford), for adaptive sampling.
-class PixelError {
-public:
-    void add(Color c) {
-        const double y = luminance(c);
-        ++n_;
-        const double delta = y - mean_;
-        mean_ += delta / n_;
-        m2_ += delta * (y - mean_);
-    }
-    // 1.96 standard errors of the mean over max(mean, the dark level).
-    double relative_error() const {
-        if (n_ < 2) return kInfinity;
-        const double standard_error = std::sqrt(m2_ / (n_ - 1) / n_);
-        return 1.96 * standard_error / std::max(std::abs(mean_), double(kAdaptiveDarkLevel));
-    }
-
-private:
-    static double luminance(Color c) { return 0.2126 * c.r + 0.7152 * c.g + 0.0722 * c.b; }
-    int n_ = 0;
-    double mean_ = 0, m2_ = 0;
+// Sample indices [begin, end) of every pixel.
+struct Pass {
+    int begin, end;
 };
 
 template <class Integrator>
-void render_tile(const Tile& tile, const World& world, const Sampler& sampler, Film& film,
-                 Image* samples_taken, TileTotals& totals) {
+void render_tile(const Tile& tile, Pass pass, const World& world, const Sampler& sampler,
+                 RenderState& state, TileTotals& totals) {
     const Camera& camera = world.camera();
     const RenderSettings& settings = world.settings();
     const int width = settings.width;
     Integrator integrator(world);  // one per tile: it holds per-thread caches
-    FilmTile film_tile = film.make_tile(tile);
+    FilmTile film_tile = state.film.make_tile(tile);
     for (int y = tile.y0; y < tile.y1; ++y)
         for (int x = tile.x0; x < tile.x1; ++x) {
-            PixelError error;
-            PixelPatterns patterns(sampler, std::uint64_t(y) * std::uint64_t(width) + x);
-            int s = 0;
-            for (; s < sampler.samples_per_pixel(); ++s) {
+            const std::size_t pixel = std::size_t(y) * std::size_t(width) + std::size_t(x);
+            std::uint32_t& taken = state.samples[pixel];
+            if (int(taken) < pass.begin) continue;  // stopped by adaptive sampling
+            PixelError unused;
+            PixelError& error = settings.adaptive ? state.errors[pixel] : unused;
+            PixelPatterns patterns(sampler, pixel);
+            int s = pass.begin;
+            for (; s < pass.end; ++s) {
                 // Adaptive sampling stops a pixel once its error is small enough; its samples
                 // are the first of its pattern, so the decision depends on nothing else.
                 if (settings.adaptive && s >= settings.adaptive->min_samples &&
@@ -89,71 +77,122 @@ void render_tile(const Tile& tile, const World& world, const Sampler& sampler, F
                     totals.bad.add({x, y, s});
                 }
             }
-            if (samples_taken) samples_taken->at(x, y) = Color::gray(float(s));
+            taken = std::uint32_t(s);
         }
-    film.merge(film_tile);
+    state.film.merge(film_tile);
 }
 
+// Renders the passes from state.next_pass on, until the last or a stop. Returns whether every
+// pass was done.
 template <class Integrator>
-void render_tiles(const World& world, const RenderOptions& options, const std::vector<Tile>& tiles,
-                  Film& film, RenderProgress* progress, RenderResult& result) {
+bool render_passes(const World& world, const RenderOptions& options, const std::vector<Tile>& tiles,
+                   RenderProgress* progress, RenderState& state) {
     const RenderSettings& settings = world.settings();
-    const Sampler sampler(sampler_of(settings), settings.samples_per_pixel, options.seed);
+    const int spp = settings.samples_per_pixel;
+    const int size = state.pass_size, passes = pass_count(spp, size);
+    const Sampler sampler(sampler_of(settings), spp, options.seed);
     std::mutex totals_mutex;
-    std::atomic<bool> skipped{false};
     // An explicit thread count may exceed the cores (to check determinism, say): lift TBB's
     // default cap on workers for the duration of the render.
     std::optional<tbb::global_control> allow_threads;
     if (options.threads > 0)
         allow_threads.emplace(tbb::global_control::max_allowed_parallelism, options.threads);
     tbb::task_arena arena(options.threads > 0 ? options.threads : tbb::task_arena::automatic);
-    arena.execute([&] {
-        // One tile per task: tiles are large enough to amortise scheduling.
-        tbb::parallel_for(
-            tbb::blocked_range<std::size_t>(0, tiles.size(), 1),
-            [&](const tbb::blocked_range<std::size_t>& range) {
-                for (std::size_t i = range.begin(); i != range.end(); ++i) {
-                    if (progress && progress->cancel) {
-                        skipped = true;
-                        continue;
+    for (; state.next_pass < passes; ++state.next_pass) {
+        const Pass pass{state.next_pass * size, std::min(spp, (state.next_pass + 1) * size)};
+        std::atomic<bool> skipped{false};
+        arena.execute([&] {
+            // One tile per task: tiles are large enough to amortise scheduling.
+            tbb::parallel_for(
+                tbb::blocked_range<std::size_t>(0, tiles.size(), 1),
+                [&](const tbb::blocked_range<std::size_t>& range) {
+                    for (std::size_t i = range.begin(); i != range.end(); ++i) {
+                        if (state.tiles_done[i]) continue;  // before the render was continued
+                        if (progress && progress->cancel) {
+                            skipped = true;
+                            continue;
+                        }
+                        TileTotals totals;
+                        render_tile<Integrator>(tiles[i], pass, world, sampler, state, totals);
+                        {
+                            const std::lock_guard lock(totals_mutex);
+                            state.rays += totals.rays;
+                            state.bad_samples += totals.bad;
+                        }
+                        state.tiles_done[i] = 1;  // tasks write distinct elements
+                        if (progress) ++progress->tiles_done;
                     }
-                    TileTotals totals;
-                    render_tile<Integrator>(
-                        tiles[i], world, sampler, film,
-                        options.record_samples_taken ? &result.samples_taken : nullptr, totals);
-                    {
-                        const std::lock_guard lock(totals_mutex);
-                        result.rays += totals.rays;
-                        result.bad_samples += totals.bad;
-                    }
-                    if (progress) ++progress->tiles_done;
-                }
-            },
-            tbb::simple_partitioner());
-    });
-    result.complete = !skipped;
+                },
+                tbb::simple_partitioner());
+        });
+        if (skipped) return false;
+        std::fill(state.tiles_done.begin(), state.tiles_done.end(), 0);
+        if (progress) ++progress->passes_done;
+        if (state.next_pass + 1 == passes) continue;
+        if (progress && (progress->stop_after_pass || progress->cancel)) {
+            ++state.next_pass;
+            return false;
+        }
+        if (options.after_pass) {
+            ++state.next_pass;  // the state as saved: this pass is done
+            options.after_pass(state);
+            --state.next_pass;
+        }
+    }
+    return true;
 }
 
 }  // namespace
 
-RenderResult render(const World& world, const RenderOptions& options, RenderProgress* progress) {
+int pass_size_of(const RenderSettings& settings, const RenderOptions& options) {
+    return options.pass_size > 0 ? options.pass_size : samples_per_pass(settings.samples_per_pixel);
+}
+
+RenderState initial_state(const RenderSettings& settings, const RenderOptions& options) {
+    return RenderState(settings, options.tile_size, pass_size_of(settings, options));
+}
+
+RenderResult render(const World& world, const RenderOptions& options, RenderProgress* progress,
+                    RenderState* state) {
     const auto start = std::chrono::steady_clock::now();
     const RenderSettings& settings = world.settings();
     const std::vector<Tile> tiles = make_tiles(settings.width, settings.height, options.tile_size);
-    if (progress) progress->tiles_total = static_cast<int>(tiles.size());
+    std::optional<RenderState> fresh;
+    if (!state) state = &fresh.emplace(initial_state(settings, options));
+    if (state->width != settings.width || state->height != settings.height ||
+        state->tiles_done.size() != tiles.size() ||
+        state->pass_size != pass_size_of(settings, options))
+        throw std::invalid_argument("render: the state is of another image, tile or pass size");
+    if (progress) {
+        const int passes = pass_count(settings.samples_per_pixel, state->pass_size);
+        int done = state->next_pass * int(tiles.size());
+        for (const std::uint8_t d : state->tiles_done) done += d;
+        // Done before total: a watcher that sees the total sees the count it starts from.
+        progress->tiles_done = done;
+        progress->passes_done = std::min(state->next_pass, passes);
+        progress->passes_total = passes;
+        progress->tiles_total = static_cast<int>(tiles.size()) * passes;
+    }
 
-    Film film(settings.width, settings.height, filter_of(settings));
     RenderResult result;
-    if (options.record_samples_taken) result.samples_taken = Image(settings.width, settings.height);
     switch (settings.integrator) {
         case IntegratorKind::whitted:
-            render_tiles<WhittedIntegrator>(world, options, tiles, film, progress, result);
+            result.complete =
+                render_passes<WhittedIntegrator>(world, options, tiles, progress, *state);
             break;
         case IntegratorKind::distributed:
-            render_tiles<DistributedIntegrator>(world, options, tiles, film, progress, result);
+            result.complete =
+                render_passes<DistributedIntegrator>(world, options, tiles, progress, *state);
             break;
     }
-    result.image = film.resolve();
+    result.image = state->film.resolve();
+    if (options.record_samples_taken) {
+        result.samples_taken = Image(settings.width, settings.height);
+        for (std::size_t i = 0; i < state->samples.size(); ++i)
+            result.samples_taken.pixels[i] = Color::gray(float(state->samples[i]));
+    }
+    result.rays = state->rays;
+    result.bad_samples = state->bad_samples;
     result.seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return result;

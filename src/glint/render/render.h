@@ -1,15 +1,17 @@
-// Renders a World into an image: tiles in parallel (oneTBB), samples per pixel from the sampler,
-// colours from the scene's integrator, through the reconstruction filter into the film. The image
-// is a pure function of the world and the seed, whatever the thread count, tile size or tile
-// order.
+// Renders a World into an image: in passes of a few samples per pixel each, tiles in parallel
+// (oneTBB), colours from the scene's integrator, through the reconstruction filter into the film.
+// The image is a pure function of the world and the seed, whatever the thread count, tile size,
+// tile order, or where a render was stopped and continued.
 #pragma once
 
 #include <atomic>
 #include <cstdint>
+#include <functional>
 
 #include "glint/image/image.h"
 #include "glint/render/film.h"
 #include "glint/render/ray_stats.h"
+#include "glint/render/render_state.h"
 #include "glint/render/world.h"
 
 namespace glint {
@@ -19,13 +21,22 @@ struct RenderOptions {
     int tile_size = 16;
     std::uint64_t seed = 0;
     bool record_samples_taken = false;  // fill RenderResult::samples_taken
+    int pass_size = 0;                  // samples each pixel takes a pass; 0: samples_per_pass
+    // Called on render()'s thread after each pass but the last, with the state so far (to save a
+    // checkpoint, say); the render waits for it.
+    std::function<void(const RenderState&)> after_pass;
 };
 
 // Shared with a watcher thread (a progress bar) while render() runs.
 struct RenderProgress {
+    // Tiles rendered, counting each tile once a pass, of tiles x passes.
     std::atomic<int> tiles_done{0};
     std::atomic<int> tiles_total{0};
-    // Set to stop early: tiles not yet started are skipped and stay black.
+    std::atomic<int> passes_done{0};
+    std::atomic<int> passes_total{0};
+    // Set to stop once the pass in flight is done: every pixel then has the same samples.
+    std::atomic<bool> stop_after_pass{false};
+    // Set to stop now: tiles not yet started are skipped; those in flight finish.
     std::atomic<bool> cancel{false};
 };
 
@@ -36,11 +47,19 @@ struct RenderResult {
     Image samples_taken;
     RayStats rays;
     BadSamples bad_samples;
-    double seconds = 0;    // wall time
-    bool complete = true;  // false when cancelled before every tile was done
+    double seconds = 0;    // wall time of this call
+    bool complete = true;  // false when stopped before every pass was done
 };
 
+// The samples each pixel takes a pass, and a render's state before its first pass.
+int pass_size_of(const RenderSettings& settings, const RenderOptions& options);
+RenderState initial_state(const RenderSettings& settings, const RenderOptions& options);
+
+// Renders from `state` (which must be of this world's settings and options' tile and pass sizes,
+// as initial_state makes it), or from
+// the start without one, and leaves in it the state reached. The result's counts are the
+// render's totals, those of earlier calls on the state included.
 RenderResult render(const World& world, const RenderOptions& options,
-                    RenderProgress* progress = nullptr);
+                    RenderProgress* progress = nullptr, RenderState* state = nullptr);
 
 }  // namespace glint

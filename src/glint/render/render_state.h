@@ -1,0 +1,48 @@
+// Everything a render needs to continue where it stopped: the film's sums, each pixel's samples
+// and adaptive error, the totals so far, and how far the passes got. A render continued from a
+// saved state gives the image, ray counts and samples of an uninterrupted one, bit for bit.
+#pragma once
+
+#include <algorithm>
+#include <cstdint>
+#include <vector>
+
+#include "glint/render/film.h"
+#include "glint/render/pixel_error.h"
+#include "glint/render/ray_stats.h"
+#include "glint/scene/scene.h"
+
+namespace glint {
+
+// Samples of every pixel in one pass: a sixteenth of the render, so that a stop after the pass in
+// flight comes soon, but at least 16 (or all there are): each pass works out every pixel's pattern
+// keys again, which cost a 64-spp render 7% in passes of 4 samples and 3.5% in passes of 8
+// (bench/README.md).
+inline int samples_per_pass(int samples_per_pixel) {
+    return std::max((samples_per_pixel + 15) / 16, std::min(samples_per_pixel, 16));
+}
+inline int pass_count(int samples_per_pixel, int pass_size) {
+    return (samples_per_pixel + pass_size - 1) / pass_size;
+}
+
+struct RenderState {
+    // A render not yet started, of settings' image in tiles of tile_size, pass_size samples per
+    // pixel a pass.
+    RenderState(const RenderSettings& settings, int tile_size, int pass_size);
+
+    int width, height;
+    int pass_size;
+    Film film;
+    // Samples each pixel has taken, row by row. Under adaptive sampling a pixel that took fewer
+    // than the passes before offered has stopped.
+    std::vector<std::uint32_t> samples;
+    std::vector<PixelError> errors;  // each pixel's, under adaptive sampling only
+    RayStats rays;
+    BadSamples bad_samples;
+    int next_pass = 0;  // the pass in flight, or the pass count when the render is done
+    // Tiles (make_tiles order) that have finished the pass in flight: a render stopped between
+    // tiles continues with the others, since tiles within a pass are independent.
+    std::vector<std::uint8_t> tiles_done;
+};
+
+}  // namespace glint
