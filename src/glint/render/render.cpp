@@ -193,8 +193,9 @@ RenderResult render(const World& world, const RenderOptions& options, RenderProg
     }
     result.rays = state->rays;
     result.bad_samples = state->bad_samples;
-    result.seconds =
+    state->seconds +=
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    result.seconds = state->seconds;
     return result;
 }
 

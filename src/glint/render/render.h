@@ -47,7 +47,7 @@ struct RenderResult {
     Image samples_taken;
     RayStats rays;
     BadSamples bad_samples;
-    double seconds = 0;    // wall time of this call
+    double seconds = 0;    // wall time, earlier calls on the same state included
     bool complete = true;  // false when stopped before every pass was done
 };
 

@@ -39,7 +39,8 @@ struct RenderState {
     std::vector<PixelError> errors;  // each pixel's, under adaptive sampling only
     RayStats rays;
     BadSamples bad_samples;
-    int next_pass = 0;  // the pass in flight, or the pass count when the render is done
+    double seconds = 0;  // wall time of the render so far
+    int next_pass = 0;   // the pass in flight, or the pass count when the render is done
     // Tiles (make_tiles order) that have finished the pass in flight: a render stopped between
     // tiles continues with the others, since tiles within a pass are independent.
     std::vector<std::uint8_t> tiles_done;

@@ -1,0 +1,394 @@
+// Writing and reading resume files: a plain header of the render's identity, checked field by
+// field so that a refusal names what differs, then the state, zlib-compressed with a CRC-32.
+// Numbers are little-endian; floats are stored as their bits, so the state comes back exactly.
+#include "glint/render/resume_file.h"
+
+#include <zlib.h>
+
+#include <bit>
+#include <cstring>
+#include <sstream>
+#include <vector>
+
+#include "glint/image/atomic_file.h"
+#include "glint/image/file_io.h"
+#include "glint/image/image_error.h"
+
+namespace glint {
+
+namespace {
+
+constexpr char kMagic[8] = {'G', 'L', 'I', 'N', 'T', 'R', 'E', 'S'};
+constexpr std::uint32_t kFormatVersion = 1;
+
+class ByteWriter {
+public:
+    void u8(std::uint8_t v) { bytes_.push_back(char(v)); }
+    void u32(std::uint32_t v) {
+        for (int i = 0; i < 4; ++i) u8(std::uint8_t(v >> (8 * i)));
+    }
+    void u64(std::uint64_t v) {
+        for (int i = 0; i < 8; ++i) u8(std::uint8_t(v >> (8 * i)));
+    }
+    void i32(int v) { u32(std::uint32_t(v)); }
+    void f32(float v) { u32(std::bit_cast<std::uint32_t>(v)); }
+    void f64(double v) { u64(std::bit_cast<std::uint64_t>(v)); }
+    void i128(FixedSum v) {
+        u64(std::uint64_t(v));  // the low bits, then the high: two's complement
+        u64(std::uint64_t(v >> 64));
+    }
+    void text(std::string_view s) {
+        u32(std::uint32_t(s.size()));
+        bytes_.append(s);
+    }
+    void raw(const void* data, std::size_t n) { bytes_.append(static_cast<const char*>(data), n); }
+    std::string& bytes() { return bytes_; }
+
+private:
+    std::string bytes_;
+};
+
+// Reads what ByteWriter wrote; running past the end throws the error `truncated` makes.
+class ByteReader {
+public:
+    ByteReader(const unsigned char* data, std::size_t size, std::string truncated)
+        : data_(data), size_(size), truncated_(std::move(truncated)) {}
+
+    const unsigned char* take(std::size_t n) {
+        if (n > size_ - at_) throw ResumeError(truncated_);
+        const unsigned char* p = data_ + at_;
+        at_ += n;
+        return p;
+    }
+    std::uint8_t u8() { return *take(1); }
+    std::uint32_t u32() {
+        const unsigned char* p = take(4);
+        std::uint32_t v = 0;
+        for (int i = 0; i < 4; ++i) v |= std::uint32_t(p[i]) << (8 * i);
+        return v;
+    }
+    std::uint64_t u64() {
+        const unsigned char* p = take(8);
+        std::uint64_t v = 0;
+        for (int i = 0; i < 8; ++i) v |= std::uint64_t(p[i]) << (8 * i);
+        return v;
+    }
+    int i32() { return int(u32()); }
+    float f32() { return std::bit_cast<float>(u32()); }
+    double f64() { return std::bit_cast<double>(u64()); }
+    FixedSum i128() {
+        const std::uint64_t low = u64(), high = u64();
+        return FixedSum(std::int64_t(high)) * (FixedSum(1) << 64) + FixedSum(low);
+    }
+    std::string text() {
+        const std::uint32_t n = u32();
+        const unsigned char* p = take(n);
+        return {reinterpret_cast<const char*>(p), n};
+    }
+    std::size_t left() const { return size_ - at_; }
+
+private:
+    const unsigned char* data_;
+    std::size_t size_, at_ = 0;
+    std::string truncated_;
+};
+
+std::uint64_t fnv1a(const std::vector<unsigned char>& bytes) {
+    std::uint64_t h = 0xcbf29ce484222325ull;
+    for (const unsigned char b : bytes) {
+        h ^= b;
+        h *= 0x100000001b3ull;
+    }
+    return h;
+}
+
+template <class Kind>
+std::string name_of(Kind kind, std::span<const std::string_view> names,
+                    std::optional<Kind> (*from_name)(std::string_view)) {
+    for (const std::string_view name : names)
+        if (from_name(name) == kind) return std::string(name);
+    return "?";
+}
+
+std::string describe(const FilterSpec& f) {
+    std::ostringstream out;
+    out << name_of(f.kind, filter_names(), filter_from_name) << " filter of radius " << f.radius;
+    if (f.kind == FilterKind::gaussian) out << " and sigma " << f.sigma;
+    if (f.kind == FilterKind::mitchell) out << ", B " << f.b << " and C " << f.c;
+    return out.str();
+}
+
+std::string describe(const std::optional<AdaptiveSampling>& a) {
+    if (!a) return "no adaptive sampling";
+    std::ostringstream out;
+    out << "adaptive sampling to " << a->threshold << " from " << a->min_samples << " samples";
+    return out.str();
+}
+
+void write_identity(ByteWriter& out, const RenderIdentity& id) {
+    out.raw(kMagic, sizeof kMagic);
+    out.u32(kFormatVersion);
+    out.text(id.glint_version);
+    out.text(id.scene_path);
+    out.u64(id.scene_hash);
+    out.i32(id.width);
+    out.i32(id.height);
+    out.i32(id.samples_per_pixel);
+    out.u64(id.seed);
+    out.u8(std::uint8_t(id.integrator));
+    out.u8(std::uint8_t(id.sampler));
+    out.u8(std::uint8_t(id.filter.kind));
+    out.f32(id.filter.radius);
+    out.f32(id.filter.sigma);
+    out.f32(id.filter.b);
+    out.f32(id.filter.c);
+    out.i32(id.max_depth);
+    out.u8(id.adaptive ? 1 : 0);
+    out.f32(id.adaptive ? id.adaptive->threshold : 0);
+    out.i32(id.adaptive ? id.adaptive->min_samples : 0);
+    out.i32(id.tile_size);
+    out.i32(id.pass_size);
+}
+
+// The identity after the magic and format version, as written.
+RenderIdentity read_identity(ByteReader& in) {
+    RenderIdentity id;
+    id.glint_version = in.text();
+    id.scene_path = in.text();
+    id.scene_hash = in.u64();
+    id.width = in.i32();
+    id.height = in.i32();
+    id.samples_per_pixel = in.i32();
+    id.seed = in.u64();
+    id.integrator = IntegratorKind(in.u8());
+    id.sampler = SamplerKind(in.u8());
+    id.filter.kind = FilterKind(in.u8());
+    id.filter.radius = in.f32();
+    id.filter.sigma = in.f32();
+    id.filter.b = in.f32();
+    id.filter.c = in.f32();
+    id.max_depth = in.i32();
+    const bool adaptive = in.u8() != 0;
+    const float threshold = in.f32();
+    const int min_samples = in.i32();
+    if (adaptive) id.adaptive = AdaptiveSampling{threshold, min_samples};
+    id.tile_size = in.i32();
+    id.pass_size = in.i32();
+    return id;
+}
+
+// What differs between the render a file was written for and this one, first difference first:
+// "written for seed 3, not 7". Empty when they are the same.
+std::string difference(const RenderIdentity& was, const RenderIdentity& now) {
+    const auto num = [](auto v) { return std::to_string(v); };
+    if (was.glint_version != now.glint_version)
+        return "written by glint " + was.glint_version + ", this is glint " + now.glint_version;
+    if (was.scene_path != now.scene_path)
+        return "written for scene " + was.scene_path + ", not " + now.scene_path;
+    if (was.scene_hash != now.scene_hash)
+        return "written for another scene (its file has changed since)";
+    if (was.width != now.width || was.height != now.height)
+        return "written for an image of " + num(was.width) + "x" + num(was.height) + ", not " +
+               num(now.width) + "x" + num(now.height);
+    if (was.samples_per_pixel != now.samples_per_pixel)
+        return "written for " + num(was.samples_per_pixel) + " samples per pixel, not " +
+               num(now.samples_per_pixel);
+    if (was.seed != now.seed) return "written for seed " + num(was.seed) + ", not " + num(now.seed);
+    if (was.integrator != now.integrator)
+        return "written for the " +
+               name_of(was.integrator, integrator_names(), integrator_from_name) +
+               " integrator, not " +
+               name_of(now.integrator, integrator_names(), integrator_from_name);
+    if (was.sampler != now.sampler)
+        return "written for the " + name_of(was.sampler, sampler_names(), sampler_from_name) +
+               " sampler, not " + name_of(now.sampler, sampler_names(), sampler_from_name);
+    if (!(was.filter == now.filter))
+        return "written for a " + describe(was.filter) + ", not a " + describe(now.filter);
+    if (was.max_depth != now.max_depth)
+        return "written for max depth " + num(was.max_depth) + ", not " + num(now.max_depth);
+    const bool same_adaptive =
+        was.adaptive.has_value() == now.adaptive.has_value() &&
+        (!was.adaptive || (was.adaptive->threshold == now.adaptive->threshold &&
+                           was.adaptive->min_samples == now.adaptive->min_samples));
+    if (!same_adaptive)
+        return "written for " + describe(was.adaptive) + ", not " + describe(now.adaptive);
+    if (was.tile_size != now.tile_size)
+        return "written for tiles of " + num(was.tile_size) + " pixels, not " + num(now.tile_size);
+    if (was.pass_size != now.pass_size)
+        return "written for passes of " + num(was.pass_size) + " samples, not " +
+               num(now.pass_size);
+    return {};
+}
+
+std::string encode_state(const RenderState& s) {
+    ByteWriter out;
+    out.i32(s.next_pass);
+    out.u32(std::uint32_t(s.tiles_done.size()));
+    out.raw(s.tiles_done.data(), s.tiles_done.size());
+    for (const std::uint64_t n : s.rays.traced) out.u64(n);
+    out.u64(s.rays.primary_hits);
+    out.u64(s.bad_samples.count);
+    const SampleLocation first = s.bad_samples.first.value_or(SampleLocation{});
+    out.u8(s.bad_samples.first ? 1 : 0);
+    out.i32(first.x);
+    out.i32(first.y);
+    out.i32(first.sample);
+    out.f64(s.seconds);
+    for (const std::uint32_t n : s.samples) out.u32(n);
+    for (const PixelError& e : s.errors) {
+        out.i32(e.n);
+        out.f64(e.mean);
+        out.f64(e.m2);
+    }
+    for (const BoxSum& b : s.film.box_sums()) {
+        out.f32(b.sum.r);
+        out.f32(b.sum.g);
+        out.f32(b.sum.b);
+        out.f32(b.count);
+    }
+    for (const PixelSum& p : s.film.sums()) {
+        out.i128(p.r);
+        out.i128(p.g);
+        out.i128(p.b);
+        out.i128(p.weight);
+    }
+    return std::move(out.bytes());
+}
+
+// Decodes into `s`, a fresh state of the expected image, whose sizes the data must have.
+void decode_state(ByteReader& in, RenderState& s, const std::string& corrupt) {
+    s.next_pass = in.i32();
+    if (in.u32() != s.tiles_done.size()) throw ResumeError(corrupt);
+    std::memcpy(s.tiles_done.data(), in.take(s.tiles_done.size()), s.tiles_done.size());
+    for (std::uint64_t& n : s.rays.traced) n = in.u64();
+    s.rays.primary_hits = in.u64();
+    s.bad_samples.count = in.u64();
+    const bool has_first = in.u8() != 0;
+    SampleLocation first;
+    first.x = in.i32();
+    first.y = in.i32();
+    first.sample = in.i32();
+    if (has_first) s.bad_samples.first = first;
+    s.seconds = in.f64();
+    for (std::uint32_t& n : s.samples) n = in.u32();
+    for (PixelError& e : s.errors) {
+        e.n = in.i32();
+        e.mean = in.f64();
+        e.m2 = in.f64();
+    }
+    for (BoxSum& b : s.film.box_sums()) {
+        b.sum.r = in.f32();
+        b.sum.g = in.f32();
+        b.sum.b = in.f32();
+        b.count = in.f32();
+    }
+    for (PixelSum& p : s.film.sums()) {
+        p.r = in.i128();
+        p.g = in.i128();
+        p.b = in.i128();
+        p.weight = in.i128();
+    }
+    if (in.left() != 0) throw ResumeError(corrupt);
+}
+
+}  // namespace
+
+RenderIdentity identify_render(const std::filesystem::path& scene_file,
+                               const RenderSettings& settings, const RenderOptions& options,
+                               std::string_view glint_version) {
+    RenderIdentity id;
+    id.glint_version = glint_version;
+    id.scene_path = std::filesystem::absolute(scene_file).lexically_normal().string();
+    id.scene_hash = fnv1a(read_whole_file(scene_file));
+    id.width = settings.width;
+    id.height = settings.height;
+    id.samples_per_pixel = settings.samples_per_pixel;
+    id.seed = options.seed;
+    id.integrator = settings.integrator;
+    id.sampler = sampler_of(settings);
+    id.filter = filter_of(settings);
+    id.max_depth = settings.max_depth;
+    id.adaptive = settings.adaptive;
+    id.tile_size = options.tile_size;
+    id.pass_size = pass_size_of(settings, options);
+    return id;
+}
+
+std::filesystem::path resume_path(const std::filesystem::path& output) {
+    std::filesystem::path path = output;
+    path += ".resume";
+    return path;
+}
+
+void write_resume_file(const std::filesystem::path& file, const RenderIdentity& identity,
+                       const RenderState& state) {
+    const std::string payload = encode_state(state);
+    uLongf packed_size = compressBound(uLong(payload.size()));
+    std::vector<unsigned char> packed(packed_size);
+    // The fastest level: the sums of a noisy image hardly compress further, and a checkpoint
+    // should not stall the render.
+    if (compress2(packed.data(), &packed_size, reinterpret_cast<const Bytef*>(payload.data()),
+                  uLong(payload.size()), Z_BEST_SPEED) != Z_OK)
+        throw ImageError(file, "cannot compress the render's state");
+    ByteWriter out;
+    write_identity(out, identity);
+    out.u64(payload.size());
+    out.u64(packed_size);
+    out.u32(std::uint32_t(
+        crc32(0, reinterpret_cast<const Bytef*>(payload.data()), uInt(payload.size()))));
+    out.raw(packed.data(), packed_size);
+    write_file_atomically(file, [&](const std::filesystem::path& temporary) {
+        UniqueFile f = open_file(temporary, "wb");
+        write_bytes(f.get(), out.bytes().data(), out.bytes().size(), temporary);
+        close_written_file(std::move(f), temporary);
+    });
+}
+
+RenderState read_resume_file(const std::filesystem::path& file, const RenderIdentity& expected,
+                             const RenderSettings& settings) {
+    const std::string prefix = "cannot resume from \"" + file.string() + "\": ";
+    std::error_code error;
+    if (!std::filesystem::exists(file, error))
+        throw ResumeError(prefix +
+                          "there is no such file (an interrupted render leaves it "
+                          "beside its output)");
+    std::vector<unsigned char> bytes;
+    try {
+        bytes = read_whole_file(file);
+    } catch (const ImageError& e) {
+        throw ResumeError(prefix + e.detail);
+    }
+    const std::string truncated = prefix + "the file is truncated";
+    const std::string corrupt = prefix + "the file is corrupt";
+    ByteReader in(bytes.data(), bytes.size(), truncated);
+    if (bytes.size() < sizeof kMagic || std::memcmp(in.take(sizeof kMagic), kMagic, 8) != 0)
+        throw ResumeError(prefix + "not a glint resume file");
+    if (const std::uint32_t version = in.u32(); version != kFormatVersion)
+        throw ResumeError(prefix + "the file is of format version " + std::to_string(version) +
+                          ", this glint reads version " + std::to_string(kFormatVersion));
+    const RenderIdentity written = read_identity(in);
+    if (const std::string why = difference(written, expected); !why.empty())
+        throw ResumeError(prefix + "the resume file was " + why);
+
+    RenderState state(settings, expected.tile_size, expected.pass_size);
+    const std::uint64_t payload_size = in.u64(), packed_size = in.u64();
+    const std::uint32_t crc = in.u32();
+    // The size a state of this image has, so that a damaged header cannot ask for any memory.
+    const std::uint64_t expected_size = encode_state(state).size();
+    if (payload_size != expected_size) throw ResumeError(corrupt);
+    if (packed_size > in.left()) throw ResumeError(truncated);
+    if (packed_size < in.left()) throw ResumeError(corrupt);
+    std::vector<unsigned char> payload(payload_size);
+    uLongf unpacked = uLongf(payload_size);
+    if (uncompress(payload.data(), &unpacked, in.take(packed_size), uLong(packed_size)) != Z_OK ||
+        unpacked != payload_size || crc32(0, payload.data(), uInt(payload.size())) != crc)
+        throw ResumeError(corrupt);
+    ByteReader state_in(payload.data(), payload.size(), corrupt);
+    decode_state(state_in, state, corrupt);
+    if (state.next_pass < 0 ||
+        state.next_pass > pass_count(settings.samples_per_pixel, state.pass_size))
+        throw ResumeError(corrupt);
+    return state;
+}
+
+}  // namespace glint

@@ -1,0 +1,60 @@
+// The resume file an interrupted render leaves beside its image ("image.png.resume"): what the
+// render was, to refuse continuing another, and its RenderState, zlib-compressed. The format is
+// described in docs/cli.md.
+#pragma once
+
+#include <cstdint>
+#include <filesystem>
+#include <stdexcept>
+#include <string>
+#include <string_view>
+
+#include "glint/render/render.h"
+#include "glint/render/render_state.h"
+#include "glint/scene/scene.h"
+
+namespace glint {
+
+// Everything that decides a render's image (the acceleration structure and the thread count do
+// not), and the version of glint that rendered it.
+struct RenderIdentity {
+    std::string glint_version;
+    std::string scene_path;      // absolute
+    std::uint64_t scene_hash{};  // FNV-1a of the scene file's bytes
+    int width = 0, height = 0, samples_per_pixel = 0;
+    std::uint64_t seed = 0;
+    IntegratorKind integrator{};
+    SamplerKind sampler{};
+    FilterSpec filter;
+    int max_depth = 0;
+    std::optional<AdaptiveSampling> adaptive;
+    int tile_size = 0;
+    int pass_size = 0;  // samples_per_pass
+};
+
+// The identity of a render of `scene_file` (read here, to hash it) with the settings it was
+// loaded with and the options given. Throws ImageError if the file cannot be read.
+RenderIdentity identify_render(const std::filesystem::path& scene_file,
+                               const RenderSettings& settings, const RenderOptions& options,
+                               std::string_view glint_version);
+
+// A resume file that cannot be used: missing, of another render, truncated or corrupt. Its
+// message names the file and says what is wrong.
+struct ResumeError : std::runtime_error {
+    using std::runtime_error::runtime_error;
+};
+
+// "<output>.resume": image.png -> image.png.resume.
+std::filesystem::path resume_path(const std::filesystem::path& output);
+
+// Writes the file atomically (a temporary renamed into place); throws ImageError on failure.
+void write_resume_file(const std::filesystem::path& file, const RenderIdentity& identity,
+                       const RenderState& state);
+
+// The state saved in `file`, which must have been written for `expected`, whose settings and
+// tile and pass sizes are `settings` and expected's. Throws ResumeError naming the first
+// difference ("... was written for seed 3, not 7") or the damage.
+RenderState read_resume_file(const std::filesystem::path& file, const RenderIdentity& expected,
+                             const RenderSettings& settings);
+
+}  // namespace glint

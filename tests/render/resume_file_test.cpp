@@ -1,0 +1,179 @@
+// Resume files: a state survives writing and reading exactly and continues to the image of an
+// uninterrupted render; a file of another render, another version, or a damaged one is refused
+// with a message that says why.
+#include "glint/render/resume_file.h"
+
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <cstring>
+#include <fstream>
+
+#include "glint/image/file_io.h"
+#include "glint/scene/yaml/yaml_scene_loader.h"
+
+namespace glint {
+namespace {
+
+namespace fs = std::filesystem;
+
+class ResumeFile : public testing::Test {
+protected:
+    void SetUp() override {
+        dir_ = fs::temp_directory_path() / ("glint-resume-" + std::to_string(::getpid()));
+        fs::create_directories(dir_);
+        scene_file_ = dir_ / "scene.yaml";
+        fs::copy_file(std::string(GLINT_SOURCE_DIR) + "/scenes/showcase.yaml", scene_file_,
+                      fs::copy_options::overwrite_existing);
+        scene_ = load_yaml_scene(scene_file_.string());
+        scene_.settings.width = 24;
+        scene_.settings.height = 18;
+        scene_.settings.sampler = SamplerKind::jittered;
+        scene_.settings.samples_per_pixel = 6;
+        options_.seed = 7;
+        options_.tile_size = 8;
+        options_.pass_size = 2;
+    }
+    void TearDown() override { fs::remove_all(dir_); }
+
+    RenderIdentity identity() const {
+        return identify_render(scene_file_, scene_.settings, options_, "1.2.3");
+    }
+    // A render stopped after its first pass, saved to `file`.
+    RenderState save_stopped_render(const fs::path& file) const {
+        RenderState state = initial_state(scene_.settings, options_);
+        RenderProgress progress;
+        progress.stop_after_pass = true;
+        EXPECT_FALSE(render(World(scene_), options_, &progress, &state).complete);
+        write_resume_file(file, identity(), state);
+        return state;
+    }
+    // The message of the refusal to read `file` for `expected`.
+    std::string refusal(const fs::path& file, const RenderIdentity& expected,
+                        const RenderSettings& settings) const {
+        try {
+            read_resume_file(file, expected, settings);
+        } catch (const ResumeError& e) {
+            return e.what();
+        }
+        return "(read without complaint)";
+    }
+
+    fs::path dir_, scene_file_;
+    Scene scene_;
+    RenderOptions options_;
+};
+
+TEST_F(ResumeFile, StateSurvivesARoundTripExactlyAndContinuesToTheSameImage) {
+    for (const std::optional<FilterSpec> filter :
+         {std::optional<FilterSpec>{}, std::optional{FilterSpec{FilterKind::gaussian, 1.5f}}}) {
+        scene_.settings.filter = filter;
+        scene_.settings.adaptive = AdaptiveSampling{0.05f, 2};
+        const fs::path file = dir_ / "image.png.resume";
+        const RenderState saved = save_stopped_render(file);
+        RenderState read = read_resume_file(file, identity(), scene_.settings);
+        EXPECT_EQ(read.next_pass, saved.next_pass);
+        EXPECT_EQ(read.tiles_done, saved.tiles_done);
+        EXPECT_EQ(read.samples, saved.samples);
+        EXPECT_EQ(read.errors, saved.errors);
+        EXPECT_EQ(read.rays, saved.rays);
+        EXPECT_EQ(read.bad_samples.count, saved.bad_samples.count);
+        ASSERT_EQ(read.film.sums().size(), saved.film.sums().size());
+        EXPECT_EQ(std::memcmp(read.film.sums().data(), saved.film.sums().data(),
+                              saved.film.sums().size() * sizeof(PixelSum)),
+                  0);
+        ASSERT_EQ(read.film.box_sums().size(), saved.film.box_sums().size());
+        EXPECT_EQ(std::memcmp(read.film.box_sums().data(), saved.film.box_sums().data(),
+                              saved.film.box_sums().size() * sizeof(BoxSum)),
+                  0);
+
+        const World world(scene_);
+        const RenderResult continued = render(world, options_, nullptr, &read);
+        const RenderResult whole = render(world, options_);
+        EXPECT_TRUE(continued.complete);
+        EXPECT_TRUE(continued.image.pixels == whole.image.pixels);
+        EXPECT_EQ(continued.rays, whole.rays);
+    }
+}
+
+TEST_F(ResumeFile, AnotherRenderIsRefusedNamingWhatDiffers) {
+    const fs::path file = dir_ / "image.png.resume";
+    save_stopped_render(file);
+    const RenderSettings s = scene_.settings;
+    const auto refused = [&](RenderSettings settings, RenderOptions options,
+                             std::string version = "1.2.3") {
+        return refusal(file, identify_render(scene_file_, settings, options, version), settings);
+    };
+    RenderOptions seed = options_;
+    seed.seed = 3;
+    EXPECT_NE(refused(s, seed).find("was written for seed 7, not 3"), std::string::npos)
+        << refused(s, seed);
+    EXPECT_NE(refused(s, options_, "1.3.0").find("written by glint 1.2.3, this is glint 1.3.0"),
+              std::string::npos);
+    RenderSettings wide = s;
+    wide.width = 30;
+    EXPECT_NE(refused(wide, options_).find("for an image of 24x18, not 30x18"), std::string::npos);
+    RenderSettings more = s;
+    more.samples_per_pixel = 8;
+    EXPECT_NE(refused(more, options_).find("for 6 samples per pixel, not 8"), std::string::npos);
+    RenderSettings distributed = s;
+    distributed.integrator = IntegratorKind::distributed;
+    EXPECT_NE(refused(distributed, options_).find("the whitted integrator, not distributed"),
+              std::string::npos);
+    RenderSettings gaussian = s;
+    gaussian.filter = FilterSpec{FilterKind::gaussian, 1.5f};
+    EXPECT_NE(refused(gaussian, options_).find("box filter of radius 0.5, not a gaussian"),
+              std::string::npos)
+        << refused(gaussian, options_);
+    RenderSettings deeper = s;
+    deeper.max_depth = 9;
+    EXPECT_NE(refused(deeper, options_).find("max depth 8, not 9"), std::string::npos);
+    RenderSettings adaptive = s;
+    adaptive.adaptive = AdaptiveSampling{};
+    EXPECT_NE(refused(adaptive, options_).find("no adaptive sampling, not adaptive"),
+              std::string::npos);
+    RenderOptions tiles = options_;
+    tiles.tile_size = 16;
+    EXPECT_NE(refused(s, tiles).find("tiles of 8 pixels, not 16"), std::string::npos);
+
+    // The scene file edited since: the same path, other bytes.
+    std::ofstream(scene_file_, std::ios::app) << "# edited\n";
+    EXPECT_NE(refused(s, options_).find("another scene (its file has changed since)"),
+              std::string::npos);
+}
+
+TEST_F(ResumeFile, MissingTruncatedCorruptAndForeignFilesAreRefused) {
+    const fs::path file = dir_ / "image.png.resume";
+    const RenderIdentity id = identity();
+    EXPECT_NE(refusal(file, id, scene_.settings).find("there is no such file"), std::string::npos);
+    save_stopped_render(file);
+    const std::vector<unsigned char> bytes = read_whole_file(file);
+    const auto write = [&](const std::vector<unsigned char>& b) {
+        std::ofstream(file, std::ios::binary)
+            .write(reinterpret_cast<const char*>(b.data()), std::streamsize(b.size()));
+    };
+    for (const std::size_t size : {bytes.size() / 2, bytes.size() - 1, std::size_t(40)}) {
+        write({bytes.begin(), bytes.begin() + std::ptrdiff_t(size)});
+        EXPECT_NE(refusal(file, id, scene_.settings).find("the file is truncated"),
+                  std::string::npos)
+            << size << " bytes: " << refusal(file, id, scene_.settings);
+    }
+    std::vector<unsigned char> flipped = bytes;
+    flipped[bytes.size() - 10] ^= 0x40;
+    write(flipped);
+    EXPECT_NE(refusal(file, id, scene_.settings).find("the file is corrupt"), std::string::npos);
+    std::vector<unsigned char> longer = bytes;
+    longer.push_back(0);
+    write(longer);
+    EXPECT_NE(refusal(file, id, scene_.settings).find("the file is corrupt"), std::string::npos);
+    write({'P', '6', '\n', '1', ' ', '1', '\n', '2', '5', '5', '\n', 0, 0, 0});
+    EXPECT_NE(refusal(file, id, scene_.settings).find("not a glint resume file"),
+              std::string::npos);
+}
+
+TEST(ResumePath, IsTheOutputWithResumeAppended) {
+    EXPECT_EQ(resume_path("out/image.png"), std::filesystem::path("out/image.png.resume"));
+}
+
+}  // namespace
+}  // namespace glint
