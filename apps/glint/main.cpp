@@ -32,6 +32,8 @@ Examples:
   glint render scenes/showcase.yaml -o big.exr --width 1920 --spp 16
   glint render scene.yaml --threads 1 --stats stats.json --quiet
   glint render scenes/room.yaml --allow-read ~/models   the scene may read ~/models too
+  glint render big.yaml -o big.exr --checkpoint 10      after Ctrl-C or a crash:
+  glint render big.yaml -o big.exr --resume             continues where it stopped
   glint bench scene.nff --json --rays 100000           build time, Mrays/s per structure
 )";
 
@@ -86,6 +88,15 @@ void add_render_command(CLI::App& app, glint::cli::RenderCommand& c) {
         *render, "--max-memory", c.max_memory,
         "Most memory the render may take beyond the scene (its structure, film and images), "
         "checked before building them: 512M, 16G, ...; default: what the machine has free");
+    render->add_flag("--resume", c.resume,
+                     "Continue an interrupted render of the same scene, output and options from "
+                     "the resume file beside the output (<output>.resume)");
+    render
+        ->add_option("--checkpoint", c.checkpoint_minutes,
+                     "Every MINUTES (fractions allowed), after a pass, write the image so far "
+                     "beside the output (<stem>.partial<ext>) and a resume file")
+        ->type_name("MINUTES")
+        ->check(CLI::PositiveNumber);
 }
 
 }  // namespace

@@ -1,5 +1,6 @@
 // The progress watcher: a thread that wakes every 100 ms to redraw the bar (or print a plain line
-// per tenth of the work) and to pass Ctrl-C, caught by a SIGINT handler, on as a cancel.
+// per tenth of the work) and to pass Ctrl-C and SIGTERM, counted by a signal handler, on as a
+// stop after the pass in flight (the first) and a stop now (the second).
 #include "progress.h"
 
 #include <unistd.h>
@@ -14,12 +15,12 @@ namespace glint::cli {
 
 namespace {
 
-// Set by the handler on the main thread and read by the watcher's: a lock-free atomic, which a
-// signal handler may write (a volatile sig_atomic_t is safe only within one thread).
-std::atomic<bool> g_interrupted = false;
-static_assert(std::atomic<bool>::is_always_lock_free);
+// Counted by the handler on the main thread and read by the watcher's: a lock-free atomic, which
+// a signal handler may change (a volatile sig_atomic_t is safe only within one thread).
+std::atomic<int> g_interrupts = 0;
+static_assert(std::atomic<int>::is_always_lock_free);
 
-extern "C" void on_interrupt(int) { g_interrupted = true; }
+extern "C" void on_interrupt(int) { g_interrupts.fetch_add(1); }
 
 std::string format_duration(double seconds) {
     const long s = static_cast<long>(seconds + 0.5);
@@ -35,8 +36,9 @@ std::string format_duration(double seconds) {
 
 ProgressWatcher::ProgressWatcher(RenderProgress& progress, bool show)
     : progress_(progress), show_(show), terminal_(isatty(STDERR_FILENO) != 0) {
-    g_interrupted = false;
+    g_interrupts = 0;
     std::signal(SIGINT, on_interrupt);
+    std::signal(SIGTERM, on_interrupt);
     thread_ = std::thread([this] { run(); });
 }
 
@@ -48,6 +50,7 @@ ProgressWatcher::~ProgressWatcher() {
     wake_.notify_one();
     thread_.join();
     std::signal(SIGINT, SIG_DFL);
+    std::signal(SIGTERM, SIG_DFL);
 }
 
 void ProgressWatcher::run() {
@@ -55,19 +58,33 @@ void ProgressWatcher::run() {
     const auto start = Clock::now();
     int last_reported_tenth = 0;
     bool drew_bar = false;
+    double start_fraction = -1;  // a continued render starts part done: the ETA counts from there
     for (;;) {
         {
             std::unique_lock lock(mutex_);
             if (wake_.wait_for(lock, std::chrono::milliseconds(100), [this] { return done_; }))
                 break;
         }
-        if (g_interrupted) progress_.cancel = true;
+        const int interrupts = g_interrupts;
+        if (interrupts >= 1 && !progress_.stop_after_pass) {
+            progress_.stop_after_pass = true;
+            if (show_)
+                std::fprintf(stderr,
+                             "%sglint: stopping after the pass in flight (%d of %d); interrupt "
+                             "again to stop after the tiles in flight\n",
+                             drew_bar ? "\n" : "", progress_.passes_done + 1,
+                             progress_.passes_total.load());
+        }
+        if (interrupts >= 2) progress_.cancel = true;
         const int total = progress_.tiles_total;
         if (!show_ || total == 0) continue;
         const double fraction = double(progress_.tiles_done) / total;
+        if (start_fraction < 0) start_fraction = fraction;
         const double elapsed = std::chrono::duration<double>(Clock::now() - start).count();
         const std::string eta =
-            fraction > 0 ? format_duration(elapsed * (1 - fraction) / fraction) : "?";
+            fraction > start_fraction
+                ? format_duration(elapsed * (1 - fraction) / (fraction - start_fraction))
+                : "?";
         if (terminal_) {
             constexpr int kWidth = 30;
             const int filled = static_cast<int>(fraction * kWidth);

@@ -1,5 +1,6 @@
 // Shows a render's progress while it runs: a bar with an ETA on a terminal, plain periodic
-// lines otherwise. Also turns Ctrl-C into a request to stop.
+// lines otherwise. Also turns Ctrl-C and SIGTERM into requests to stop: the first after the pass
+// in flight, the second after the tiles in flight.
 #pragma once
 
 #include <atomic>
@@ -13,7 +14,7 @@ namespace glint::cli {
 
 class ProgressWatcher {
 public:
-    // Starts watching at once. With show == false it only relays Ctrl-C.
+    // Starts watching at once. With show == false it only relays Ctrl-C and SIGTERM.
     ProgressWatcher(RenderProgress& progress, bool show);
     ~ProgressWatcher();  // stops watching and ends the bar's line
 

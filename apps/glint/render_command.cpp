@@ -1,9 +1,11 @@
-// `glint render` from start to end: check the output paths, load, apply the options, render,
-// write the image (or its .partial sibling when interrupted) and the stats, and summarise.
+// `glint render` from start to end: check the output paths, load, apply the options, read the
+// resume file when continuing, render (writing checkpoints), write the image (or, interrupted, its
+// .partial sibling and the resume file) and the stats, and summarise.
 #include "render_command.h"
 
 #include <tbb/info.h>
 
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -17,12 +19,17 @@
 #include "glint/image/image_io.h"
 #include "glint/render/memory_estimate.h"
 #include "glint/render/render.h"
+#include "glint/render/resume_file.h"
 #include "glint/render/world.h"
 #include "glint/scene/load_scene.h"
 #include "glint/scene/scene_error.h"
 #include "output_path.h"
 #include "progress.h"
 #include "stats_json.h"
+
+#ifndef GLINT_VERSION
+#define GLINT_VERSION "unknown"
+#endif
 
 namespace glint::cli {
 
@@ -151,6 +158,23 @@ void write_stats(const std::string& file, const std::string& json) {
     });
 }
 
+// The image so far beside the output, and the state to continue from: at a checkpoint and when
+// interrupted. The image first: a resume file always has an image of at most its samples.
+void save_progress(const std::filesystem::path& partial, const std::filesystem::path& resume,
+                   const RenderIdentity& identity, const RenderState& state, bool ppm_ascii) {
+    write_image(partial, state.film.resolve(), WriteOptions{ppm_ascii});
+    write_resume_file(resume, identity, state);
+}
+
+std::string shell_quoted(const std::string& s) {
+    if (s.find_first_not_of("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789._-/") ==
+        std::string::npos)
+        return s;
+    std::string quoted = "'";
+    for (const char c : s) quoted += c == '\'' ? std::string("'\\''") : std::string(1, c);
+    return quoted + "'";
+}
+
 }  // namespace
 
 int run_render(const RenderCommand& command) {
@@ -185,19 +209,42 @@ int run_render(const RenderCommand& command) {
         options.threads = command.threads;
         options.seed = command.seed;
         options.record_samples_taken = !command.samples_image.empty();
+        const RenderSettings& s = world.settings();
+        const RenderIdentity identity = identify_render(command.scene, s, options, GLINT_VERSION);
+        const std::filesystem::path resume = resume_path(output),
+                                    partial = partial_output_path(output);
+        RenderState state =
+            command.resume ? read_resume_file(resume, identity, s) : initial_state(s, options);
+        using Clock = std::chrono::steady_clock;
+        Clock::time_point last_checkpoint = Clock::now();
+        if (command.checkpoint_minutes) {
+            const std::chrono::duration<double> interval(*command.checkpoint_minutes * 60);
+            options.after_pass = [&](const RenderState& so_far) {
+                if (Clock::now() - last_checkpoint < interval) return;
+                save_progress(partial, resume, identity, so_far, command.ppm_ascii);
+                last_checkpoint = Clock::now();
+            };
+        }
         RenderProgress progress;
         RenderResult result;
         {
             const ProgressWatcher watcher(progress, !command.quiet);
-            result = render(world, options, &progress);
+            result = render(world, options, &progress, &state);
         }
         report_bad_samples(result.bad_samples, command.seed);
 
-        // An interrupted image is mostly black: it goes beside the target, never over it, so a
-        // good image from an earlier run survives a Ctrl-C.
-        const std::string written = result.complete ? output : partial_output_path(output).string();
-        write_image(written, result.image, WriteOptions{command.ppm_ascii});
-        const RenderSettings& s = world.settings();
+        // An interrupted image goes beside the target, never over it, so a good image from an
+        // earlier run survives a Ctrl-C; a finished one makes the files of the stopped render
+        // stale.
+        const std::string written = result.complete ? output : partial.string();
+        if (result.complete) {
+            write_image(output, result.image, WriteOptions{command.ppm_ascii});
+            std::error_code ignored;
+            std::filesystem::remove(resume, ignored);
+            std::filesystem::remove(partial, ignored);
+        } else {
+            save_progress(partial, resume, identity, state, command.ppm_ascii);
+        }
         if (!command.samples_image.empty())
             write_samples_image(command.samples_image, result.samples_taken, s.samples_per_pixel);
         if (!command.stats_file.empty()) {
@@ -207,11 +254,22 @@ int run_render(const RenderCommand& command) {
                                                         s.samples_per_pixel, threads, &result}));
         }
         if (!result.complete) {
+            const int passes = progress.passes_total;
+            if (state.next_pass == 0)
+                std::fprintf(stderr,
+                             "glint: interrupted in the first of %d passes: the image so far is "
+                             "in %s (the tiles not yet rendered are black)",
+                             passes, written.c_str());
+            else
+                std::fprintf(stderr,
+                             "glint: interrupted after %d of %d passes: the image so far is in %s",
+                             state.next_pass, passes, written.c_str());
             std::fprintf(stderr,
-                         "glint: interrupted: the %d of %d tiles that were done are in %s (the "
-                         "rest is black); %s was not written\n",
-                         progress.tiles_done.load(), progress.tiles_total.load(), written.c_str(),
-                         output.c_str());
+                         "; %s was not written\n"
+                         "glint: to continue, with the same options: glint render %s -o %s "
+                         "--resume (the state is in %s)\n",
+                         output.c_str(), shell_quoted(command.scene).c_str(),
+                         shell_quoted(output).c_str(), resume.c_str());
             return kExitInterrupted;
         }
         if (!command.quiet) print_summary(output, s, result);
@@ -221,6 +279,9 @@ int run_render(const RenderCommand& command) {
         return kExitBadInput;
     } catch (const UsageError& e) {
         std::fprintf(stderr, "glint: error: %s\n", e.message.c_str());
+        return kExitBadInput;
+    } catch (const ResumeError& e) {
+        std::fprintf(stderr, "glint: error: %s\n", e.what());
         return kExitBadInput;
     } catch (const ImageError& e) {
         std::fprintf(stderr, "glint: error: %s\n", e.what());

@@ -30,11 +30,14 @@ struct RenderCommand {
     // The most memory the render may take beyond the loaded scene; none: what the machine has
     // available. Checked against an estimate before anything is built.
     std::optional<std::uint64_t> max_memory;
+    bool resume = false;  // continue from the output's resume file
+    // Write the image so far and a resume file after the first pass this long after the last.
+    std::optional<double> checkpoint_minutes;
 };
 
-// Exit status: 0 on success, 2 on bad input (scene, options, an unwritable output path), 1 on
-// any other failure, 130 when interrupted (after writing what was done to
-// partial_output_path(), leaving the output itself alone).
+// Exit status: 0 on success, 2 on bad input (scene, options, an unwritable output path, a resume
+// file of another render), 1 on any other failure, 130 when interrupted (after writing what was
+// done to partial_output_path() and the state to resume_path(), leaving the output alone).
 int run_render(const RenderCommand& command);
 
 }  // namespace glint::cli
