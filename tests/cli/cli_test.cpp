@@ -11,6 +11,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <map>
 #include <sstream>
 #include <string>
@@ -521,7 +522,7 @@ TEST_F(Cli, AFullDiskIsReportedAndLeavesThePreviousStatistics) {
                                                "stdout.txt"}));
 }
 
-// Ctrl-C in the middle of a render that would replace a good image: the image stays as it
+// Ctrl-C twice in the middle of a render that would replace a good image: the image stays as it
 // was, byte for byte, and the finished tiles go to the .partial sibling. The signal is sent
 // once glint reports progress (its handler is in place by then). A machine fast enough to
 // finish the render first leaves nothing to check, and the test is skipped.
@@ -556,6 +557,8 @@ TEST_F(Cli, InterruptedRenderLeavesTheTargetAloneAndWritesAPartialImage) {
                    std::chrono::minutes(5)))
         << "no progress from glint in five minutes";
     if (!ended) {
+        // Twice: the first would finish the pass in flight, most of the render here.
+        ASSERT_EQ(kill(pid, SIGINT), 0);
         ASSERT_EQ(kill(pid, SIGINT), 0);
         ASSERT_TRUE(wait_until([] { return false; }, std::chrono::minutes(1)))
             << "glint did not stop within a minute of Ctrl-C";
@@ -576,6 +579,138 @@ TEST_F(Cli, InterruptedRenderLeavesTheTargetAloneAndWritesAPartialImage) {
     EXPECT_EQ(partial.height, 1200);
     for (const auto& entry : fs::directory_iterator(dir_))
         EXPECT_EQ(entry.path().filename().string().find(".tmp"), std::string::npos) << entry.path();
+}
+
+// Interrupt and resume end to end. A distributed render of 16 passes, a few seconds long, is
+// interrupted once its first progress line shows (by one Ctrl-C, two, or SIGTERM), leaves the
+// image so far and a resume file but not the target, and --resume finishes it to the image of an
+// uninterrupted render, byte for byte; a resume file of other settings is refused; a render
+// killed outright resumes from its last checkpoint.
+class Resume : public Cli {
+protected:
+    std::vector<std::string> args(const std::vector<std::string>& more = {},
+                                  const std::string& output = "out.png") const {
+        std::vector<std::string> a = {
+            "render",  std::string(GLINT_SOURCE_DIR) + "/scenes/distributed-showcase.yaml",
+            "--width", "120",
+            "--spp",   "256",
+            "--seed",  "3",
+            "-o",      (dir_ / output).string()};
+        a.insert(a.end(), more.begin(), more.end());
+        return a;
+    }
+    static std::string joined(const std::vector<std::string>& a) {
+        std::string line;
+        for (const std::string& arg : a) line += "'" + arg + "' ";
+        return line;
+    }
+    // Starts the render, waits until `ready` holds, sends the signals; the exit status, or -1
+    // when the render ended before `ready` (a machine too fast for the test).
+    int interrupt(const std::vector<int>& signals, const std::vector<std::string>& more,
+                  const std::function<bool()>& ready) const {
+        const pid_t pid = spawn_glint(args(more));
+        EXPECT_GT(pid, 0);
+        int status = 0;
+        const auto deadline = std::chrono::steady_clock::now() + std::chrono::minutes(5);
+        while (!ready()) {
+            if (waitpid(pid, &status, WNOHANG) == pid) return -1;
+            if (std::chrono::steady_clock::now() > deadline) {
+                kill(pid, SIGKILL);
+                waitpid(pid, &status, 0);
+                ADD_FAILURE() << "no progress from glint in five minutes";
+                return -1;
+            }
+            std::this_thread::sleep_for(std::chrono::milliseconds(10));
+        }
+        for (const int signal : signals) kill(pid, signal);
+        waitpid(pid, &status, 0);
+        if (WIFSIGNALED(status) && WTERMSIG(status) == SIGKILL) return -SIGKILL;
+        return WIFEXITED(status) ? WEXITSTATUS(status) : -2;
+    }
+    bool progress_shown() const {
+        return slurp(dir_ / "stderr.txt").find("% done") != std::string::npos;
+    }
+};
+
+TEST_F(Resume, InterruptedRenderResumesToTheUninterruptedImage) {
+    ASSERT_EQ(run_glint(joined(args({"-q"}, "reference.png"))).exit_code, 0);
+    const std::string reference = slurp(dir_ / "reference.png");
+    struct Stop {
+        const char* name;
+        std::vector<int> signals;
+    };
+    int checked = 0;
+    for (const Stop& stop : {Stop{"Ctrl-C", {SIGINT}}, Stop{"Ctrl-C twice", {SIGINT, SIGINT}},
+                             Stop{"SIGTERM", {SIGTERM}}}) {
+        SCOPED_TRACE(stop.name);
+        const int status = interrupt(stop.signals, {}, [&] { return progress_shown(); });
+        if (status == -1 || status == 0) continue;  // finished first
+        ++checked;
+        const std::string err = slurp(dir_ / "stderr.txt");
+        ASSERT_EQ(status, 130) << err;
+        EXPECT_NE(err.find("--resume"), std::string::npos) << err;
+        EXPECT_FALSE(fs::exists(dir_ / "out.png"));
+        ASSERT_TRUE(fs::exists(dir_ / "out.png.resume"));
+        const Image partial = read_image(dir_ / "out.partial.png");
+        EXPECT_EQ(partial.width, 120);
+
+        const Outcome resumed = run_glint(joined(args({"--resume", "-q"})));
+        ASSERT_EQ(resumed.exit_code, 0) << resumed.err;
+        EXPECT_TRUE(slurp(dir_ / "out.png") == reference) << "not the uninterrupted image";
+        EXPECT_FALSE(fs::exists(dir_ / "out.png.resume"));
+        EXPECT_FALSE(fs::exists(dir_ / "out.partial.png"));
+        fs::remove(dir_ / "out.png");
+    }
+    if (checked == 0) GTEST_SKIP() << "every render finished before its signal";
+}
+
+TEST_F(Resume, ResumeFileOfOtherSettingsIsRefusedAndAMissingOneIsAnError) {
+    const Outcome missing = run_glint(joined(args({"--resume"})));
+    EXPECT_EQ(missing.exit_code, 2);
+    EXPECT_NE(missing.err.find("out.png.resume\": there is no such file"), std::string::npos)
+        << missing.err;
+    if (interrupt({SIGINT}, {}, [&] { return progress_shown(); }) != 130)
+        GTEST_SKIP() << "the render finished before Ctrl-C";
+    const std::string saved = slurp(dir_ / "out.png.resume");
+    for (const auto& [option, message] :
+         {std::pair<std::vector<std::string>, std::string>{{"--seed", "4"}, "for seed 3, not 4"},
+          {{"--spp", "128"}, "for 256 samples per pixel, not 128"},
+          {{"--width", "100"}, "for an image of 120x68, not 100x56"},
+          {{"--filter", "box"}, "not a box filter"}}) {
+        std::vector<std::string> changed = args({"--resume"});
+        const auto at = std::find(changed.begin(), changed.end(), option[0]);
+        if (at != changed.end())
+            *(at + 1) = option[1];
+        else
+            changed.insert(changed.end(), option.begin(), option.end());
+        const Outcome refused = run_glint(joined(changed));
+        EXPECT_EQ(refused.exit_code, 2) << option[0];
+        EXPECT_NE(refused.err.find(message), std::string::npos) << refused.err;
+        EXPECT_FALSE(fs::exists(dir_ / "out.png")) << option[0];
+        EXPECT_TRUE(slurp(dir_ / "out.png.resume") == saved) << option[0];
+    }
+    // The accelerating structure and the thread count do not change the image: no refusal.
+    EXPECT_EQ(run_glint(joined(args({"--resume", "-q", "--accel", "kdtree", "--threads", "1"})))
+                  .exit_code,
+              0);
+}
+
+TEST_F(Resume, CheckpointsLetARenderKilledOutrightResume) {
+    ASSERT_EQ(run_glint(joined(args({"-q"}, "reference.png"))).exit_code, 0);
+    // A checkpoint after every pass (0.001 minutes is 60 ms); SIGKILL as soon as there is one.
+    const int status = interrupt({SIGKILL}, {"--checkpoint", "0.001", "-q"},
+                                 [&] { return fs::exists(dir_ / "out.png.resume"); });
+    if (status != -SIGKILL) GTEST_SKIP() << "the render finished before its first checkpoint";
+    EXPECT_FALSE(fs::exists(dir_ / "out.png"));
+    EXPECT_TRUE(fs::exists(dir_ / "out.partial.png"));
+    const Outcome resumed = run_glint(joined(args({"--resume", "-q"})));
+    ASSERT_EQ(resumed.exit_code, 0) << resumed.err;
+    EXPECT_TRUE(slurp(dir_ / "out.png") == slurp(dir_ / "reference.png"));
+}
+
+TEST_F(Resume, CheckpointMustBeAPositiveNumberOfMinutes) {
+    for (const char* bad : {"0", "-1", "soon"})
+        EXPECT_EQ(run_glint(joined(args({"--checkpoint", bad}))).exit_code, 2) << bad;
 }
 
 }  // namespace
