@@ -16,7 +16,7 @@ namespace glint {
 
 // Samples of every pixel in one pass: a sixteenth of the render, so that a stop after the pass in
 // flight comes soon, but at least 16 (or all there are): each pass works out every pixel's pattern
-// keys again, which cost a 64-spp render 7% in passes of 4 samples and 3.5% in passes of 8
+// keys again, which cost a 64-spp render 7% in passes of 4 samples and 4% in passes of 8
 // (bench/README.md).
 inline int samples_per_pass(int samples_per_pixel) {
     return std::max((samples_per_pixel + 15) / 16, std::min(samples_per_pixel, 16));
