@@ -6,6 +6,7 @@
 #include <zlib.h>
 
 #include <bit>
+#include <cassert>
 #include <cstring>
 #include <sstream>
 #include <vector>
@@ -255,6 +256,13 @@ std::string encode_state(const RenderState& s) {
     return std::move(out.bytes());
 }
 
+// The bytes encode_state writes for s, worked out without writing them.
+std::uint64_t encoded_size(const RenderState& s) {
+    return 4 + 4 + s.tiles_done.size() + kRayKindCount * 8 + 8 + 8 + 1 + 3 * 4 + 8 +
+           s.samples.size() * 4 + s.errors.size() * (4 + 8 + 8) + s.film.box_sums().size() * 4 * 4 +
+           s.film.sums().size() * 4 * 16;
+}
+
 // Decodes into `s`, a fresh state of the expected image, whose sizes the data must have.
 void decode_state(ByteReader& in, RenderState& s, const std::string& corrupt) {
     s.next_pass = in.i32();
@@ -323,6 +331,7 @@ std::filesystem::path resume_path(const std::filesystem::path& output) {
 void write_resume_file(const std::filesystem::path& file, const RenderIdentity& identity,
                        const RenderState& state) {
     const std::string payload = encode_state(state);
+    assert(payload.size() == encoded_size(state));
     uLongf packed_size = compressBound(uLong(payload.size()));
     std::vector<unsigned char> packed(packed_size);
     // The fastest level: the sums of a noisy image hardly compress further, and a checkpoint
@@ -374,7 +383,7 @@ RenderState read_resume_file(const std::filesystem::path& file, const RenderIden
     const std::uint64_t payload_size = in.u64(), packed_size = in.u64();
     const std::uint32_t crc = in.u32();
     // The size a state of this image has, so that a damaged header cannot ask for any memory.
-    const std::uint64_t expected_size = encode_state(state).size();
+    const std::uint64_t expected_size = encoded_size(state);
     if (payload_size != expected_size) throw ResumeError(corrupt);
     if (packed_size > in.left()) throw ResumeError(truncated);
     if (packed_size < in.left()) throw ResumeError(corrupt);
