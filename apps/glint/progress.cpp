@@ -65,17 +65,19 @@ void ProgressWatcher::run() {
             if (wake_.wait_for(lock, std::chrono::milliseconds(100), [this] { return done_; }))
                 break;
         }
+        // A render of one pass would finish whole after the first: it stops at once instead.
         const int interrupts = g_interrupts;
+        const bool one_pass = progress_.passes_total <= 1;
         if (interrupts >= 1 && !progress_.stop_after_pass) {
             progress_.stop_after_pass = true;
-            if (show_)
+            if (show_ && !one_pass)
                 std::fprintf(stderr,
                              "%sglint: stopping after the pass in flight (%d of %d); interrupt "
                              "again to stop after the tiles in flight\n",
                              drew_bar ? "\n" : "", progress_.passes_done + 1,
                              progress_.passes_total.load());
         }
-        if (interrupts >= 2) progress_.cancel = true;
+        if (interrupts >= 2 || (interrupts >= 1 && one_pass)) progress_.cancel = true;
         const int total = progress_.tiles_total;
         if (!show_ || total == 0) continue;
         const double fraction = double(progress_.tiles_done) / total;
