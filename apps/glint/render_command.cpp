@@ -257,9 +257,10 @@ int run_render(const RenderCommand& command) {
             const int passes = progress.passes_total;
             if (state.next_pass == 0)
                 std::fprintf(stderr,
-                             "glint: interrupted in the first of %d passes: the image so far is "
-                             "in %s (the tiles not yet rendered are black)",
-                             passes, written.c_str());
+                             "glint: interrupted in the first pass%s: the image so far is in %s "
+                             "(the tiles not yet rendered are black)",
+                             passes > 1 ? (" of " + std::to_string(passes)).c_str() : "",
+                             written.c_str());
             else
                 std::fprintf(stderr,
                              "glint: interrupted after %d of %d passes: the image so far is in %s",

@@ -708,6 +708,37 @@ TEST_F(Resume, CheckpointsLetARenderKilledOutrightResume) {
     EXPECT_TRUE(slurp(dir_ / "out.png") == slurp(dir_ / "reference.png"));
 }
 
+TEST_F(Resume, OnePassRenderStopsAtTheFirstCtrlCAndResumesExactly) {
+    // Whitted's single sample: one pass, which the first Ctrl-C does not wait for.
+    const std::vector<std::string> whitted = {
+        "render",    std::string(GLINT_SOURCE_DIR) + "/scenes/showcase.yaml",
+        "--width",   "1200",
+        "--threads", "1"};
+    std::vector<std::string> reference = whitted, resume = whitted;
+    reference.insert(reference.end(), {"-q", "-o", (dir_ / "reference.png").string()});
+    resume.insert(resume.end(), {"-q", "--resume", "-o", (dir_ / "out.png").string()});
+    ASSERT_EQ(run_glint(joined(reference)).exit_code, 0);
+    std::vector<std::string> run = whitted;
+    run.insert(run.end(), {"-o", (dir_ / "out.png").string()});
+    const pid_t pid = spawn_glint(run);
+    ASSERT_GT(pid, 0);
+    int status = 0;
+    while (!progress_shown()) {
+        if (waitpid(pid, &status, WNOHANG) == pid) GTEST_SKIP() << "finished before Ctrl-C";
+        std::this_thread::sleep_for(std::chrono::milliseconds(10));
+    }
+    kill(pid, SIGINT);
+    waitpid(pid, &status, 0);
+    if (WIFEXITED(status) && WEXITSTATUS(status) == 0) GTEST_SKIP() << "finished before Ctrl-C";
+    ASSERT_TRUE(WIFEXITED(status));
+    EXPECT_EQ(WEXITSTATUS(status), 130) << slurp(dir_ / "stderr.txt");
+    EXPECT_NE(slurp(dir_ / "stderr.txt").find("interrupted in the first pass:"), std::string::npos)
+        << slurp(dir_ / "stderr.txt");
+    const Outcome resumed = run_glint(joined(resume));
+    ASSERT_EQ(resumed.exit_code, 0) << resumed.err;
+    EXPECT_TRUE(slurp(dir_ / "out.png") == slurp(dir_ / "reference.png"));
+}
+
 TEST_F(Resume, CheckpointMustBeAPositiveNumberOfMinutes) {
     for (const char* bad : {"0", "-1", "soon"})
         EXPECT_EQ(run_glint(joined(args({"--checkpoint", bad}))).exit_code, 2) << bad;
