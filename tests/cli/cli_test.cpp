@@ -557,8 +557,10 @@ TEST_F(Cli, InterruptedRenderLeavesTheTargetAloneAndWritesAPartialImage) {
                    std::chrono::minutes(5)))
         << "no progress from glint in five minutes";
     if (!ended) {
-        // Twice: the first would finish the pass in flight, most of the render here.
+        // Twice: the first would finish the pass in flight, most of the render here. Apart: a
+        // signal sent while the same one is pending is lost.
         ASSERT_EQ(kill(pid, SIGINT), 0);
+        std::this_thread::sleep_for(std::chrono::milliseconds(200));
         ASSERT_EQ(kill(pid, SIGINT), 0);
         ASSERT_TRUE(wait_until([] { return false; }, std::chrono::minutes(1)))
             << "glint did not stop within a minute of Ctrl-C";
@@ -622,7 +624,11 @@ protected:
             }
             std::this_thread::sleep_for(std::chrono::milliseconds(10));
         }
-        for (const int signal : signals) kill(pid, signal);
+        for (const int signal : signals) {
+            kill(pid, signal);
+            // A signal sent while the same one is pending is lost.
+            std::this_thread::sleep_for(std::chrono::milliseconds(200));
+        }
         waitpid(pid, &status, 0);
         if (WIFSIGNALED(status) && WTERMSIG(status) == SIGKILL) return -SIGKILL;
         return WIFEXITED(status) ? WEXITSTATUS(status) : -2;
