@@ -37,8 +37,8 @@ std::string format_duration(double seconds) {
 ProgressWatcher::ProgressWatcher(RenderProgress& progress, bool show)
     : progress_(progress), show_(show), terminal_(isatty(STDERR_FILENO) != 0) {
     g_interrupts = 0;
-    std::signal(SIGINT, on_interrupt);
-    std::signal(SIGTERM, on_interrupt);
+    previous_sigint_ = std::signal(SIGINT, on_interrupt);
+    previous_sigterm_ = std::signal(SIGTERM, on_interrupt);
     thread_ = std::thread([this] { run(); });
 }
 
@@ -49,8 +49,8 @@ ProgressWatcher::~ProgressWatcher() {
     }
     wake_.notify_one();
     thread_.join();
-    std::signal(SIGINT, SIG_DFL);
-    std::signal(SIGTERM, SIG_DFL);
+    std::signal(SIGINT, previous_sigint_);
+    std::signal(SIGTERM, previous_sigterm_);
 }
 
 void ProgressWatcher::run() {

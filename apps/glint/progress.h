@@ -5,6 +5,7 @@
 
 #include <atomic>
 #include <condition_variable>
+#include <csignal>
 #include <mutex>
 #include <thread>
 
@@ -33,6 +34,9 @@ private:
     std::condition_variable wake_;
     bool done_ = false;  // guarded by mutex_
     std::thread thread_;
+    // Put back when the watcher goes.
+    void (*previous_sigint_)(int) = SIG_DFL;
+    void (*previous_sigterm_)(int) = SIG_DFL;
 };
 
 }  // namespace glint::cli

@@ -7,6 +7,7 @@
 
 #include <chrono>
 #include <cmath>
+#include <csignal>
 #include <cstdio>
 #include <filesystem>
 #include <new>
@@ -41,6 +42,24 @@ constexpr int kExitInterrupted = 130;
 
 struct UsageError {
     std::string message;
+};
+
+// Ignores SIGINT and SIGTERM while it lives, then puts back what was there.
+class StopSignalsIgnored {
+public:
+    StopSignalsIgnored()
+        : previous_sigint_(std::signal(SIGINT, SIG_IGN)),
+          previous_sigterm_(std::signal(SIGTERM, SIG_IGN)) {}
+    ~StopSignalsIgnored() {
+        std::signal(SIGINT, previous_sigint_);
+        std::signal(SIGTERM, previous_sigterm_);
+    }
+    StopSignalsIgnored(const StopSignalsIgnored&) = delete;
+    StopSignalsIgnored& operator=(const StopSignalsIgnored&) = delete;
+
+private:
+    void (*previous_sigint_)(int);
+    void (*previous_sigterm_)(int);
 };
 
 std::string default_output(const std::string& scene) {
@@ -227,6 +246,10 @@ int run_render(const RenderCommand& command) {
         }
         RenderProgress progress;
         RenderResult result;
+        // Once the samples are in, a Ctrl-C or SIGTERM (a second one sent just as the render
+        // ends) would only lose them halfway through writing the files: it is ignored until
+        // run_render returns. The watcher handles them while it renders.
+        const StopSignalsIgnored while_writing;
         {
             const ProgressWatcher watcher(progress, !command.quiet);
             result = render(world, options, &progress, &state);
