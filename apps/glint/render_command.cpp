@@ -44,23 +44,12 @@ struct UsageError {
     std::string message;
 };
 
-// Ignores SIGINT and SIGTERM while it lives, then puts back what was there.
-class StopSignalsIgnored {
-public:
-    StopSignalsIgnored()
-        : previous_sigint_(std::signal(SIGINT, SIG_IGN)),
-          previous_sigterm_(std::signal(SIGTERM, SIG_IGN)) {}
-    ~StopSignalsIgnored() {
-        std::signal(SIGINT, previous_sigint_);
-        std::signal(SIGTERM, previous_sigterm_);
-    }
-    StopSignalsIgnored(const StopSignalsIgnored&) = delete;
-    StopSignalsIgnored& operator=(const StopSignalsIgnored&) = delete;
-
-private:
-    void (*previous_sigint_)(int);
-    void (*previous_sigterm_)(int);
-};
+// From here on SIGINT and SIGTERM are ignored: the render is over and glint only writes its
+// files and exits.
+void ignore_stop_signals() {
+    std::signal(SIGINT, SIG_IGN);
+    std::signal(SIGTERM, SIG_IGN);
+}
 
 std::string default_output(const std::string& scene) {
     return std::filesystem::path(scene).stem().string() + ".png";
@@ -247,9 +236,10 @@ int run_render(const RenderCommand& command) {
         RenderProgress progress;
         RenderResult result;
         // Once the samples are in, a Ctrl-C or SIGTERM (a second one sent just as the render
-        // ends) would only lose them halfway through writing the files: it is ignored until
-        // run_render returns. The watcher handles them while it renders.
-        const StopSignalsIgnored while_writing;
+        // ends) would only lose them halfway through writing the files, or turn a written
+        // render's exit status into a kill: it is ignored until glint exits. The watcher handles
+        // them while it renders, and puts back what it found.
+        ignore_stop_signals();
         {
             const ProgressWatcher watcher(progress, !command.quiet);
             result = render(world, options, &progress, &state);
