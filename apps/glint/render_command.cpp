@@ -101,7 +101,9 @@ std::string with_thousands(std::uint64_t n) {
 
 // Refuses a render whose structures, film and images would not fit, before building them.
 void check_memory(const Scene& scene, AccelKind accel, const RenderCommand& c) {
-    const MemoryEstimate need = estimate_render_memory(scene, accel, !c.samples_image.empty());
+    const MemoryEstimate need = estimate_render_memory(
+        scene, accel,
+        RenderExtras{.samples_image = !c.samples_image.empty(), .resuming = c.resume});
     const std::optional<std::uint64_t> room = c.max_memory ? c.max_memory : available_memory();
     if (!room || need.total() <= *room) return;
     const RenderSettings& s = scene.settings;
@@ -168,9 +170,11 @@ void write_stats(const std::string& file, const std::string& json) {
 
 // The image so far beside the output, and the state to continue from: at a checkpoint and when
 // interrupted. The image first: a resume file always has an image of at most its samples.
+// The image so far (the state's film resolved) and the state.
 void save_progress(const std::filesystem::path& partial, const std::filesystem::path& resume,
-                   const RenderIdentity& identity, const RenderState& state, bool ppm_ascii) {
-    write_image(partial, state.film.resolve(), WriteOptions{ppm_ascii});
+                   const RenderIdentity& identity, const RenderState& state, const Image& image,
+                   bool ppm_ascii) {
+    write_image(partial, image, WriteOptions{ppm_ascii});
     write_resume_file(resume, identity, state);
 }
 
@@ -229,7 +233,8 @@ int run_render(const RenderCommand& command) {
             const std::chrono::duration<double> interval(*command.checkpoint_minutes * 60);
             options.after_pass = [&](const RenderState& so_far) {
                 if (Clock::now() - last_checkpoint < interval) return;
-                save_progress(partial, resume, identity, so_far, command.ppm_ascii);
+                save_progress(partial, resume, identity, so_far, so_far.film.resolve(),
+                              command.ppm_ascii);
                 last_checkpoint = Clock::now();
             };
         }
@@ -256,7 +261,7 @@ int run_render(const RenderCommand& command) {
             std::filesystem::remove(resume, ignored);
             std::filesystem::remove(partial, ignored);
         } else {
-            save_progress(partial, resume, identity, state, command.ppm_ascii);
+            save_progress(partial, resume, identity, state, result.image, command.ppm_ascii);
         }
         if (!command.samples_image.empty())
             write_samples_image(command.samples_image, result.samples_taken, s.samples_per_pixel);

@@ -150,12 +150,13 @@ TEST_F(Cli, OutOfMemoryIsReportedInWords) {
 }
 
 TEST_F(Cli, ARenderTooLargeForItsMemoryIsRefusedBeforeBuilding) {
-    // 4000 x 3000 pixels of the gaussian film at 80 bytes a pixel: 916 MiB.
+    // 4000 x 3000 pixels of the gaussian film at 84 bytes a pixel, and 4 MiB of file buffers:
+    // 965 MiB.
     const Outcome r = run_glint("render " + scene("showcase.yaml") +
                                 " --width 4000 --filter gaussian -q -o big.png --max-memory 64M");
     EXPECT_EQ(r.exit_code, 2) << r.err;
     EXPECT_NE(r.err.find("glint: error: the render needs about "), std::string::npos) << r.err;
-    EXPECT_NE(r.err.find("the film 916 MiB for 4000x3000 pixels"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("the film 965 MiB for 4000x3000 pixels"), std::string::npos) << r.err;
     EXPECT_NE(r.err.find("more than the 64 MiB --max-memory allows"), std::string::npos) << r.err;
     EXPECT_FALSE(fs::exists(dir_ / "big.png"));
 

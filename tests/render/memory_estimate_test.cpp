@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include "glint/geometry/triangle_mesh.h"
+#include "glint/render/render_state.h"
 #include "glint/render/world.h"
 
 namespace glint {
@@ -30,25 +31,51 @@ Scene spheres_and_a_mesh(int spheres, int triangles) {
 
 TEST(MemoryEstimate, CountsEveryTriangleAndEveryPixel) {
     Scene scene = spheres_and_a_mesh(10, 1000);
-    const MemoryEstimate box = estimate_render_memory(scene, AccelKind::bvh, false);
+    const std::uint64_t pixels = 400 * 300, buffers = 4 << 20;
+    const MemoryEstimate box = estimate_render_memory(scene, AccelKind::bvh);
     EXPECT_EQ(box.references, 1010u);
-    // The one-pixel box: its float sums (16 bytes), the image (12) and the 8-bit copy (4).
-    EXPECT_EQ(box.film, 400u * 300u * (16 + 12 + 4));
-    EXPECT_EQ(estimate_render_memory(scene, AccelKind::bvh, true).film,
-              400u * 300u * (16 + 12 + 4 + 24));
+    // The one-pixel box: its float sums (16 bytes) and samples taken (4), the image (12) and
+    // the 8-bit copy (4).
+    EXPECT_EQ(box.film, pixels * (16 + 4 + 12 + 4) + buffers);
+    EXPECT_EQ(estimate_render_memory(scene, AccelKind::bvh, {.samples_image = true}).film,
+              pixels * (16 + 4 + 12 + 4 + 24) + buffers);
+    // A resume file read: its bytes and the state unpacked, each at most the state's 20.
+    EXPECT_EQ(estimate_render_memory(scene, AccelKind::bvh, {.resuming = true}).film,
+              pixels * (16 + 4 + 12 + 4 + 2 * 20) + buffers);
 
     scene.settings.filter = FilterSpec{FilterKind::gaussian, 1.5f, 0.5f};
     // Fixed-point sums: four 128-bit integers a pixel.
-    EXPECT_EQ(estimate_render_memory(scene, AccelKind::bvh, false).film,
-              400u * 300u * (64 + 12 + 4));
+    EXPECT_EQ(estimate_render_memory(scene, AccelKind::bvh).film,
+              pixels * (64 + 4 + 12 + 4) + buffers);
+    // Adaptive sampling keeps each pixel's error: a count, a mean and a sum of squares.
+    scene.settings.adaptive = AdaptiveSampling{0.01f, 16};
+    EXPECT_EQ(estimate_render_memory(scene, AccelKind::bvh).film,
+              pixels * (64 + 4 + 24 + 12 + 4) + buffers);
     EXPECT_EQ(box.total(), box.acceleration + box.film);
+}
+
+TEST(MemoryEstimate, IsNoLessThanWhatTheFilmAndStateTake) {
+    Scene scene = spheres_and_a_mesh(1, 1);
+    scene.settings.adaptive = AdaptiveSampling{0.01f, 16};
+    for (const FilterSpec filter :
+         {FilterSpec{FilterKind::box, 0.5f}, FilterSpec{FilterKind::gaussian, 1.5f, 0.5f}}) {
+        scene.settings.filter = filter;
+        const RenderState state(scene.settings, 32, 16);
+        const std::uint64_t held = state.film.sums().size() * sizeof(PixelSum) +
+                                   state.film.box_sums().size() * sizeof(BoxSum) +
+                                   state.samples.size() * sizeof(std::uint32_t) +
+                                   state.errors.size() * sizeof(PixelError) +
+                                   state.film.resolve().pixels.size() * sizeof(Color);
+        // Without the files' buffers, which would hide a pixel's bytes left out.
+        EXPECT_GE(estimate_render_memory(scene, AccelKind::list).film - (4 << 20), held);
+    }
 }
 
 TEST(MemoryEstimate, IsNoLessThanWhatTheBuiltStructureTakes) {
     for (const AccelKind accel :
          {AccelKind::list, AccelKind::bvh, AccelKind::grid, AccelKind::kdtree}) {
         Scene scene = spheres_and_a_mesh(2000, 20000);
-        const MemoryEstimate estimate = estimate_render_memory(scene, accel, false);
+        const MemoryEstimate estimate = estimate_render_memory(scene, accel);
         const World world(std::move(scene), accel);
         const std::size_t built = make_aggregate(accel, world.primitives())->memory_bytes();
         EXPECT_GE(estimate.acceleration, built) << accel_name(accel);

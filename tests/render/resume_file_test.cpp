@@ -144,6 +144,30 @@ TEST_F(ResumeFile, AnotherRenderIsRefusedNamingWhatDiffers) {
               std::string::npos);
 }
 
+// A state of several mebibytes is packed and written piece by piece as it is encoded: every
+// piece comes back, in order.
+TEST_F(ResumeFile, AStateOfManyPiecesSurvivesARoundTripExactly) {
+    scene_.settings.width = 300;
+    scene_.settings.height = 200;
+    scene_.settings.filter = FilterSpec{FilterKind::gaussian, 1.5f};
+    scene_.settings.adaptive = AdaptiveSampling{0.05f, 2};
+    RenderState saved = initial_state(scene_.settings, options_);
+    std::uint64_t bits = 0x9e3779b97f4a7c15ull;  // noise, which does not pack
+    const auto next = [&] { return bits = bits * 6364136223846793005ull + 1442695040888963407ull; };
+    for (std::uint32_t& n : saved.samples) n = std::uint32_t(next() >> 40);
+    for (PixelError& e : saved.errors) e = {int(next() >> 48), double(next()), double(next())};
+    for (PixelSum& p : saved.film.sums())
+        p = {FixedSum(next()) << 40, FixedSum(next()), -FixedSum(next()), FixedSum(next())};
+    saved.next_pass = 1;
+    const fs::path file = dir_ / "image.png.resume";
+    write_resume_file(file, identity(), saved);
+    EXPECT_GT(fs::file_size(file), 2u << 20);  // several pieces, packed
+    const RenderState read = read_resume_file(file, identity(), scene_.settings);
+    EXPECT_EQ(read.samples, saved.samples);
+    EXPECT_EQ(read.errors, saved.errors);
+    EXPECT_TRUE(same_bytes(read.film.sums(), saved.film.sums()));
+}
+
 TEST_F(ResumeFile, MissingTruncatedCorruptAndForeignFilesAreRefused) {
     const fs::path file = dir_ / "image.png.resume";
     const RenderIdentity id = identity();

@@ -9,6 +9,7 @@
 
 #include "glint/accel/primitive_refs.h"
 #include "glint/render/film.h"
+#include "glint/render/pixel_error.h"
 
 namespace glint {
 
@@ -40,6 +41,10 @@ std::uint64_t bytes_per_reference(AccelKind accel) {
 // smallest array of cells).
 constexpr std::uint64_t kStructureBaseBytes = std::uint64_t(1) << 20;
 
+// The resume file's pieces and zlib's buffers (a state is written as it is packed), and room
+// for the few bytes zlib adds to data it cannot pack.
+constexpr std::uint64_t kFileBufferBytes = std::uint64_t(4) << 20;
+
 // The value of /proc/meminfo's line "Key:  123 kB", in bytes.
 std::optional<std::uint64_t> meminfo_value(const std::string& key) {
     std::ifstream in("/proc/meminfo");
@@ -62,7 +67,8 @@ std::optional<std::uint64_t> file_number(const char* path) {
 
 }  // namespace
 
-MemoryEstimate estimate_render_memory(const Scene& scene, AccelKind accel, bool record_samples) {
+MemoryEstimate estimate_render_memory(const Scene& scene, AccelKind accel,
+                                      const RenderExtras& extras) {
     MemoryEstimate e;
     for (const SceneObject& object : scene.objects) e.references += reference_count(object.shape);
     e.acceleration = kStructureBaseBytes + e.references * bytes_per_reference(accel) +
@@ -72,11 +78,16 @@ MemoryEstimate estimate_render_memory(const Scene& scene, AccelKind accel, bool 
     const std::uint64_t pixels = std::uint64_t(s.width) * std::uint64_t(s.height);
     const FilterSpec filter = filter_of(s);
     const bool one_pixel = filter.kind == FilterKind::box && filter.radius == 0.5f;
-    // The sums, the resolved image, and the 8-bit copy a PNG is written from.
-    const std::uint64_t sums = one_pixel ? sizeof(BoxSum) : sizeof(PixelSum);
-    std::uint64_t per_pixel = sums + sizeof(Color) + 4;
-    if (record_samples) per_pixel += 2 * sizeof(Color);  // the counts, and the copy written
-    e.film = pixels * per_pixel;
+    // The state: the sums, the samples taken, and the error under adaptive sampling.
+    std::uint64_t state = (one_pixel ? sizeof(BoxSum) : sizeof(PixelSum)) + sizeof(std::uint32_t);
+    if (s.adaptive) state += sizeof(PixelError);
+    // The resolved image, and the 8-bit copy a PNG is written from.
+    std::uint64_t images = sizeof(Color) + 4;
+    if (extras.samples_image) images += 2 * sizeof(Color);  // the counts, and the copy written
+    // A resume file read holds the file's bytes and the state unpacked from them, each no larger
+    // than the state (but for zlib's few bytes over on data it cannot pack).
+    const std::uint64_t resume = extras.resuming ? 2 * state : 0;
+    e.film = pixels * (state + images + resume) + kFileBufferBytes;
     return e;
 }
 

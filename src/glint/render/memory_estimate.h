@@ -16,14 +16,22 @@ namespace glint {
 struct MemoryEstimate {
     std::uint64_t references = 0;    // primitives, each mesh's triangles counted one by one
     std::uint64_t acceleration = 0;  // bytes: the structure over the references
-    std::uint64_t film = 0;          // bytes: the film's sums and the images made from it
+    // Bytes: the render's state (the film's sums, each pixel's samples taken and, under adaptive
+    // sampling, its error), the images made from it and the buffers of the files written.
+    std::uint64_t film = 0;
 
     std::uint64_t total() const { return acceleration + film; }
 };
 
-// An upper estimate for `scene` (after any change to its settings) rendered with `accel`; with
-// record_samples, the image of samples taken as well.
-MemoryEstimate estimate_render_memory(const Scene& scene, AccelKind accel, bool record_samples);
+// What a render does beside making its image.
+struct RenderExtras {
+    bool samples_image = false;  // writes the image of samples taken
+    bool resuming = false;       // reads its state from a resume file first
+};
+
+// An upper estimate for `scene` (after any change to its settings) rendered with `accel`.
+MemoryEstimate estimate_render_memory(const Scene& scene, AccelKind accel,
+                                      const RenderExtras& extras = {});
 
 // The memory this process may still take: the system's available memory (MemAvailable), or
 // less where a control group limits the process. Nothing where neither can be read.

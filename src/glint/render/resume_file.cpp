@@ -8,6 +8,7 @@
 #include <bit>
 #include <cassert>
 #include <cstring>
+#include <functional>
 #include <sstream>
 #include <vector>
 
@@ -24,7 +25,15 @@ constexpr std::uint32_t kFormatVersion = 1;
 
 class ByteWriter {
 public:
-    void u8(std::uint8_t v) { bytes_.push_back(char(v)); }
+    ByteWriter() = default;
+    // Hands the bytes to `sink` in pieces of about a mebibyte as they come, instead of keeping
+    // them all: a render's state is as large as its film.
+    explicit ByteWriter(std::function<void(const std::string&)> sink) : sink_(std::move(sink)) {}
+
+    void u8(std::uint8_t v) {
+        bytes_.push_back(char(v));
+        if (sink_ && bytes_.size() >= kPiece) flush();
+    }
     void u32(std::uint32_t v) {
         for (int i = 0; i < 4; ++i) u8(std::uint8_t(v >> (8 * i)));
     }
@@ -40,13 +49,70 @@ public:
     }
     void text(std::string_view s) {
         u32(std::uint32_t(s.size()));
-        bytes_.append(s);
+        raw(s.data(), s.size());
     }
-    void raw(const void* data, std::size_t n) { bytes_.append(static_cast<const char*>(data), n); }
+    void raw(const void* data, std::size_t n) {
+        bytes_.append(static_cast<const char*>(data), n);
+        if (sink_ && bytes_.size() >= kPiece) flush();
+    }
+    // Hands what is left to the sink.
+    void flush() {
+        if (!bytes_.empty()) sink_(bytes_);
+        bytes_.clear();
+    }
     std::string& bytes() { return bytes_; }
 
 private:
+    static constexpr std::size_t kPiece = std::size_t(1) << 20;
+    std::function<void(const std::string&)> sink_;
     std::string bytes_;
+};
+
+// Deflates what it is given into a file as it comes, and sums the CRC-32 of what it was given.
+class DeflateToFile {
+public:
+    DeflateToFile(std::FILE* file, const std::filesystem::path& path)
+        : file_(file), path_(path), out_(std::size_t(1) << 16) {
+        // The fastest level: the sums of a noisy image hardly compress further, and a
+        // checkpoint should not stall the render.
+        if (deflateInit(&stream_, Z_BEST_SPEED) != Z_OK) fail();
+    }
+    ~DeflateToFile() { deflateEnd(&stream_); }
+    DeflateToFile(const DeflateToFile&) = delete;
+    DeflateToFile& operator=(const DeflateToFile&) = delete;
+
+    void add(const std::string& bytes) {
+        crc_ = crc32(crc_, reinterpret_cast<const Bytef*>(bytes.data()), uInt(bytes.size()));
+        run(bytes.data(), bytes.size(), Z_NO_FLUSH);
+    }
+    void finish() { run(nullptr, 0, Z_FINISH); }
+    std::uint64_t given() const { return stream_.total_in; }
+    std::uint64_t packed_size() const { return packed_; }
+    std::uint32_t crc() const { return std::uint32_t(crc_); }
+
+private:
+    void run(const char* data, std::size_t size, int flush) {
+        stream_.next_in = reinterpret_cast<Bytef*>(const_cast<char*>(data));
+        stream_.avail_in = uInt(size);
+        do {  // until deflate leaves room in its output: then it has taken all the input
+            stream_.next_out = out_.data();
+            stream_.avail_out = uInt(out_.size());
+            if (deflate(&stream_, flush) == Z_STREAM_ERROR) fail();
+            const std::size_t made = out_.size() - stream_.avail_out;
+            write_bytes(file_, out_.data(), made, path_);
+            packed_ += made;
+        } while (stream_.avail_out == 0);
+    }
+    [[noreturn]] void fail() const {
+        throw ImageError(path_, "cannot compress the render's state");
+    }
+
+    std::FILE* file_;
+    std::filesystem::path path_;
+    z_stream stream_{};
+    std::vector<Bytef> out_;
+    uLong crc_ = crc32(0, nullptr, 0);
+    std::uint64_t packed_ = 0;
 };
 
 // Reads what ByteWriter wrote; running past the end throws the error `truncated` makes.
@@ -221,8 +287,7 @@ std::string difference(const RenderIdentity& was, const RenderIdentity& now) {
     return {};
 }
 
-std::string encode_state(const RenderState& s) {
-    ByteWriter out;
+void encode_state(const RenderState& s, ByteWriter& out) {
     out.i32(s.next_pass);
     out.u32(std::uint32_t(s.tiles_done.size()));
     out.raw(s.tiles_done.data(), s.tiles_done.size());
@@ -253,7 +318,6 @@ std::string encode_state(const RenderState& s) {
         out.i128(p.b);
         out.i128(p.weight);
     }
-    return std::move(out.bytes());
 }
 
 // The bytes encode_state writes for s, worked out without writing them.
@@ -330,25 +394,28 @@ std::filesystem::path resume_path(const std::filesystem::path& output) {
 
 void write_resume_file(const std::filesystem::path& file, const RenderIdentity& identity,
                        const RenderState& state) {
-    const std::string payload = encode_state(state);
-    assert(payload.size() == encoded_size(state));
-    uLongf packed_size = compressBound(uLong(payload.size()));
-    std::vector<unsigned char> packed(packed_size);
-    // The fastest level: the sums of a noisy image hardly compress further, and a checkpoint
-    // should not stall the render.
-    if (compress2(packed.data(), &packed_size, reinterpret_cast<const Bytef*>(payload.data()),
-                  uLong(payload.size()), Z_BEST_SPEED) != Z_OK)
-        throw ImageError(file, "cannot compress the render's state");
-    ByteWriter out;
-    write_identity(out, identity);
-    out.u64(payload.size());
-    out.u64(packed_size);
-    out.u32(std::uint32_t(
-        crc32(0, reinterpret_cast<const Bytef*>(payload.data()), uInt(payload.size()))));
-    out.raw(packed.data(), packed_size);
+    ByteWriter header;
+    write_identity(header, identity);
+    header.u64(encoded_size(state));
+    // The packed size and CRC are known once the state is written: written then, here.
+    const long sums_at = long(header.bytes().size());
+    header.u64(0);
+    header.u32(0);
     write_file_atomically(file, [&](const std::filesystem::path& temporary) {
         UniqueFile f = open_file(temporary, "wb");
-        write_bytes(f.get(), out.bytes().data(), out.bytes().size(), temporary);
+        write_bytes(f.get(), header.bytes().data(), header.bytes().size(), temporary);
+        DeflateToFile packed(f.get(), temporary);
+        ByteWriter payload([&](const std::string& piece) { packed.add(piece); });
+        encode_state(state, payload);
+        payload.flush();
+        packed.finish();
+        assert(packed.given() == encoded_size(state));
+        ByteWriter sums;
+        sums.u64(packed.packed_size());
+        sums.u32(packed.crc());
+        if (std::fseek(f.get(), sums_at, SEEK_SET) != 0)
+            throw ImageError(temporary, "cannot seek in the file being written");
+        write_bytes(f.get(), sums.bytes().data(), sums.bytes().size(), temporary);
         close_written_file(std::move(f), temporary);
     });
 }
