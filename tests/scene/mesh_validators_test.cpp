@@ -8,6 +8,8 @@
 #include <sstream>
 #include <string>
 
+#include "glint/scene/mesh/glb_validator.h"
+#include "glint/scene/mesh/gltf_validator.h"
 #include "glint/scene/mesh/obj_validator.h"
 #include "glint/scene/mesh/ply_validator.h"
 #include "glint/scene/mesh/stl_validator.h"
@@ -160,6 +162,70 @@ TEST(StlValidator, ErrorsPointAtTheToken) {
     // A binary STL whose length does not match its count, with a header that starts "solid".
     e = stl_error("solid header\n\x01\x02\x03 garbage\n");
     EXPECT_NE(e.notes().at(0).find("binary STL"), std::string::npos);
+}
+
+SceneError gltf_error(const std::string& json) {
+    try {
+        validate_gltf_json("inline.gltf", json, false);
+    } catch (const SceneError& e) {
+        return e;
+    }
+    ADD_FAILURE() << "no error for:\n" << json;
+    return SceneError({}, "");
+}
+
+TEST(GltfValidator, DataUrisHoldBase64Only) {
+    // Base64, with a JSON-escaped slash; a data URI that is not base64; a file's name.
+    for (const char* uri : {"data:application/octet-stream;base64,AAAA+/9=",
+                            "data:application/octet-stream;base64,AA\\/A",
+                            "data:text/plain,not base64 at all!", "model.bin", "data:;base64,"}) {
+        EXPECT_NO_THROW(validate_gltf_json(
+            "inline.gltf", std::string("{\"buffers\": [{\"uri\": \"") + uri + "\"}]}", false))
+            << uri;
+    }
+    SceneError e = gltf_error("{\n \"buffers\": [{\"uri\": \"data:;base64,AAA\xc3\xa9\"}]\n}");
+    EXPECT_EQ(e.location().line, 2);
+    EXPECT_EQ(e.location().column, 39);
+    EXPECT_EQ(e.message(),
+              "a base64 data URI holds the byte 0xc3 at its character 17, which is not base64 "
+              "(A-Z, a-z, 0-9, +, / and =)");
+    e = gltf_error("{\"images\": [{\"uri\": \"data:image/png;base64,AA*A\"}]}");
+    EXPECT_EQ(e.message(),
+              "a base64 data URI holds '*' at its character 25, which is not base64 (A-Z, a-z, "
+              "0-9, +, / and =)");
+    // A .glb file has no lines: the error names the file alone.
+    try {
+        validate_gltf_json("model.glb", "{\"uri\": \"data:;base64,\x80\"}", true);
+        ADD_FAILURE() << "no error";
+    } catch (const SceneError& glb) {
+        EXPECT_EQ(glb.location().line, 0);
+    }
+}
+
+TEST(GlbValidator, HeaderAndChunksMustFitTheFile) {
+    const auto glb = [](std::uint32_t length, std::uint32_t chunk) {
+        std::string bytes = "glTF";
+        for (const std::uint32_t v : {2u, length, chunk, 0x4e4f534au})
+            for (int i = 0; i < 4; ++i) bytes += char(v >> (8 * i));
+        return bytes + "{} ";
+    };
+    EXPECT_NO_THROW(validate_glb("x.glb", glb(23, 3)));
+    const auto message = [&](const std::string& bytes) {
+        try {
+            validate_glb("x.glb", bytes);
+        } catch (const SceneError& e) {
+            return e.message();
+        }
+        return std::string("(no error)");
+    };
+    // A length too short for a chunk: Assimp reads the chunk's header all the same.
+    EXPECT_EQ(message(glb(15, 0xee000000)),
+              "the GLB header gives a length of 15 bytes, too short for the 12-byte header and a "
+              "chunk (at least 20)");
+    EXPECT_EQ(message(glb(23, 4)),
+              "the GLB chunk at byte 12 claims 4 bytes, past the end of the file's 23");
+    EXPECT_EQ(message(glb(24, 3)),
+              "the GLB header gives a length of 24 bytes, but the file has 23 (it is truncated)");
 }
 
 TEST(TextLines, NumbersParseWholeTokensOnly) {

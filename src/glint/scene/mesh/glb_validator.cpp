@@ -34,6 +34,11 @@ void validate_glb(const std::filesystem::path& file, std::string_view bytes) {
                     " bytes, but the file has " + std::to_string(bytes.size()) +
                     " (it is truncated)");
     }
+    // Assimp reads the JSON chunk's header whatever length the header gives.
+    if (length < 20) {
+        throw error("the GLB header gives a length of " + std::to_string(length) +
+                    " bytes, too short for the 12-byte header and a chunk (at least 20)");
+    }
     std::uint64_t at = 12;
     while (at + 8 <= length) {
         const std::uint64_t chunk = little_endian32(bytes, at);
