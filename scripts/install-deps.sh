@@ -9,6 +9,7 @@ packages=(
     libyaml-cpp-dev libtbb-dev libpng-dev zlib1g-dev libopenexr-dev libstb-dev
     libassimp-dev libembree-dev
     libcli11-dev libgtest-dev libgmock-dev libbenchmark-dev
+    graphviz  # the tests render `glint explain --format dot` with it
 )
 [ "${1:-}" = "--bench" ] && packages+=(povray)
 

@@ -1,5 +1,5 @@
-// The glint command-line tool: `glint render SCENE` and `glint bench SCENE`, with --help and
-// --version.
+// The glint command-line tool: `glint render SCENE`, `glint explain SCENE --pixel X,Y` and
+// `glint bench SCENE`, with --help and --version.
 #include <CLI/CLI.hpp>
 #include <csignal>
 #include <cstdint>
@@ -7,6 +7,7 @@
 #include <limits>
 
 #include "bench_command.h"
+#include "explain_command.h"
 #include "glint/accel/make_aggregate.h"
 #include "glint/scene/scene.h"
 #include "render_command.h"
@@ -22,10 +23,6 @@ namespace {
 
 using glint::cli::whole_number;
 
-std::vector<std::string> names(std::span<const std::string_view> list) {
-    return {list.begin(), list.end()};
-}
-
 constexpr const char* kExamples = R"(
 Examples:
   glint render scenes/showcase.yaml                     writes showcase.png
@@ -34,6 +31,8 @@ Examples:
   glint render scenes/room.yaml --allow-read ~/models   the scene may read ~/models too
   glint render big.yaml -o big.exr --checkpoint 10      after Ctrl-C or a crash:
   glint render big.yaml -o big.exr --resume             continues where it stopped
+  glint explain scenes/showcase.yaml --pixel 160,120    the ray tree of a pixel's sample
+  glint explain scene.yaml --pixel 10,20 --format dot -o tree.dot
   glint bench scene.nff --json --rays 100000           build time, Mrays/s per structure
 )";
 
@@ -47,23 +46,9 @@ void add_render_command(CLI::App& app, glint::cli::RenderCommand& c) {
     render->add_option("-o,--output", c.output,
                        "Image to write: .png (sRGB, 8-bit), .ppm, .pfm or .exr (linear float); "
                        "default: the scene's name with .png");
-    render->add_option("--width", c.width, "Image width in pixels (keeps the aspect alone)")
-        ->check(whole_number(1, glint::kMaxImageSide));
-    render->add_option("--height", c.height, "Image height in pixels (keeps the aspect alone)")
-        ->check(whole_number(1, glint::kMaxImageSide));
-    render
-        ->add_option("--spp", c.spp, "Samples per pixel (a square number for the regular sampler)")
-        ->check(whole_number(1, glint::kMaxSamplesPerPixel));
-    render->add_option("--integrator", c.integrator, "Integrator, overriding the scene's")
-        ->check(CLI::IsMember(names(glint::integrator_names())));
-    render->add_option("--sampler", c.sampler, "Sampler, overriding the scene's")
-        ->check(CLI::IsMember(names(glint::sampler_names())));
-    render->add_option("--filter", c.filter, "Reconstruction filter with its default radius")
-        ->check(CLI::IsMember(names(glint::filter_names())));
+    glint::cli::add_image_options(*render, c.image);
     render->add_option("--threads", c.threads, "Worker threads; 0 uses every core")
         ->check(whole_number(0, 4096));
-    render->add_option("--max-depth", c.max_depth, "Deepest level of the ray tree (eye rays are 1)")
-        ->check(whole_number(1, glint::kMaxDepth));
     render->add_option("--seed", c.seed, "Seed of the random numbers (same seed, same image)")
         ->check(whole_number<std::uint64_t>(0, std::numeric_limits<std::uint64_t>::max()));
     std::vector<std::string> accels;
@@ -113,6 +98,8 @@ int main(int argc, char** argv) {
     app.require_subcommand(1);
     glint::cli::RenderCommand render;
     add_render_command(app, render);
+    glint::cli::ExplainCommand explain;
+    const CLI::App* explain_app = glint::cli::add_explain_command(app, explain);
     glint::cli::BenchCommand bench;
     const CLI::App* bench_app = glint::cli::add_bench_command(app, bench);
     try {
@@ -122,5 +109,6 @@ int main(int argc, char** argv) {
         return app.exit(e) == 0 ? 0 : 2;
     }
     if (bench_app->parsed()) return glint::cli::run_bench(bench);
+    if (explain_app->parsed()) return glint::cli::run_explain(explain);
     return glint::cli::run_render(render);
 }

@@ -27,6 +27,7 @@
 #include "output_path.h"
 #include "progress.h"
 #include "stats_json.h"
+#include "usage_error.h"
 
 #ifndef GLINT_VERSION
 #define GLINT_VERSION "unknown"
@@ -40,10 +41,6 @@ constexpr int kExitFailure = 1;
 constexpr int kExitBadInput = 2;
 constexpr int kExitInterrupted = 130;
 
-struct UsageError {
-    std::string message;
-};
-
 // From here on SIGINT and SIGTERM are ignored: the render is over and glint only writes its
 // files and exits.
 void ignore_stop_signals() {
@@ -53,41 +50,6 @@ void ignore_stop_signals() {
 
 std::string default_output(const std::string& scene) {
     return std::filesystem::path(scene).stem().string() + ".png";
-}
-
-// Command-line options override the scene's image settings; a lone width or height keeps the
-// scene's aspect ratio.
-void apply_overrides(const RenderCommand& c, RenderSettings& s) {
-    if (c.width && !c.height) {
-        s.height =
-            std::max(1, static_cast<int>(std::lround(double(*c.width) * s.height / s.width)));
-    } else if (c.height && !c.width) {
-        s.width =
-            std::max(1, static_cast<int>(std::lround(double(*c.height) * s.width / s.height)));
-    }
-    if (c.width) s.width = *c.width;
-    if (c.height) s.height = *c.height;
-    if (std::int64_t(s.width) * s.height > kMaxImagePixels || s.width > kMaxImageSide ||
-        s.height > kMaxImageSide)
-        throw UsageError{"image of " + std::to_string(s.width) + "x" + std::to_string(s.height) +
-                         " pixels is larger than the limit of " + std::to_string(kMaxImagePixels) +
-                         " pixels"};
-    if (!c.integrator.empty()) s.integrator = *integrator_from_name(c.integrator);
-    if (!c.sampler.empty()) s.sampler = *sampler_from_name(c.sampler);
-    if (!c.filter.empty()) {
-        FilterSpec filter;
-        filter.kind = *filter_from_name(c.filter);
-        filter.radius = default_filter_radius(filter.kind);
-        s.filter = filter;
-    }
-    if (c.spp) s.samples_per_pixel = *c.spp;
-    if (!is_valid_sample_count(sampler_of(s), s.samples_per_pixel))
-        throw UsageError{
-            "samples per pixel must be a square number (1, 4, 9, 16, ...) for the "
-            "regular sampler, got " +
-            std::to_string(s.samples_per_pixel) +
-            " (the jittered and sobol samplers take any number)"};
-    if (c.max_depth) s.max_depth = *c.max_depth;
 }
 
 std::string with_thousands(std::uint64_t n) {
@@ -141,14 +103,28 @@ void print_summary(const std::string& output, const RenderSettings& s, const Ren
     }
 }
 
-void report_bad_samples(const BadSamples& bad, std::uint64_t seed) {
+std::string shell_quoted(const std::string& s) {
+    if (s.find_first_not_of("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789._-/") ==
+        std::string::npos)
+        return s;
+    std::string quoted = "'";
+    for (const char c : s) quoted += c == '\'' ? std::string("'\\''") : std::string(1, c);
+    return quoted + "'";
+}
+
+// The count, the first bad sample, and the command that shows its ray tree.
+void report_bad_samples(const BadSamples& bad, const RenderCommand& c) {
     if (bad.count == 0) return;
     const SampleLocation& at = *bad.first;
     std::fprintf(stderr,
                  "glint: warning: %s samples were NaN or infinite and were left out; the first "
-                 "is pixel (%d, %d), sample %d, seed %llu\n",
+                 "is pixel (%d, %d), sample %d, seed %llu\n"
+                 "glint: to see how it was computed: glint explain %s --pixel %d,%d --sample %d "
+                 "--seed %llu%s\n",
                  with_thousands(bad.count).c_str(), at.x, at.y, at.sample,
-                 static_cast<unsigned long long>(seed));
+                 static_cast<unsigned long long>(c.seed), shell_quoted(c.scene).c_str(), at.x, at.y,
+                 at.sample, static_cast<unsigned long long>(c.seed),
+                 image_options_arguments(c.image).c_str());
 }
 
 // Float formats keep the counts; the others show them as grey, the most a pixel may take white.
@@ -178,15 +154,6 @@ void save_progress(const std::filesystem::path& partial, const std::filesystem::
     write_resume_file(resume, identity, state);
 }
 
-std::string shell_quoted(const std::string& s) {
-    if (s.find_first_not_of("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789._-/") ==
-        std::string::npos)
-        return s;
-    std::string quoted = "'";
-    for (const char c : s) quoted += c == '\'' ? std::string("'\\''") : std::string(1, c);
-    return quoted + "'";
-}
-
 }  // namespace
 
 int run_render(const RenderCommand& command) {
@@ -206,7 +173,7 @@ int run_render(const RenderCommand& command) {
         Scene scene = load_scene(command.scene, command.reading.load_options());
         for (const std::string& warning : scene.warnings)
             std::fprintf(stderr, "glint: warning: %s\n", warning.c_str());
-        apply_overrides(command, scene.settings);
+        apply_image_options(command.image, scene.settings);
         const auto accel = accel_from_name(command.accel);
         if (!accel) throw UsageError{"unknown acceleration structure \"" + command.accel + "\""};
         check_memory(scene, *accel, command);
@@ -249,7 +216,7 @@ int run_render(const RenderCommand& command) {
             const ProgressWatcher watcher(progress, !command.quiet);
             result = render(world, options, &progress, &state);
         }
-        report_bad_samples(result.bad_samples, command.seed);
+        report_bad_samples(result.bad_samples, command);
 
         // An interrupted image goes beside the target, never over it, so a good image from an
         // earlier run survives a Ctrl-C; a finished one makes the files of the stopped render

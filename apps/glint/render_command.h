@@ -6,17 +6,15 @@
 #include <string>
 #include <vector>
 
+#include "image_options.h"
 #include "scene_read_options.h"
 
 namespace glint::cli {
 
 struct RenderCommand {
     std::string scene;
-    std::string output;  // empty: the scene's name with .png, in the current directory
-    std::optional<int> width, height, spp, max_depth;
-    std::string integrator;     // empty: the scene's
-    std::string sampler;        // empty: the scene's (or its integrator's default)
-    std::string filter;         // empty: likewise; else a filter's name with its default radius
+    std::string output;         // empty: the scene's name with .png, in the current directory
+    ImageOptions image;         // --width, --spp, --integrator, ...
     int threads = 0;            // 0: all cores
     std::string accel = "bvh";  // an acceleration structure's name (accel_names())
     // Shadow feelers: "none", "light-buffer", or "light-buffer+cache".

@@ -589,6 +589,75 @@ TEST_F(Cli, InterruptedRenderLeavesTheTargetAloneAndWritesAPartialImage) {
 // image so far and a resume file but not the target, and --resume finishes it to the image of an
 // uninterrupted render, byte for byte; a resume file of other settings is refused; a render
 // killed outright resumes from its last checkpoint.
+TEST_F(Cli, ExplainWritesAPixelsRayTreeAsTextJsonAndDot) {
+    // Through the glass sphere of the showcase: eye, reflected and refracted rays.
+    const std::string base = "explain " + scene("showcase.yaml") + " --pixel 440,330";
+    const Outcome text = run_glint(base);
+    ASSERT_EQ(text.exit_code, 0) << text.err;
+    for (const char* expected :
+         {"pixel (440, 330), sample 0, seed 0, the whitted integrator",
+          "(the tree's terms give it to the last bit)", "eye ray from (0, 2.2, -8)",
+          "hits object 1 (sphere), material \"glass\"", "Snell: n1 = 1, n2 = 1.5",
+          "refracted ray from", "point light 0: L ", "is below the minimum weight"})
+        EXPECT_NE(text.out.find(expected), std::string::npos) << expected << "\n" << text.out;
+
+    const Outcome json = run_glint(base + " --format json --sample 4 --seed 7");
+    ASSERT_EQ(json.exit_code, 0) << json.err;
+    EXPECT_EQ(json.out.rfind("{\"format\": \"glint-ray-tree\", \"version\": 1", 0), 0u) << json.out;
+    EXPECT_NE(json.out.find("\"sample\": 4, \"seed\": 7"), std::string::npos);
+
+    ASSERT_EQ(run_glint(base + " --format dot -o tree.dot").exit_code, 0);
+    EXPECT_EQ(slurp(dir_ / "tree.dot").rfind("digraph ray_tree {", 0), 0u);
+    // Graphviz draws it (install-deps installs it), a node for each ray and light.
+    const std::string svg = (dir_ / "tree.svg").string();
+    ASSERT_EQ(
+        std::system(("dot -Tsvg '" + (dir_ / "tree.dot").string() + "' -o '" + svg + "'").c_str()),
+        0);
+    EXPECT_NE(slurp(svg).find("refracted ray"), std::string::npos);
+}
+
+TEST_F(Cli, ExplainRefusesAPixelOrSampleOutsideTheImage) {
+    const std::string base = "explain " + scene("showcase.yaml");
+    for (const auto& [options, message] : std::vector<std::pair<std::string, std::string>>{
+             {"--pixel 5", "--pixel: expected X,Y, two whole numbers from 0"},
+             {"--pixel 5,-1", "--pixel: expected X,Y"},
+             {"--pixel 800,10", "pixel (800, 10) is outside the image of 800x600 pixels"},
+             {"--pixel 10,10 --width 8", "pixel (10, 10) is outside the image of 8x6 pixels"},
+             {"--pixel 1,1 --sample 9", "sample 9 of a pixel of 9 samples"},
+             {"--pixel 1,1 --format svg", "--format"}}) {
+        const Outcome r = run_glint(base + " " + options);
+        EXPECT_EQ(r.exit_code, 2) << options;
+        EXPECT_NE(r.err.find(message), std::string::npos) << options << ": " << r.err;
+    }
+    EXPECT_EQ(run_glint("explain nowhere.yaml --pixel 1,1").exit_code, 2);
+}
+
+// A sample over the film's limit is left out of the image and reported with the command that
+// replays it; that command explains where its value came from.
+TEST_F(Cli, ABadSampleCanBeReplayedWithExplain) {
+    write_scene("hot.yaml", R"(image: {width: 16, height: 12, samples: 4}
+camera: {from: [0, 0, -5], at: [0, 0, 0], fov: 40}
+materials:
+  hot: {emission: [3e9, 3e9, 3e9]}
+objects:
+  - {type: sphere, center: [0, 0, 0], radius: 1, material: hot}
+)");
+    const Outcome render = run_glint("render hot.yaml -q --seed 3 --spp 4 --sampler jittered");
+    ASSERT_EQ(render.exit_code, 0) << render.err;
+    const std::string prefix = "glint: to see how it was computed: glint ";
+    const std::size_t at = render.err.find(prefix);
+    ASSERT_NE(at, std::string::npos) << render.err;
+    const std::string replay =
+        render.err.substr(at + prefix.size(), render.err.find('\n', at) - at - prefix.size());
+    EXPECT_NE(replay.find("--seed 3 --spp 4 --sampler jittered"), std::string::npos) << replay;
+    const Outcome explained = run_glint(replay);
+    ASSERT_EQ(explained.exit_code, 0) << replay << ": " << explained.err;
+    EXPECT_NE(explained.out.find("emission (3e+09, 3e+09, 3e+09)"), std::string::npos)
+        << explained.out;
+    EXPECT_NE(explained.out.find("sample colour (3e+09, 3e+09, 3e+09)"), std::string::npos)
+        << explained.out;
+}
+
 class Resume : public Cli {
 protected:
     std::vector<std::string> args(const std::vector<std::string>& more = {},

@@ -15,6 +15,12 @@ Point2 lobe_sample(float roughness, SampleStream& stream) {
     return roughness < kMirrorRoughness ? Point2{0, 0} : stream.next_2d();
 }
 
+// The lobe's numbers as drawn: none for a mirror.
+std::optional<Point2> lobe_draw(float roughness, Point2 u) {
+    if (roughness < kMirrorRoughness) return std::nullopt;
+    return u;
+}
+
 }  // namespace
 
 Color DistributedIntegrator::trace_eye_ray(const Ray& ray, SampleStream& stream, RayStats& stats) {
@@ -24,47 +30,80 @@ Color DistributedIntegrator::trace_eye_ray(const Ray& ray, SampleStream& stream,
 
 Color DistributedIntegrator::trace(const Ray& ray, int depth, float weight, SampleStream& stream,
                                    RayStats& stats, const MediumStack& media) {
+    if (!recorder_) [[likely]]
+        return shade(ray, depth, weight, stream, stats, media);
+    recorder_->begin_ray(ray, depth, weight);
+    const Color color = shade(ray, depth, weight, stream, stats, media);
+    recorder_->end_ray(color);
+    return color;
+}
+
+Color DistributedIntegrator::shade(const Ray& ray, int depth, float weight, SampleStream& stream,
+                                   RayStats& stats, const MediumStack& media) {
     const RenderSettings& settings = world_.settings();
     const auto hit = world_.intersect(ray, {0, kInfinity}, kVisibleToCameraRays);
-    if (!hit) return settings.background;
+    if (!hit) {
+        if (recorder_) [[unlikely]]
+            recorder_->missed(settings.background);
+        return settings.background;
+    }
     if (depth == 1) ++stats.primary_hits;
 
     const SurfaceContext c = surface_context(world_, ray, *hit);
+    if (recorder_) [[unlikely]]
+        recorder_->hit(c, *hit);
     const Material& m = *c.material;
     Color color = m.emission + ambient_term(m, c.color, world_.ambient());
     color += direct_light(c, ray, stream, stats);
 
-    if (depth >= settings.max_depth) return color;
+    if (depth >= settings.max_depth) {
+        if (recorder_) [[unlikely]]
+            recorder_->stop(StopReason::max_depth);
+        return color;
+    }
     // A dispersive surface splits a ray that carries every wavelength: the refracted ray takes
     // the sample's wavelength, and what it brings back counts by that wavelength's colour.
     Ray parent = ray;
     Color spectral_weight{1, 1, 1};
     if (m.dispersion.model != DispersionModel::none && m.transmit > 0 && ray.wavelength == 0) {
-        parent.wavelength = sample_visible_wavelength(stream.get_1d(kWavelengthDimension));
+        const float u = stream.get_1d(kWavelengthDimension);
+        parent.wavelength = sample_visible_wavelength(u);
         spectral_weight =
             wavelength_to_rgb_weight(parent.wavelength) / visible_wavelength_pdf(parent.wavelength);
+        if (recorder_) [[unlikely]]
+            recorder_->wavelength(u, parent.wavelength);
     }
     const Branches b = branches_at(c, ray.direction, media, parent.wavelength);
+    if (recorder_) [[unlikely]]
+        recorder_->branches(c, b, ray.direction, weight);
     if (b.kr > 0 && weight * b.kr >= settings.min_weight) {
         const Vector3 mirror = normalize(reflect(ray.direction, c.n));
-        const Vector3 d = spread_over_lobe(mirror, c.roughness, lobe_sample(c.roughness, stream),
-                                           to_vector(c.ng), true);
+        const Point2 u = lobe_sample(c.roughness, stream);
+        const Vector3 d = spread_over_lobe(mirror, c.roughness, u, to_vector(c.ng), true);
         if (d != kBlockedByTheSurface) {
             stats.count(RayKind::reflected);
             const Ray r = spawn_from(world_, c, ray, d);
+            if (recorder_) [[unlikely]]
+                recorder_->branch(RayKind::reflected, Color::gray(b.kr), lobe_draw(c.roughness, u));
             color += b.kr * trace(r, depth + 1, weight * b.kr, stream, stats, media);
+        } else if (recorder_) [[unlikely]] {
+            recorder_->blocked(RayKind::reflected, u);
         }
     }
     if (b.kt > 0 && weight * b.kt >= settings.min_weight) {
+        const Point2 u = lobe_sample(c.transmit_roughness, stream);
         const Vector3 d =
-            spread_over_lobe(b.refracted, c.transmit_roughness,
-                             lobe_sample(c.transmit_roughness, stream), to_vector(c.ng), false);
+            spread_over_lobe(b.refracted, c.transmit_roughness, u, to_vector(c.ng), false);
         if (d != kBlockedByTheSurface) {
             stats.count(RayKind::refracted);
             const Ray t = spawn_from(world_, c, parent, d);
-            color += b.kt * spectral_weight *
-                     trace(t, depth + 1, weight * b.kt, stream, stats,
-                           media_beyond(c, b, media, parent.wavelength));
+            const Color factor = b.kt * spectral_weight;
+            if (recorder_) [[unlikely]]
+                recorder_->branch(RayKind::refracted, factor, lobe_draw(c.transmit_roughness, u));
+            color += factor * trace(t, depth + 1, weight * b.kt, stream, stats,
+                                    media_beyond(c, b, media, parent.wavelength));
+        } else if (recorder_) [[unlikely]] {
+            recorder_->blocked(RayKind::refracted, u);
         }
     }
     return color;
@@ -76,33 +115,56 @@ Color DistributedIntegrator::direct_light(const SurfaceContext& c, const Ray& ra
     const auto lights = world_.lights();
     for (std::size_t light = 0; light < lights.size(); ++light) {
         if (!is_area_light(lights[light])) {
-            sum += light_sample_term(feelers_, light, c, sample_light(lights[light], c.sp.p),
-                                     ray.time, stats);
+            const LightSample ls = sample_light(lights[light], c.sp.p);
+            const Color term = light_sample_term(feelers_, light, c, ls, ray.time, stats);
+            if (recorder_) [[unlikely]]
+                recorder_->light(light, c, ls, ray.time, term);
+            sum += term;
             continue;
         }
         // n shadow rays, stratified together with those of the pixel's other samples.
         const int own = std::get<AreaLight>(lights[light]).shadow_rays;
         const auto n = std::uint32_t(own > 0 ? own : world_.settings().shadow_rays);
         const std::uint32_t dimension = stream.next_dimension();
+        if (recorder_) [[unlikely]]
+            recorder_->begin_light(light, false);
         Color light_sum;
         for (std::uint32_t j = 0; j < n; ++j) {
-            const LightSample ls =
-                sample_light(lights[light], c.sp.p, stream.get_2d(dimension, j, n));
-            light_sum += light_sample_term(feelers_, light, c, ls, ray.time, stats);
+            const Point2 u = stream.get_2d(dimension, j, n);
+            const LightSample ls = sample_light(lights[light], c.sp.p, u);
+            const Color term = light_sample_term(feelers_, light, c, ls, ray.time, stats);
+            if (recorder_) [[unlikely]]
+                recorder_->light_sample(c, ls, u, ray.time, term);
+            light_sum += term;
         }
-        sum += light_sum / float(n);
+        const Color mean = light_sum / float(n);
+        if (recorder_) [[unlikely]]
+            recorder_->end_light(mean);
+        sum += mean;
     }
     const auto n = std::uint32_t(world_.settings().shadow_rays);
-    for (const ObjectLight& light : world_.object_lights()) {
+    const auto object_lights = world_.object_lights();
+    for (std::size_t index = 0; index < object_lights.size(); ++index) {
         const std::uint32_t dimension = stream.next_dimension();
+        if (recorder_) [[unlikely]]
+            recorder_->begin_light(index, true);
         Color light_sum;
         for (std::uint32_t j = 0; j < n; ++j) {
-            const LightSample ls = sample_light(light, c.sp.p, stream.get_2d(dimension, j, n));
-            light_sum +=
+            const Point2 u = stream.get_2d(dimension, j, n);
+            const LightSample ls = sample_light(object_lights[index], c.sp.p, u);
+            const Color term =
                 light_sample_term(feelers_, ShadowFeelers::kNoLight, c, ls, ray.time, stats);
+            if (recorder_) [[unlikely]]
+                recorder_->light_sample(c, ls, u, ray.time, term);
+            light_sum += term;
         }
-        sum += light_sum / float(n);
+        const Color mean = light_sum / float(n);
+        if (recorder_) [[unlikely]]
+            recorder_->end_light(mean);
+        sum += mean;
     }
+    if (recorder_) [[unlikely]]
+        recorder_->direct(sum);
     return sum;
 }
 

@@ -13,6 +13,7 @@
 #include "glint/math/ray.h"
 #include "glint/render/medium_stack.h"
 #include "glint/render/ray_stats.h"
+#include "glint/render/ray_tree_recorder.h"
 #include "glint/render/shadow_feelers.h"
 #include "glint/render/world.h"
 #include "glint/sampling/sampler.h"
@@ -33,7 +34,12 @@ public:
     Color trace(const Ray& ray, int depth, float weight, SampleStream& stream, RayStats& stats,
                 const MediumStack& media = kVacuum);
 
+    // Records every ray it traces from now on into `recorder` (glint explain); null stops.
+    void record_into(RayTreeRecorder* recorder) { recorder_ = recorder; }
+
 private:
+    Color shade(const Ray& ray, int depth, float weight, SampleStream& stream, RayStats& stats,
+                const MediumStack& media);
     // The local term's sum over the lights at the surface of c, each area light and emitting
     // object sampled by its shadow rays.
     Color direct_light(const struct SurfaceContext& c, const Ray& ray, SampleStream& stream,
@@ -41,6 +47,7 @@ private:
 
     const World& world_;
     ShadowFeelers feelers_;
+    RayTreeRecorder* recorder_ = nullptr;
 };
 
 }  // namespace glint

@@ -18,6 +18,7 @@
 #include <stdexcept>
 
 #include "glint/render/distributed.h"
+#include "glint/render/eye_sample.h"
 #include "glint/render/tiles.h"
 #include "glint/render/whitted.h"
 #include "glint/sampling/sampler.h"
@@ -60,18 +61,10 @@ void render_tile(const Tile& tile, Pass pass, const World& world, const Sampler&
                     error.relative_error() < settings.adaptive->threshold)
                     break;
                 SampleStream stream(patterns, std::uint32_t(s));
-                const Point2 offset = stream.get_2d(kPixelDimension);
-                const Point2 p{float(x) + offset.x, float(y) + offset.y};
-                // A pinhole and a closed shutter draw no numbers for the lens and the time.
-                const Point2 lens =
-                    camera.has_lens() ? stream.get_2d(kLensDimension) : Point2{0.5f, 0.5f};
-                const float time = camera.has_shutter()
-                                       ? camera.shutter_time(stream.get_1d(kTimeDimension))
-                                       : camera.shutter_open();
-                const Color c = integrator.trace_eye_ray(camera.generate_ray(p, lens, time), stream,
-                                                         totals.rays);
+                const EyeSample eye = eye_sample(camera, stream, x, y);
+                const Color c = integrator.trace_eye_ray(eye.ray, stream, totals.rays);
                 if (is_valid_sample(c)) {
-                    film_tile.add_sample(p, c);
+                    film_tile.add_sample(eye.film, c);
                     if (settings.adaptive) error.add(c);
                 } else {
                     totals.bad.add({x, y, s});

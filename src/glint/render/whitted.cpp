@@ -14,32 +14,70 @@ Color WhittedIntegrator::trace_eye_ray(const Ray& ray, RayStats& stats) {
 
 Color WhittedIntegrator::trace(const Ray& ray, int depth, float weight, RayStats& stats,
                                const MediumStack& media) {
+    if (!recorder_) [[likely]]
+        return shade(ray, depth, weight, stats, media);
+    recorder_->begin_ray(ray, depth, weight);
+    const Color color = shade(ray, depth, weight, stats, media);
+    recorder_->end_ray(color);
+    return color;
+}
+
+Color WhittedIntegrator::shade(const Ray& ray, int depth, float weight, RayStats& stats,
+                               const MediumStack& media) {
     const RenderSettings& settings = world_.settings();
     const auto hit = world_.intersect(ray, {0, kInfinity}, kVisibleToCameraRays);
-    if (!hit) return settings.background;
+    if (!hit) {
+        if (recorder_) [[unlikely]]
+            recorder_->missed(settings.background);
+        return settings.background;
+    }
     if (depth == 1) ++stats.primary_hits;
 
     const SurfaceContext c = surface_context(world_, ray, *hit);
+    if (recorder_) [[unlikely]]
+        recorder_->hit(c, *hit);
     const Material& m = *c.material;
     Color color = m.emission + ambient_term(m, c.color, world_.ambient());
-    const auto lights = world_.lights();
-    for (std::size_t light = 0; light < lights.size(); ++light)
-        color += light_sample_term(feelers_, light, c, sample_light(lights[light], c.sp.p),
-                                   ray.time, stats);
+    color += direct_light(c, ray, stats);
 
-    if (depth >= settings.max_depth) return color;
+    if (depth >= settings.max_depth) {
+        if (recorder_) [[unlikely]]
+            recorder_->stop(StopReason::max_depth);
+        return color;
+    }
     const Branches b = branches_at(c, ray.direction, media, ray.wavelength);
+    if (recorder_) [[unlikely]]
+        recorder_->branches(c, b, ray.direction, weight);
     if (b.kr > 0 && weight * b.kr >= settings.min_weight) {
         stats.count(RayKind::reflected);
         const Ray r = spawn_from(world_, c, ray, normalize(reflect(ray.direction, c.n)));
+        if (recorder_) [[unlikely]]
+            recorder_->branch(RayKind::reflected, Color::gray(b.kr));
         color += b.kr * trace(r, depth + 1, weight * b.kr, stats, media);
     }
     if (b.kt > 0 && weight * b.kt >= settings.min_weight) {
         stats.count(RayKind::refracted);
         const Ray t = spawn_from(world_, c, ray, b.refracted);
+        if (recorder_) [[unlikely]]
+            recorder_->branch(RayKind::refracted, Color::gray(b.kt));
         color += b.kt * trace(t, depth + 1, weight * b.kt, stats, media_beyond(c, b, media));
     }
     return color;
+}
+
+Color WhittedIntegrator::direct_light(const SurfaceContext& c, const Ray& ray, RayStats& stats) {
+    Color sum;
+    const auto lights = world_.lights();
+    for (std::size_t light = 0; light < lights.size(); ++light) {
+        const LightSample ls = sample_light(lights[light], c.sp.p);
+        const Color term = light_sample_term(feelers_, light, c, ls, ray.time, stats);
+        if (recorder_) [[unlikely]]
+            recorder_->light(light, c, ls, ray.time, term);
+        sum += term;
+    }
+    if (recorder_) [[unlikely]]
+        recorder_->direct(sum);
+    return sum;
 }
 
 }  // namespace glint

@@ -9,6 +9,7 @@
 #include "glint/math/ray.h"
 #include "glint/render/medium_stack.h"
 #include "glint/render/ray_stats.h"
+#include "glint/render/ray_tree_recorder.h"
 #include "glint/render/shadow_feelers.h"
 #include "glint/render/world.h"
 #include "glint/sampling/sampler.h"
@@ -35,9 +36,17 @@ public:
     Color trace(const Ray& ray, int depth, float weight, RayStats& stats,
                 const MediumStack& media = kVacuum);
 
+    // Records every ray it traces from now on into `recorder` (glint explain); null stops.
+    void record_into(RayTreeRecorder* recorder) { recorder_ = recorder; }
+
 private:
+    Color shade(const Ray& ray, int depth, float weight, RayStats& stats, const MediumStack& media);
+    // The local term's sum over the lights at the surface of c, one sample each.
+    Color direct_light(const struct SurfaceContext& c, const Ray& ray, RayStats& stats);
+
     const World& world_;
     ShadowFeelers feelers_;
+    RayTreeRecorder* recorder_ = nullptr;
 };
 
 }  // namespace glint

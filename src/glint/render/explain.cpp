@@ -1,0 +1,60 @@
+// One sample traced as render_tile traces it, with a recorder attached to the integrator.
+#include "glint/render/explain.h"
+
+#include "glint/render/distributed.h"
+#include "glint/render/eye_sample.h"
+#include "glint/render/ray_tree_recorder.h"
+#include "glint/render/whitted.h"
+#include "glint/sampling/sampler.h"
+
+namespace glint {
+
+namespace {
+
+template <class Integrator>
+Color trace_recorded(const World& world, const Ray& ray, SampleStream& stream,
+                     RayTreeRecorder& recorder) {
+    Integrator integrator(world);
+    integrator.record_into(&recorder);
+    RayStats stats;
+    return integrator.trace_eye_ray(ray, stream, stats);
+}
+
+}  // namespace
+
+RayTree explain(const World& world, const PixelSample& which) {
+    const RenderSettings& settings = world.settings();
+    const Camera& camera = world.camera();
+    const Sampler sampler(sampler_of(settings), settings.samples_per_pixel, which.seed);
+    const std::uint64_t pixel =
+        std::uint64_t(which.y) * std::uint64_t(settings.width) + std::uint64_t(which.x);
+    PixelPatterns patterns(sampler, pixel);
+    SampleStream stream(patterns, std::uint32_t(which.sample));
+    const EyeSample eye = eye_sample(camera, stream, which.x, which.y);
+
+    RayTree tree;
+    tree.x = which.x;
+    tree.y = which.y;
+    tree.sample = which.sample;
+    tree.seed = which.seed;
+    for (const std::string_view name : integrator_names())
+        if (integrator_from_name(name) == settings.integrator) tree.integrator = name;
+    tree.film = eye.film;
+    tree.draws.push_back({"pixel", kPixelDimension, eye.offset});
+    if (camera.has_lens()) tree.draws.push_back({"lens", kLensDimension, eye.lens});
+    if (camera.has_shutter())
+        tree.draws.push_back({"time", kTimeDimension, {eye.time_u, 0}, false});
+    RayTreeRecorder recorder(world, tree);
+    switch (settings.integrator) {
+        case IntegratorKind::whitted:
+            tree.sample_value = trace_recorded<WhittedIntegrator>(world, eye.ray, stream, recorder);
+            break;
+        case IntegratorKind::distributed:
+            tree.sample_value =
+                trace_recorded<DistributedIntegrator>(world, eye.ray, stream, recorder);
+            break;
+    }
+    return tree;
+}
+
+}  // namespace glint

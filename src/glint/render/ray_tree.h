@@ -1,0 +1,126 @@
+// The ray tree of one pixel sample as the integrators computed it (`glint explain`): each ray's
+// hit, the local terms with their numbers light by light, the branches with their weights and
+// Snell's law, the random numbers drawn, and the exact colour each ray brought back, from which
+// the sample's colour is recomputed to the last bit.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "glint/math/color.h"
+#include "glint/math/ray.h"
+#include "glint/math/vector.h"
+#include "glint/render/ray_stats.h"
+
+namespace glint {
+
+// Why a ray, or a branch of it, was not followed further.
+enum class StopReason : std::uint8_t {
+    none,
+    missed,                     // the ray hit nothing: it brings the background
+    max_depth,                  // the ray tree's deepest level: no reflected or refracted rays
+    min_weight,                 // the branch's weight (product of kr and kt) is below the minimum
+    blocked_by_surface,         // the glossy lobe tipped the ray through the surface
+    total_internal_reflection,  // no refracted ray: its weight went to the reflected one
+};
+std::string_view stop_reason_name(StopReason reason);
+
+// A number or pair of numbers a sample drew, and what for ("pixel", "lens", "glossy lobe", ...).
+struct RandomDraw {
+    std::string purpose;
+    std::uint32_t dimension;
+    Point2 u;  // u.y is 0 for a one-dimensional draw
+    bool pair = true;
+};
+
+// One light sample at a surface point: the shadow feeler and Phong's terms for it.
+struct LightSampleRecord {
+    int index = 0;             // j of the light's n samples
+    std::optional<Point2> u;   // the numbers that chose the point on an area light
+    Vector3 to_light;          // L
+    float distance = 0;        // to the light (infinite for a directional light)
+    Color intensity;           // I_L arriving, attenuated
+    float n_dot_l = 0;         // N.L with the shading normal
+    bool faces_light = false;  // N.L > 0 and the light sends something: a feeler was traced
+    float shadow = 1;          // the feeler's transmittance: 1 lit, 0 shadowed
+    std::optional<std::uint32_t> occluder;  // the first object in the way, when shadowed
+    bool blinn = true;                      // the highlight is Blinn's (H.N), else Phong's (R.V)
+    Vector3 highlight_vector;               // H or R
+    float highlight_cosine = 0;             // H.N or R.V before the exponent
+    Color diffuse;                          // shadow IL kd C (N.L)
+    Color highlight;                        // shadow IL ks spec^n
+    Color term;                             // what the integrator added: exactly its value
+};
+
+// A light's share of a surface point's local term: one sample, or the mean of n.
+struct LightRecord {
+    std::string name;           // "point light 0", "area light 1 (disk)", "emitting object 4"
+    std::size_t light = 0;      // index of World::lights(), or of object_lights()
+    bool object_light = false;  // an emitting object sampled over its area
+    bool averaged = false;      // value is the samples' sum over their count
+    std::vector<LightSampleRecord> samples;
+    Color value;  // exactly what the integrator added for this light
+};
+
+// A reflected or refracted ray a surface point sends, or would have sent.
+struct BranchRecord {
+    RayKind kind = RayKind::reflected;
+    float k = 0;                         // kr or kt at the point (after total internal reflection)
+    Color factor;                        // what the child's colour is multiplied by (k, dispersed)
+    std::optional<Point2> lobe_u;        // the numbers that spread it over a glossy lobe
+    StopReason stop = StopReason::none;  // none: traced
+    int child = -1;                      // index of the traced ray's node
+};
+
+struct RayNode {
+    RayKind kind = RayKind::primary;
+    int parent = -1;
+    int depth = 1;
+    float weight = 1;           // product of kr and kt above: the ray-tree cut's measure
+    Color throughput{1, 1, 1};  // product of the branch factors above: this ray's colour's share
+    Ray ray;
+    StopReason stop = StopReason::none;  // missed or max_depth; none for a ray that branched
+    // The hit (when not missed).
+    float t = 0;
+    std::uint32_t object = 0;
+    std::string shape, material;
+    Point3 point;
+    Vector3 geometric_normal, shading_normal;  // turned towards the ray
+    bool entering = false;                     // met the front (outward) side
+    // A dispersive surface's refracted ray takes one wavelength (nm), drawn from u.
+    std::optional<float> wavelength, wavelength_u;
+    Color background;  // what a missed ray brings
+    Color emission, ambient;
+    std::vector<LightRecord> lights;
+    Color direct;  // the lights' sum
+    // Snell's law at a transmitting surface.
+    bool transmits = false;
+    float n1 = 1, n2 = 1, cos_incident = 0, cos_refracted = 0;
+    bool total_internal_reflection = false;
+    std::vector<BranchRecord> branches;
+    Color value;  // exactly what the ray brought back
+};
+
+struct RayTree {
+    int x = 0, y = 0, sample = 0;
+    std::uint64_t seed = 0;
+    std::string integrator;
+    Point2 film;                    // where the sample lands, in pixels
+    std::vector<RandomDraw> draws;  // the camera's: pixel, lens, time
+    std::vector<RayNode> nodes;     // nodes[0] is the eye ray, children after their parents
+    Color sample_value;             // what the integrator returned for the sample
+};
+
+// The sample's colour worked out again from the tree's recorded terms, combined as the
+// integrators combine them: equal to sample_value to the last bit when the tree is complete.
+Color evaluate(const RayTree& tree);
+// The same for one node: its local terms and its children's colours times their factors.
+Color evaluate(const RayTree& tree, int node);
+
+// A node's own terms (emission, ambient and lights) times its throughput: its share of the
+// sample; over the whole tree these add up to the sample (up to rounding).
+Color contribution(const RayNode& node);
+
+}  // namespace glint
