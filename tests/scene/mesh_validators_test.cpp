@@ -202,6 +202,39 @@ TEST(GltfValidator, DataUrisHoldBase64Only) {
     }
 }
 
+TEST(GltfValidator, IndicesAreUnsignedIntegerScalars) {
+    const auto gltf = [](const std::string& indices, const std::string& accessor) {
+        return "{\"meshes\": [{\"primitives\": [{\"attributes\": {\"POSITION\": 0}, " + indices +
+               "}]}],\n \"accessors\": [{\"type\": \"VEC3\", \"componentType\": 5126}, " +
+               accessor + "]}";
+    };
+    for (const char* component : {"5121", "5123", "5125"}) {
+        EXPECT_NO_THROW(validate_gltf_json(
+            "inline.gltf",
+            gltf("\"indices\": 1", std::string("{\"componentType\": ") + component +
+                                       ", \"count\": 3, \"type\": \"SCALAR\"}"),
+            false));
+    }
+    // A sparse accessor's indices are an object; an accessor that is not there is Assimp's to
+    // report.
+    EXPECT_NO_THROW(validate_gltf_json(
+        "inline.gltf",
+        gltf("\"indices\": 5", "{\"sparse\": {\"indices\": {\"componentType\": 5126}}}"), false));
+    SceneError e =
+        gltf_error(gltf("\"indices\": 1", "{\"type\": \"VEC2\", \"componentType\": 5126}"));
+    EXPECT_EQ(e.location().line, 1);
+    EXPECT_EQ(e.location().column, 72);
+    EXPECT_EQ(e.message(),
+              "a mesh primitive's indices are accessor 1, of type \"VEC2\" and componentType 5126; "
+              "glTF indices are SCALAR unsigned integers (componentType 5121, 5123 or 5125)");
+    e = gltf_error(gltf("\"indices\": 1", "{\"type\": \"SCALAR\"}"));
+    EXPECT_NE(e.message().find("componentType (none)"), std::string::npos) << e.message();
+    // Nesting far deeper than any stack could recurse through is walked, not recursed.
+    const std::string deep = std::string(200000, '[') + std::string(200000, ']');
+    EXPECT_NO_THROW(validate_gltf_json("inline.gltf",
+                                       "{\"accessors\": [" + deep + "], \"indices\": 1}", false));
+}
+
 TEST(GlbValidator, HeaderAndChunksMustFitTheFile) {
     const auto glb = [](std::uint32_t length, std::uint32_t chunk) {
         std::string bytes = "glTF";
