@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <optional>
 
+#include "glint/accel/accel_stats.h"
 #include "glint/accel/primitive.h"
 #include "glint/geometry/surface_point.h"
 #include "glint/math/bounds.h"
@@ -52,6 +53,9 @@ public:
     }
     // Memory the structure takes beyond the primitives themselves, in bytes.
     virtual std::size_t memory_bytes() const = 0;
+    // Its nodes, leaves, depth, SAH cost and memory (accel_stats.h), walked from the structure
+    // as built: for `glint info`, not for the hot path.
+    virtual AccelStats statistics() const = 0;
 
 protected:
     // intersect() and occluded() for a traceable ray.

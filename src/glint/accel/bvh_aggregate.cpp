@@ -218,4 +218,42 @@ std::size_t BvhAggregate::memory_bytes() const {
            unbounded_.capacity() * sizeof(std::uint32_t);
 }
 
+AccelStats BvhAggregate::statistics() const {
+    AccelStatsTally tally(bvh_.root_bounds);
+    // Lanes in use: a block's unused lanes have no id.
+    const auto leaf_references = [&](std::uint32_t leaf, std::uint32_t count) {
+        std::size_t n = 0;
+        switch (leaf_kind(leaf)) {
+            case kWideTriangleLeaf:
+                for (const TriangleBlock& block : leaf_blocks(bvh_, leaf, count))
+                    for (const std::uint32_t id : block.id) n += id != kNoTriangle;
+                return n;
+            case kWideSphereLeaf:
+                for (const SphereBlock& block : leaf_sphere_blocks(bvh_, leaf, count))
+                    for (const std::uint32_t id : block.id) n += id != kNoSphere;
+                return n;
+            default:
+                return std::size_t(count);
+        }
+    };
+    // Depth first; the depth is bounded by the binary tree's (kBvhMaxDepth).
+    const auto walk = [&](const auto& self, std::uint32_t index, int depth) -> void {
+        const WideBvhNode& node = bvh_.nodes[index];
+        for (int slot = 0; slot < kWideBvhWidth; ++slot) {
+            if (!node.is_leaf(slot)) {
+                tally.interior(node.child_bounds(slot));
+                self(self, node.child[slot], depth + 1);
+            } else if (node.count[slot] > 0) {
+                tally.leaf(node.child_bounds(slot), depth + 1,
+                           leaf_references(node.child[slot], node.count[slot]));
+            }
+        }
+    };
+    if (!bvh_.nodes.empty()) {
+        tally.interior(bvh_.root_bounds);
+        walk(walk, 0, 0);
+    }
+    return tally.finish(unbounded_.size(), memory_bytes());
+}
+
 }  // namespace glint

@@ -21,6 +21,7 @@ public:
 
     Bounds3 bounds() const override { return bounds_; }
     std::size_t memory_bytes() const override;
+    AccelStats statistics() const override;
 
 private:
     std::optional<Hit> closest_hit(const Ray& ray, Interval t_range,

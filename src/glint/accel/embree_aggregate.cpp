@@ -427,4 +427,12 @@ std::size_t EmbreeAggregate::memory_bytes() const {
     return bytes;
 }
 
+AccelStats EmbreeAggregate::statistics() const {
+    AccelStats stats;
+    stats.available = false;
+    stats.unbounded = unbounded_.size();
+    stats.memory_bytes = memory_bytes();
+    return stats;
+}
+
 }  // namespace glint

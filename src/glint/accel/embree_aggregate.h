@@ -39,6 +39,9 @@ public:
     // Embree's own allocations for this scene (counted through its memory monitor), the padded
     // vertex copies, and the index maps.
     std::size_t memory_bytes() const override;
+    // Embree 3's API does not expose its BVH's nodes or leaves: only the memory and the unbounded
+    // primitives are known (available is false).
+    AccelStats statistics() const override;
 
     // The Embree scene and what its callbacks read; public only so that they can name it.
     struct Scene;

@@ -213,4 +213,23 @@ std::size_t GridAggregate::memory_bytes() const {
                sizeof(std::uint32_t);
 }
 
+AccelStats GridAggregate::statistics() const {
+    AccelStatsTally tally(layout_.bounds);
+    if (!cell_offsets_.empty()) {
+        const std::array<int, 3>& n = layout_.resolution;
+        for (int z = 0; z < n[2]; ++z) {
+            for (int y = 0; y < n[1]; ++y) {
+                for (int x = 0; x < n[0]; ++x) {
+                    const Point3 lo{layout_.boundary(x, 0), layout_.boundary(y, 1),
+                                    layout_.boundary(z, 2)};
+                    const Point3 hi{layout_.boundary(x + 1, 0), layout_.boundary(y + 1, 1),
+                                    layout_.boundary(z + 1, 2)};
+                    tally.cell({lo, hi}, cell_primitives(layout_.cell_index({x, y, z})).size());
+                }
+            }
+        }
+    }
+    return tally.finish(unbounded_.size(), memory_bytes());
+}
+
 }  // namespace glint

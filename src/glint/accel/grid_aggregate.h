@@ -134,6 +134,7 @@ public:
 
     Bounds3 bounds() const override { return bounds_; }
     std::size_t memory_bytes() const override;
+    AccelStats statistics() const override;
 
     const GridLayout& layout() const { return layout_; }
     // The primitives listed in a cell, in increasing index.

@@ -313,4 +313,24 @@ std::size_t KdTreeAggregate::reference_count() const {
     return n;
 }
 
+AccelStats KdTreeAggregate::statistics() const {
+    AccelStatsTally tally(tree_bounds_);
+    // Depth first, each node's box cut from its parent's at the split; depth < kKdMaxDepth.
+    const auto walk = [&](const auto& self, std::uint32_t index, const Bounds3& box,
+                          int depth) -> void {
+        const KdNode& node = nodes_[index];
+        if (node.is_leaf()) {
+            tally.leaf(box, depth, node.primitive_count());
+            return;
+        }
+        tally.interior(box);
+        const int axis = node.axis();
+        self(self, index + 1, {box.min, with_component(box.max, axis, node.split())}, depth + 1);
+        self(self, node.above_child(), {with_component(box.min, axis, node.split()), box.max},
+             depth + 1);
+    };
+    if (!nodes_.empty()) walk(walk, 0, tree_bounds_, 0);
+    return tally.finish(unbounded_.size(), memory_bytes());
+}
+
 }  // namespace glint

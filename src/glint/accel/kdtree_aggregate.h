@@ -79,6 +79,7 @@ public:
 
     Bounds3 bounds() const override { return bounds_; }
     std::size_t memory_bytes() const override;
+    AccelStats statistics() const override;
 
     // nodes()[0] is the root; empty when there are no bounded primitives.
     std::span<const KdNode> nodes() const { return nodes_; }

@@ -31,4 +31,12 @@ bool PrimitiveList::any_hit(const Ray& ray, Interval t_range, std::uint32_t ray_
     return false;
 }
 
+AccelStats PrimitiveList::statistics() const {
+    std::size_t unbounded = 0;
+    for (std::uint32_t i = 0; i < refs_.size(); ++i) unbounded += !refs_.bounds(i).is_finite();
+    AccelStatsTally tally(bounds_);
+    tally.leaf(bounds_, 0, refs_.size() - unbounded);
+    return tally.finish(unbounded, memory_bytes());
+}
+
 }  // namespace glint

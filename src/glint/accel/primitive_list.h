@@ -16,6 +16,8 @@ public:
 
     Bounds3 bounds() const override { return bounds_; }
     std::size_t memory_bytes() const override { return sizeof(*this) + refs_.memory_bytes(); }
+    // One leaf at the root holding every bounded reference; planes are counted as unbounded.
+    AccelStats statistics() const override;
 
 private:
     std::optional<Hit> closest_hit(const Ray& ray, Interval t_range,
