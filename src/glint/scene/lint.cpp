@@ -1,0 +1,199 @@
+// The lint rules, one function each.
+#include "glint/scene/lint.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdio>
+
+#include "glint/geometry/point_inside.h"
+#include "glint/math/constants.h"
+#include "glint/scene/quote.h"
+
+namespace glint {
+
+namespace {
+
+using Warnings = std::vector<LintWarning>;
+
+std::string number(double x) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%g", x);
+    return text;
+}
+
+std::string point(Point3 p) {
+    return "(" + number(p.x) + ", " + number(p.y) + ", " + number(p.z) + ")";
+}
+
+std::string material_subject(const Material& m) { return "material " + quote(m.name); }
+
+std::string_view light_kind(const Light& light) {
+    if (std::holds_alternative<PointLight>(light)) return "point";
+    if (std::holds_alternative<SpotLight>(light)) return "spot";
+    if (std::holds_alternative<DirectionalLight>(light)) return "directional";
+    return "area";
+}
+
+void no_lights(const Scene& scene, Warnings& out) {
+    if (!scene.lights.empty()) return;
+    // A glowing object counts even when it lights nothing (emits_light: false): it is seen, as
+    // a slit seen through a prism is.
+    for (const SceneObject& object : scene.objects)
+        if (!is_black(scene.materials[object.material].emission)) return;
+    out.push_back({"no-lights", "scene",
+                   "the scene has no lights and no emitting objects: only the ambient term "
+                   "(ka * ambient) lights it, so every surface is flat"});
+}
+
+void camera_inside(const Scene& scene, Warnings& out) {
+    const Point3 eye = scene.camera.from;
+    for (std::size_t i = 0; i < scene.objects.size(); ++i) {
+        if (point_inside(scene.objects[i].shape, eye) != true) continue;
+        out.push_back({"camera-inside", "camera",
+                       "the camera at " + point(eye) + " is inside " + object_subject(scene, i) +
+                           ": every eye ray starts inside that solid and sees its inner side"});
+    }
+}
+
+// Where a light shines from, when it has one place: a point or spot light's position, an area
+// light's centre.
+std::optional<Point3> light_position(const Light& light) {
+    if (const auto* p = std::get_if<PointLight>(&light)) return p->position;
+    if (const auto* s = std::get_if<SpotLight>(&light)) return s->position;
+    if (const auto* a = std::get_if<AreaLight>(&light))
+        return std::visit([](const auto& shape) { return shape.center; }, a->shape);
+    return std::nullopt;
+}
+
+void light_inside(const Scene& scene, Warnings& out) {
+    for (std::size_t l = 0; l < scene.lights.size(); ++l) {
+        const std::optional<Point3> at = light_position(scene.lights[l]);
+        if (!at) continue;
+        for (std::size_t i = 0; i < scene.objects.size(); ++i) {
+            // Objects that cast no shadow (an area light's own face) let the light out.
+            if (!scene.objects[i].casts_shadow) continue;
+            if (point_inside(scene.objects[i].shape, *at) != true) continue;
+            out.push_back({"light-inside",
+                           "light " + std::to_string(l) + " (" +
+                               std::string(light_kind(scene.lights[l])) + ")",
+                           "the light at " + point(*at) + " is inside " + object_subject(scene, i) +
+                               ", which casts shadows: its light lights only the inside"});
+        }
+    }
+}
+
+void energy(const Scene& scene, Warnings& out) {
+    for (const Material& m : scene.materials) {
+        const double sum = double(m.kd) + m.ks + m.reflect + m.transmit;
+        // Float sums of tenths are off by an ulp or so; a real excess is larger.
+        if (!(sum > 1 + 1e-5)) continue;
+        out.push_back({"energy", material_subject(m),
+                       "kd + ks + reflect + transmit = " + number(m.kd) + " + " + number(m.ks) +
+                           " + " + number(m.reflect) + " + " + number(m.transmit) + " = " +
+                           number(sum) +
+                           " > 1: the surface can give back more light than it receives "
+                           "(k_local + k_refl + k_trans should be at most 1)"});
+    }
+}
+
+void ior(const Scene& scene, Warnings& out) {
+    for (const Material& m : scene.materials) {
+        if (!(m.transmit > 0) || m.ior != 1 || m.dispersion.model != DispersionModel::none)
+            continue;
+        out.push_back({"ior", material_subject(m),
+                       "transmits (transmit " + number(m.transmit) +
+                           ") with an index of refraction of 1, which bends nothing: give it "
+                           "an ior (glass about 1.5, water 1.33)"});
+    }
+}
+
+void unused_material(const Scene& scene, Warnings& out) {
+    std::vector<bool> used(scene.materials.size(), false);
+    for (const SceneObject& object : scene.objects) used[object.material] = true;
+    for (std::size_t i = 0; i < used.size(); ++i) {
+        if (used[i]) continue;
+        out.push_back({"unused-material", material_subject(scene.materials[i]),
+                       "is defined but no object uses it"});
+    }
+}
+
+// The view's frame and window: a box is out of view when all its corners lie beyond one side of
+// the view's pyramid (perspective) or slab (orthographic), or behind the eye. A box that crosses
+// a corner of the pyramid may be out of view without being found: the rule never warns wrongly.
+class View {
+public:
+    View(const CameraSpec& c, const RenderSettings& s)
+        : eye_(c.from),
+          forward_(normalize(c.at - c.from)),
+          right_(normalize(cross(forward_, c.up))),
+          up_(cross(right_, forward_)),
+          perspective_(c.projection == Projection::perspective),
+          lens_(c.lens.radius) {
+        half_height_ = perspective_ ? std::tan(radians(c.fov) / 2) : c.height / 2;
+        half_width_ = half_height_ * float(s.width) / float(s.height);
+    }
+
+    bool sees(const Bounds3& box) const {
+        // The aperture's rays start up to its radius from the eye: grown boxes stay conservative.
+        const Vector3 grow{lens_, lens_, lens_};
+        const Bounds3 b{box.min - grow, box.max + grow};
+        // Per side, whether every corner is beyond it: behind, right, left, top, bottom.
+        std::array<bool, 5> beyond{true, true, true, true, true};
+        for (int k = 0; k < 8; ++k) {
+            const Point3 corner{(k & 1) ? b.max.x : b.min.x, (k & 2) ? b.max.y : b.min.y,
+                                (k & 4) ? b.max.z : b.min.z};
+            const Vector3 d = corner - eye_;
+            const float z = dot(d, forward_), x = dot(d, right_), y = dot(d, up_);
+            const float w = perspective_ ? half_width_ * z : half_width_;
+            const float h = perspective_ ? half_height_ * z : half_height_;
+            beyond[0] = beyond[0] && !(z > 0);
+            beyond[1] = beyond[1] && x > w;
+            beyond[2] = beyond[2] && x < -w;
+            beyond[3] = beyond[3] && y > h;
+            beyond[4] = beyond[4] && y < -h;
+        }
+        return std::none_of(beyond.begin(), beyond.end(), [](bool side) { return side; });
+    }
+
+private:
+    Point3 eye_;
+    Vector3 forward_, right_, up_;
+    bool perspective_;
+    float lens_;
+    float half_width_ = 1, half_height_ = 1;
+};
+
+void out_of_view(const Scene& scene, Warnings& out) {
+    // A moving camera sweeps a view this check does not follow.
+    if (!scene.camera.motion.empty()) return;
+    const View view(scene.camera, scene.settings);
+    for (std::size_t i = 0; i < scene.objects.size(); ++i) {
+        const Bounds3 b = bounds(scene.objects[i].shape);
+        if (!b.is_finite() || view.sees(b)) continue;
+        out.push_back({"out-of-view", object_subject(scene, i),
+                       "lies wholly outside the camera's view (or behind it): no eye ray sees it; "
+                       "it shows only in reflections, refractions and shadows, if at all"});
+    }
+}
+
+}  // namespace
+
+std::string object_subject(const Scene& scene, std::size_t index) {
+    return "object " + std::to_string(index) + " (" +
+           std::string(shape_name(scene.objects[index].shape)) + ")";
+}
+
+std::vector<LintWarning> lint_scene(const Scene& scene) {
+    Warnings out;
+    no_lights(scene, out);
+    camera_inside(scene, out);
+    light_inside(scene, out);
+    energy(scene, out);
+    ior(scene, out);
+    unused_material(scene, out);
+    out_of_view(scene, out);
+    return out;
+}
+
+}  // namespace glint
