@@ -17,6 +17,7 @@
 #include "glint/render/world.h"
 #include "glint/scene/load_scene.h"
 #include "glint/scene/scene_error.h"
+#include "json_string.h"
 #include "scene_read_options.h"
 
 namespace glint::cli {
@@ -41,23 +42,6 @@ struct Row {
     double bytes_per_prim = 0;
     std::uint64_t hits = 0;
 };
-
-std::string json_string(std::string_view s) {
-    std::string out = "\"";
-    for (const char c : s) {
-        if (c == '"' || c == '\\') {
-            out += '\\';
-            out += c;
-        } else if (static_cast<unsigned char>(c) < 0x20) {
-            char escape[8];
-            std::snprintf(escape, sizeof escape, "\\u%04x", c);
-            out += escape;
-        } else {
-            out += c;
-        }
-    }
-    return out + "\"";
-}
 
 std::string with_thousands(std::uint64_t n) {
     std::string digits = std::to_string(n), out;

@@ -1,5 +1,5 @@
-// The glint command-line tool: `glint render SCENE`, `glint explain SCENE --pixel X,Y` and
-// `glint bench SCENE`, with --help and --version.
+// The glint command-line tool: `glint render SCENE`, `glint explain SCENE --pixel X,Y`,
+// `glint info SCENE` and `glint bench SCENE`, with --help and --version.
 #include <CLI/CLI.hpp>
 #include <csignal>
 #include <cstdint>
@@ -10,6 +10,7 @@
 #include "explain_command.h"
 #include "glint/accel/make_aggregate.h"
 #include "glint/scene/scene.h"
+#include "info_command.h"
 #include "render_command.h"
 #include "scene_read_options.h"
 #include "size_option.h"
@@ -33,6 +34,8 @@ Examples:
   glint render big.yaml -o big.exr --resume             continues where it stopped
   glint explain scenes/showcase.yaml --pixel 160,120    the ray tree of a pixel's sample
   glint explain scene.yaml --pixel 10,20 --format dot -o tree.dot
+  glint info scenes/showcase.yaml                       counts, structure, warnings
+  glint info scene.yaml --accel kdtree --json
   glint bench scene.nff --json --rays 100000           build time, Mrays/s per structure
 )";
 
@@ -102,6 +105,8 @@ int main(int argc, char** argv) {
     const CLI::App* explain_app = glint::cli::add_explain_command(app, explain);
     glint::cli::BenchCommand bench;
     const CLI::App* bench_app = glint::cli::add_bench_command(app, bench);
+    glint::cli::InfoCommand info;
+    const CLI::App* info_app = glint::cli::add_info_command(app, info);
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {
@@ -110,5 +115,6 @@ int main(int argc, char** argv) {
     }
     if (bench_app->parsed()) return glint::cli::run_bench(bench);
     if (explain_app->parsed()) return glint::cli::run_explain(explain);
+    if (info_app->parsed()) return glint::cli::run_info(info);
     return glint::cli::run_render(render);
 }

@@ -1,31 +1,11 @@
 // The --stats JSON written by hand: its few keys need no JSON library, only escaped strings.
 #include "stats_json.h"
 
-#include <cstdio>
 #include <sstream>
 
+#include "json_string.h"
+
 namespace glint::cli {
-
-namespace {
-
-std::string quoted(const std::string& s) {
-    std::string out = "\"";
-    for (const char c : s) {
-        if (c == '"' || c == '\\') {
-            out += '\\';
-            out += c;
-        } else if (static_cast<unsigned char>(c) < 0x20) {
-            char escape[8];
-            std::snprintf(escape, sizeof escape, "\\u%04x", c);
-            out += escape;
-        } else {
-            out += c;
-        }
-    }
-    return out + "\"";
-}
-
-}  // namespace
 
 std::string stats_json(const RenderReport& report) {
     const RenderResult& r = *report.result;
@@ -33,8 +13,8 @@ std::string stats_json(const RenderReport& report) {
     std::ostringstream json;
     json.precision(6);
     json << "{\n"
-         << "  \"scene\": " << quoted(report.scene) << ",\n"
-         << "  \"output\": " << quoted(report.output) << ",\n"
+         << "  \"scene\": " << json_string(report.scene) << ",\n"
+         << "  \"output\": " << json_string(report.output) << ",\n"
          << "  \"width\": " << report.width << ",\n"
          << "  \"height\": " << report.height << ",\n"
          << "  \"samples_per_pixel\": " << report.samples_per_pixel << ",\n"

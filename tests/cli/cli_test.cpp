@@ -362,6 +362,106 @@ TEST_F(Cli, BenchTableAndBadInput) {
     EXPECT_NE(bad.err.find("bad.nff:5:7: error:"), std::string::npos) << bad.err;
 }
 
+// The showcase's counts, structure and warnings as text: 6 objects (a plane among them, beside
+// the structure) and 2 point lights; its five materials' kd + ks + reflect + transmit exceed 1.
+TEST_F(Cli, InfoDescribesTheShowcase) {
+    const Outcome r = run_glint("info " + scene("showcase.yaml"));
+    EXPECT_EQ(r.exit_code, 0) << r.err;
+    for (const char* line :
+         {"Image        800x600, 9 spp, whitted integrator, max depth 8\n",
+          "Objects      6: box 1, plane 1, sphere 4\n", "Triangles    0\n", "Materials    5\n",
+          "Lights       2: 2 point; 0 emitting objects\n",
+          "Bounds       (-4.2, 0, -3.05) to (2.9, 2.6, 4.9); 1 unbounded object (a plane) beside\n",
+          "Acceleration structure: bvh\n", "  references   5 in leaves\n", "5 warnings\n",
+          "  material \"glass\": kd + ks + reflect + transmit = 0 + 0.9 + 0.1 + 0.88 = 1.88 > 1"})
+        EXPECT_NE(r.out.find(line), std::string::npos) << line << " missing from\n" << r.out;
+    const Outcome grid = run_glint("info " + scene("showcase.yaml") + " --accel grid");
+    EXPECT_EQ(grid.exit_code, 0) << grid.err;
+    EXPECT_NE(grid.out.find("Acceleration structure: grid\n  cells        "), std::string::npos)
+        << grid.out;
+}
+
+// The same as one JSON object with the documented keys, one a line where they are numbers.
+TEST_F(Cli, InfoJsonHasTheDocumentedKeys) {
+    const Outcome r = run_glint("info " + scene("showcase.yaml") + " --json --accel kdtree");
+    EXPECT_EQ(r.exit_code, 0) << r.err;
+    ASSERT_FALSE(r.out.empty());
+    EXPECT_EQ(r.out.front(), '{');
+    EXPECT_EQ(r.out.substr(r.out.size() - 2), "}\n");
+    EXPECT_EQ(std::count(r.out.begin(), r.out.end(), '{'),
+              std::count(r.out.begin(), r.out.end(), '}'));
+    EXPECT_EQ(std::count(r.out.begin(), r.out.end(), '['),
+              std::count(r.out.begin(), r.out.end(), ']'));
+    for (const char* key :
+         {"\"image\": {\"width\": 800, \"height\": 600, \"samples_per_pixel\": 9, "
+          "\"integrator\": \"whitted\", \"max_depth\": 8}",
+          "\"objects\": {\"total\": 6, \"by_shape\": {\"box\": 1, \"plane\": 1, \"sphere\": 4}}",
+          "\"triangles\": 0,",
+          "\"materials\": 5,",
+          "\"lights\": {\"point\": 2, \"spot\": 0, \"directional\": 0, \"area\": 0, "
+          "\"emitting_objects\": 0}",
+          "\"bounds\": {\"min\": [-4.2, 0, -3.05], \"max\": [2.9, 2.6, 4.9], "
+          "\"unbounded_objects\": 1}",
+          "\"name\": \"kdtree\",",
+          "\"available\": true,",
+          "\"interior_nodes\": ",
+          "\"leaves\": ",
+          "\"empty_leaves\": ",
+          "\"max_depth\": ",
+          "\"mean_leaf_depth\": ",
+          "\"min_leaf_size\": ",
+          "\"mean_leaf_size\": ",
+          "\"max_leaf_size\": ",
+          "\"references\": ",
+          "\"unbounded\": 1,",
+          "\"sah_cost\": ",
+          "\"sah_traversal_cost\": 1,",
+          "\"sah_intersection_cost\": 1,",
+          "\"memory_bytes\": ",
+          "{\"rule\": \"energy\", \"subject\": \"material \\\"floor\\\"\", \"message\": "})
+        EXPECT_NE(r.out.find(key), std::string::npos) << key << " missing from\n" << r.out;
+}
+
+TEST_F(Cli, InfoWarnsAboutASceneWithoutLightsAndExitsWithZero) {
+    write_scene("dark.yaml",
+                "camera: {from: [0, 0, -5], at: [0, 0, 0]}\n"
+                "materials: {spare: {kd: 0.5}}\n"
+                "objects:\n"
+                "  - {type: sphere, center: [0, 0, 0], radius: 1}\n"
+                "  - {type: sphere, center: [0, 0, -5], radius: 0.5}\n");
+    const Outcome r = run_glint("info dark.yaml");
+    EXPECT_EQ(r.exit_code, 0) << r.err;
+    for (const char* warning :
+         {"  scene: the scene has no lights and no emitting objects", "[no-lights]",
+          "  camera: the camera at (0, 0, -5) is inside object 1 (sphere)", "[camera-inside]",
+          "  material \"spare\": is defined but no object uses it [unused-material]"})
+        EXPECT_NE(r.out.find(warning), std::string::npos) << warning << " missing from\n" << r.out;
+    EXPECT_NE(r.out.find("3 warnings\n"), std::string::npos) << r.out;
+}
+
+TEST_F(Cli, InfoOfABadSceneExitsWithTwoAsRenderDoes) {
+    write_scene("bad.yaml",
+                "camera: {from: [0, 0, -5], at: [0, 0, 0]}\n"
+                "objects:\n"
+                "  - {type: spere, center: [0, 0, 0], radius: 1}\n");
+    const Outcome r = run_glint("info bad.yaml --json");
+    EXPECT_EQ(r.exit_code, 2);
+    EXPECT_TRUE(r.out.empty()) << r.out;
+    EXPECT_NE(r.err.find("bad.yaml:3:12: error: unknown object type \"spere\""), std::string::npos)
+        << r.err;
+    EXPECT_EQ(run_glint("info nowhere.yaml").exit_code, 2);
+    EXPECT_EQ(run_glint("info " + scene("showcase.yaml") + " --accel octree").exit_code, 2);
+}
+
+TEST_F(Cli, InfoReadsNffAndModelFiles) {
+    const std::string data = std::string("'") + GLINT_SOURCE_DIR + "/tests/data/";
+    const Outcome nff = run_glint("info " + data + "spd/jacks.nff'");
+    EXPECT_EQ(nff.exit_code, 0) << nff.err;
+    const Outcome mesh = run_glint("info " + data + "meshes/cube_binary.ply'");
+    EXPECT_EQ(mesh.exit_code, 0) << mesh.err;
+    EXPECT_NE(mesh.out.find("Triangles    12\n"), std::string::npos) << mesh.out;
+}
+
 // A scene reads only under its own folder unless --allow-read (repeatable, on render and bench)
 // names another; a folder that does not exist is bad usage.
 TEST_F(Cli, AllowReadLetsASceneReadAnotherFolder) {

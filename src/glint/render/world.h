@@ -46,6 +46,8 @@ public:
     const std::vector<std::string>& warnings() const { return warnings_; }
     // What the acceleration structure is built over, in scene order (to build others beside it).
     std::span<const Primitive> primitives() const { return primitives_; }
+    // The acceleration structure over primitives() (for its statistics).
+    const Aggregate& aggregate() const { return *aggregate_; }
 
     std::optional<Hit> intersect(const Ray& ray, Interval t_range, std::uint32_t mask) const {
         return aggregate_->intersect(ray, t_range, mask);

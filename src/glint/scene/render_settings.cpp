@@ -18,6 +18,12 @@ std::optional<IntegratorKind> integrator_from_name(std::string_view name) {
     return std::nullopt;
 }
 
+std::string_view integrator_name(IntegratorKind kind) {
+    for (std::size_t i = 0; i < std::size(kIntegratorNames); ++i)
+        if (kIntegratorKinds[i] == kind) return kIntegratorNames[i];
+    return "unknown";
+}
+
 SamplerKind sampler_of(const RenderSettings& settings) {
     if (settings.sampler) return *settings.sampler;
     // A pixel that stops early has taken a prefix of its pattern: Sobol's prefixes stay

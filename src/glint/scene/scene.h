@@ -28,6 +28,7 @@ enum class IntegratorKind { whitted, distributed };
 // The integrators' names, sorted, as scene files and the command line write them.
 std::span<const std::string_view> integrator_names();
 std::optional<IntegratorKind> integrator_from_name(std::string_view name);
+std::string_view integrator_name(IntegratorKind kind);
 
 // What the scene asks of the image and of the ray tree.
 // Adaptive sampling: a pixel takes samples until its error estimate falls below the threshold,
