@@ -81,6 +81,13 @@ std::string wrapped(const std::string& text) {
     }
 }
 
+// "scene.yaml:14:3: " like a compiler's messages, when the warning has a place.
+std::string where(const LintWarning& w) {
+    if (!w.location) return "";
+    return w.location->file + ":" + std::to_string(w.location->line) + ":" +
+           std::to_string(w.location->column) + ": ";
+}
+
 void accel_text(std::string& out, std::string_view name, const AccelStats& a) {
     append(out, "\nAcceleration structure: %.*s\n", int(name.size()), name.data());
     if (!a.available) {
@@ -146,7 +153,8 @@ std::string info_text(const InfoReport& r) {
     }
     append(out, "\n%s\n", plural(r.warnings.size(), "warning", "warnings").c_str());
     for (const LintWarning& w : r.warnings)
-        out += wrapped("  " + w.subject + ": " + w.message + " [" + std::string(w.rule) + "]");
+        out += wrapped("  " + where(w) + w.subject + ": " + w.message + " [" + std::string(w.rule) +
+                       "]");
     return out;
 }
 
@@ -198,7 +206,13 @@ std::string info_json(const InfoReport& r) {
     for (const LintWarning& w : r.warnings) {
         append(out, "%s    {\"rule\": %s, \"subject\": %s, ", separator,
                json_string(w.rule).c_str(), json_string(w.subject).c_str());
-        out += "\"message\": " + json_string(w.message) + "}";
+        out += "\"message\": " + json_string(w.message) + ", ";
+        if (w.location)
+            out += "\"file\": " + json_string(w.location->file) +
+                   ", \"line\": " + std::to_string(w.location->line) +
+                   ", \"column\": " + std::to_string(w.location->column) + "}";
+        else
+            out += "\"file\": null, \"line\": null, \"column\": null}";
         separator = ",\n";
     }
     out += r.warnings.empty() ? "]\n" : "\n  ]\n";

@@ -168,5 +168,28 @@ TEST(Lint, AnObjectAcrossTheEdgeOfTheViewIsInView) {
     EXPECT_TRUE(of_rule(scene, "out-of-view").empty());
 }
 
+// The YAML loader keeps where each material, light and object was read (1-based).
+TEST(Lint, WarningsPointToTheLineOfTheirSubject) {
+    const Scene scene = scene_with(
+        "materials:\n"          // line 4
+        "  used: {kd: 0.5}\n"   // line 5
+        "  spare: {kd: 0.5}\n"  // line 6
+        "objects:\n"            // line 7
+        "  - {type: sphere, center: [0, 0, 0], radius: 1, material: used}\n"
+        "  - {type: sphere, center: [0, 1, -9], radius: 1, material: used}\n");  // line 9
+    const auto unused = of_rule(scene, "unused-material");
+    ASSERT_EQ(unused.size(), 1u);
+    ASSERT_TRUE(unused[0].location);
+    EXPECT_EQ(unused[0].location->file, "lint.yaml");
+    EXPECT_EQ(unused[0].location->line, 6);
+    EXPECT_EQ(unused[0].location->column, 3);
+    const auto behind = of_rule(scene, "out-of-view");
+    ASSERT_EQ(behind.size(), 1u);
+    ASSERT_TRUE(behind[0].location);
+    EXPECT_EQ(behind[0].location->line, 9);
+    EXPECT_EQ(behind[0].location->column, 5);
+    EXPECT_FALSE(of_rule(scene_with(kBall, ""), "no-lights")[0].location);
+}
+
 }  // namespace
 }  // namespace glint

@@ -28,6 +28,14 @@ std::string point(Point3 p) {
 
 std::string material_subject(const Material& m) { return "material " + quote(m.name); }
 
+// The file:line:col of entry i of a SceneSources list, when the loader kept one.
+template <typename Positions>
+std::optional<SourceLocation> located(const Scene& scene, const Positions& positions,
+                                      std::size_t i) {
+    if (i >= positions.size() || positions[i].line == 0) return std::nullopt;
+    return SourceLocation{scene.sources.file, positions[i].line, positions[i].column};
+}
+
 std::string_view light_kind(const Light& light) {
     if (std::holds_alternative<PointLight>(light)) return "point";
     if (std::holds_alternative<SpotLight>(light)) return "spot";
@@ -43,7 +51,8 @@ void no_lights(const Scene& scene, Warnings& out) {
         if (!is_black(scene.materials[object.material].emission)) return;
     out.push_back({"no-lights", "scene",
                    "the scene has no lights and no emitting objects: only the ambient term "
-                   "(ka * ambient) lights it, so every surface is flat"});
+                   "(ka * ambient) lights it, so every surface is flat",
+                   std::nullopt});
 }
 
 void camera_inside(const Scene& scene, Warnings& out) {
@@ -52,7 +61,8 @@ void camera_inside(const Scene& scene, Warnings& out) {
         if (point_inside(scene.objects[i].shape, eye) != true) continue;
         out.push_back({"camera-inside", "camera",
                        "the camera at " + point(eye) + " is inside " + object_subject(scene, i) +
-                           ": every eye ray starts inside that solid and sees its inner side"});
+                           ": every eye ray starts inside that solid and sees its inner side",
+                       located(scene, scene.sources.objects, i)});
     }
 }
 
@@ -78,13 +88,15 @@ void light_inside(const Scene& scene, Warnings& out) {
                            "light " + std::to_string(l) + " (" +
                                std::string(light_kind(scene.lights[l])) + ")",
                            "the light at " + point(*at) + " is inside " + object_subject(scene, i) +
-                               ", which casts shadows: its light lights only the inside"});
+                               ", which casts shadows: its light lights only the inside",
+                           located(scene, scene.sources.lights, l)});
         }
     }
 }
 
 void energy(const Scene& scene, Warnings& out) {
-    for (const Material& m : scene.materials) {
+    for (std::size_t i = 0; i < scene.materials.size(); ++i) {
+        const Material& m = scene.materials[i];
         const double sum = double(m.kd) + m.ks + m.reflect + m.transmit;
         // Float sums of tenths are off by an ulp or so; a real excess is larger.
         if (!(sum > 1 + 1e-5)) continue;
@@ -93,18 +105,21 @@ void energy(const Scene& scene, Warnings& out) {
                            " + " + number(m.reflect) + " + " + number(m.transmit) + " = " +
                            number(sum) +
                            " > 1: the surface can give back more light than it receives "
-                           "(k_local + k_refl + k_trans should be at most 1)"});
+                           "(k_local + k_refl + k_trans should be at most 1)",
+                       located(scene, scene.sources.materials, i)});
     }
 }
 
 void ior(const Scene& scene, Warnings& out) {
-    for (const Material& m : scene.materials) {
+    for (std::size_t i = 0; i < scene.materials.size(); ++i) {
+        const Material& m = scene.materials[i];
         if (!(m.transmit > 0) || m.ior != 1 || m.dispersion.model != DispersionModel::none)
             continue;
         out.push_back({"ior", material_subject(m),
                        "transmits (transmit " + number(m.transmit) +
                            ") with an index of refraction of 1, which bends nothing: give it "
-                           "an ior (glass about 1.5, water 1.33)"});
+                           "an ior (glass about 1.5, water 1.33)",
+                       located(scene, scene.sources.materials, i)});
     }
 }
 
@@ -114,7 +129,8 @@ void unused_material(const Scene& scene, Warnings& out) {
     for (std::size_t i = 0; i < used.size(); ++i) {
         if (used[i]) continue;
         out.push_back({"unused-material", material_subject(scene.materials[i]),
-                       "is defined but no object uses it"});
+                       "is defined but no object uses it",
+                       located(scene, scene.sources.materials, i)});
     }
 }
 
@@ -173,7 +189,8 @@ void out_of_view(const Scene& scene, Warnings& out) {
         if (!b.is_finite() || view.sees(b)) continue;
         out.push_back({"out-of-view", object_subject(scene, i),
                        "lies wholly outside the camera's view (or behind it): no eye ray sees it; "
-                       "it shows only in reflections, refractions and shadows, if at all"});
+                       "it shows only in reflections, refractions and shadows, if at all",
+                       located(scene, scene.sources.objects, i)});
     }
 }
 

@@ -2,11 +2,13 @@
 // lights, a camera inside a sphere, a material that makes light). docs/cli.md explains each rule.
 #pragma once
 
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
 
 #include "glint/scene/scene.h"
+#include "glint/scene/scene_error.h"
 
 namespace glint {
 
@@ -17,6 +19,8 @@ struct LintWarning {
     // scene, the visible faces of area lights come before the `objects` list).
     std::string subject;
     std::string message;  // what is wrong and why it matters
+    // Where the subject was read, when the loader kept it (SceneSources): the YAML loader does.
+    std::optional<SourceLocation> location;
 };
 
 // The rules' names, in the order lint_scene() applies them.

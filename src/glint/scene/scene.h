@@ -79,6 +79,22 @@ struct SceneObject {
     bool emits_light = true;
 };
 
+// A place in a scene file: 1-based line and column (bytes); 0 when unknown.
+struct TextPosition {
+    int line = 0;
+    int column = 0;
+};
+
+// Where the loader read each material, light and object, for messages about a loaded scene
+// (`glint info`'s warnings). The YAML loader keeps one position a material, light and object
+// (a mesh file's parts and materials at its object, an area light's face at its light; the
+// built-in default material at none); other loaders keep none, and the lists stay empty.
+struct SceneSources {
+    std::string file;
+    std::vector<TextPosition> materials, lights;
+    LargeVector<TextPosition> objects;
+};
+
 struct Scene {
     RenderSettings settings;
     CameraSpec camera;
@@ -88,6 +104,7 @@ struct Scene {
     LargeVector<SceneObject> objects;
     // What the loader accepted but the user should know ("3 degenerate triangles dropped").
     std::vector<std::string> warnings;
+    SceneSources sources;
 };
 
 // Limits checked before memory is taken, so that an absurd scene is an error, not an outage.

@@ -296,7 +296,7 @@ void MaterialTable::read_named(const YAML::Node& section, const Field& field) {
         Material material =
             read_material(source_, sandbox_, entry.value, {"", entry.key, entry.key_node},
                           "material " + quote(entry.key), entry.key);
-        named_.emplace(entry.key, add(std::move(material)));
+        named_.emplace(entry.key, add(std::move(material), text_position(entry.key_node.Mark())));
     }
 }
 
@@ -308,7 +308,7 @@ std::uint32_t MaterialTable::resolve(const MapEntry* entry, std::size_t object_i
         if (!default_) {
             Material material;
             material.name = kDefaultName;
-            default_ = add(std::move(material));
+            default_ = add(std::move(material), {});  // built in: read nowhere
         }
         return *default_;
     }
@@ -316,7 +316,8 @@ std::uint32_t MaterialTable::resolve(const MapEntry* entry, std::size_t object_i
     const Field field{"", "material", entry->key_node};
     if (value.IsMap()) {
         const std::string name = "(object " + std::to_string(object_index) + ")";
-        return add(read_material(source_, sandbox_, value, field, "material", name));
+        return add(read_material(source_, sandbox_, value, field, "material", name),
+                   text_position(value.Mark()));
     }
     if (!value.IsScalar()) throw type_error(source_, value, field, "a material name or map");
     const std::string& name = value.Scalar();
@@ -335,12 +336,13 @@ std::uint32_t MaterialTable::resolve(const MapEntry* entry, std::size_t object_i
     throw source_.error_at(value, "unknown material " + quote(name), {note});
 }
 
-std::uint32_t MaterialTable::add(Material material) {
+std::uint32_t MaterialTable::add(Material material, TextPosition where) {
     // An index must fit the object's 32-bit field; a file this size is refused long before.
     if (materials_.size() >= std::numeric_limits<std::uint32_t>::max()) {
         throw source_.error("too many materials");
     }
     materials_.push_back(std::move(material));
+    positions_.push_back(where);
     return std::uint32_t(materials_.size() - 1);
 }
 

@@ -45,7 +45,8 @@ void read_object(ShapeReader& shapes, const YAML::Node& node, const Field& field
     const bool emits_light = r.map.boolean("emits_light", true);
     std::vector<std::uint32_t> file_materials;
     if (r.model && !material) {
-        for (const Material& m : r.model->materials) file_materials.push_back(materials.add(m));
+        for (const Material& m : r.model->materials)
+            file_materials.push_back(materials.add(m, text_position(node.Mark())));
     }
     const std::uint32_t shared = file_materials.empty() ? materials.resolve(material, index) : 0;
     for (std::size_t i = 0; i < r.shapes.size(); ++i) {
@@ -57,13 +58,15 @@ void read_object(ShapeReader& shapes, const YAML::Node& node, const Field& field
 
 // An area light's face: it glows in the light's colour, and neither casts shadows nor lights the
 // scene (the light does).
-void add_light_face(LightEntry& entry, std::size_t index, MaterialTable& materials, Scene& scene) {
+void add_light_face(LightEntry& entry, std::size_t index, TextPosition where,
+                    MaterialTable& materials, Scene& scene) {
     Material glow;
     glow.name = "(light " + std::to_string(index) + ")";
     glow.ka = glow.kd = glow.ks = 0;
     glow.emission = std::get<AreaLight>(entry.light).color;
-    scene.objects.push_back({std::move(*entry.visible_shape), materials.add(std::move(glow)),
+    scene.objects.push_back({std::move(*entry.visible_shape), materials.add(std::move(glow), where),
                              /*casts_shadow=*/false, /*emits_light=*/false});
+    scene.sources.objects.push_back(where);
 }
 
 Scene read_scene(const YamlSource& source, const ReadSandbox& sandbox, const YAML::Node& root) {
@@ -77,7 +80,8 @@ Scene read_scene(const YamlSource& source, const ReadSandbox& sandbox, const YAM
     result.camera = read_camera(source, scene.require("camera").value, scene.field("camera"));
     result.ambient = scene.color("ambient", result.ambient);
 
-    MaterialTable materials(source, sandbox, result.materials);
+    result.sources.file = source.file_name();
+    MaterialTable materials(source, sandbox, result.materials, result.sources.materials);
     if (const MapEntry* named = section(scene, "materials")) {
         materials.read_named(named->value, scene.field("materials"));
     }
@@ -86,8 +90,10 @@ Scene read_scene(const YamlSource& source, const ReadSandbox& sandbox, const YAM
             read_sequence(source, lights->value, scene.field("lights"), "a list of lights");
         for (std::size_t i = 0; i < items.size(); ++i) {
             LightEntry entry = read_light(source, items[i], {"", indexed("lights", i)});
-            if (entry.visible_shape) add_light_face(entry, i, materials, result);
+            const TextPosition where = text_position(items[i].Mark());
+            if (entry.visible_shape) add_light_face(entry, i, where, materials, result);
             result.lights.push_back(std::move(entry.light));
+            result.sources.lights.push_back(where);
         }
     }
     ShapeReader shapes(source, sandbox);
@@ -100,6 +106,8 @@ Scene read_scene(const YamlSource& source, const ReadSandbox& sandbox, const YAM
         for (std::size_t i = 0; i < items.size(); ++i) {
             read_object(shapes, items[i], {"", indexed("objects", i)}, materials, i,
                         result.objects);
+            // A mesh file's parts all at their object.
+            result.sources.objects.resize(result.objects.size(), text_position(items[i].Mark()));
         }
     }
     result.warnings = shapes.warnings();

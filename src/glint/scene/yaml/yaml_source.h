@@ -8,9 +8,16 @@
 #include <string_view>
 #include <vector>
 
+#include "glint/scene/scene.h"
 #include "glint/scene/scene_error.h"
 
 namespace glint {
+
+// The 1-based place of a yaml-cpp mark (0-based); {0, 0} for a null mark.
+inline TextPosition text_position(const YAML::Mark& mark) {
+    if (mark.is_null() || mark.line < 0 || mark.column < 0) return {};
+    return {mark.line + 1, mark.column + 1};
+}
 
 // Makes SceneErrors located in the text.
 class YamlSource {
