@@ -17,7 +17,7 @@
 #include "glint/render/world.h"
 #include "glint/scene/load_scene.h"
 #include "glint/scene/scene_error.h"
-#include "json_string.h"
+#include "glint/render/json_string.h"
 #include "scene_read_options.h"
 
 namespace glint::cli {

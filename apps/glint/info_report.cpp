@@ -6,7 +6,7 @@
 #include <cstdio>
 
 #include "glint/render/memory_estimate.h"
-#include "json_string.h"
+#include "glint/render/json_string.h"
 
 namespace glint::cli {
 

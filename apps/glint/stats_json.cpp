@@ -3,7 +3,7 @@
 
 #include <sstream>
 
-#include "json_string.h"
+#include "glint/render/json_string.h"
 
 namespace glint::cli {
 

@@ -37,8 +37,7 @@ RayTree explain(const World& world, const PixelSample& which) {
     tree.y = which.y;
     tree.sample = which.sample;
     tree.seed = which.seed;
-    for (const std::string_view name : integrator_names())
-        if (integrator_from_name(name) == settings.integrator) tree.integrator = name;
+    tree.integrator = integrator_name(settings.integrator);
     tree.film = eye.film;
     tree.draws.push_back({"pixel", kPixelDimension, eye.offset});
     if (camera.has_lens()) tree.draws.push_back({"lens", kLensDimension, eye.lens});

@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "glint/math/constants.h"
+#include "glint/render/json_string.h"
 
 namespace glint {
 
@@ -206,28 +207,11 @@ std::string exact(Color c) {
     return "[" + exact(c.r) + ", " + exact(c.g) + ", " + exact(c.b) + "]";
 }
 
-std::string quoted(std::string_view s) {
-    std::string q = "\"";
-    for (const char c : s) {
-        if (c == '"' || c == '\\') {
-            q += '\\';
-            q += c;
-        } else if (std::uint8_t(c) < 0x20) {
-            char escape[8];
-            std::snprintf(escape, sizeof escape, "\\u%04x", unsigned(c));
-            q += escape;
-        } else {
-            q += c;
-        }
-    }
-    return q + "\"";
-}
-
 // Fields of one JSON object, written as "key": value.
 class Fields {
 public:
     Fields& add(std::string_view key, const std::string& value) {
-        text_ += (text_.empty() ? "" : ", ") + quoted(key) + ": " + value;
+        text_ += (text_.empty() ? "" : ", ") + json_string(key) + ": " + value;
         return *this;
     }
     std::string object() const { return "{" + text_ + "}"; }
@@ -259,7 +243,7 @@ std::string light_sample_json(const LightSampleRecord& s) {
 
 std::string light_json(const LightRecord& light) {
     Fields f;
-    f.add("name", quoted(light.name)).add("light", std::to_string(light.light));
+    f.add("name", json_string(light.name)).add("light", std::to_string(light.light));
     f.add("object_light", light.object_light ? "true" : "false");
     f.add("averaged", light.averaged ? "true" : "false");
     f.add("samples", array(light.samples, light_sample_json));
@@ -268,28 +252,30 @@ std::string light_json(const LightRecord& light) {
 
 std::string branch_json(const BranchRecord& b) {
     Fields f;
-    f.add("kind", quoted(kind_name(b.kind))).add("k", exact(b.k)).add("factor", exact(b.factor));
+    f.add("kind", json_string(kind_name(b.kind)))
+        .add("k", exact(b.k))
+        .add("factor", exact(b.factor));
     f.add("lobe_u", b.lobe_u ? exact(*b.lobe_u) : "null");
-    f.add("stop", b.stop == StopReason::none ? "null" : quoted(stop_reason_name(b.stop)));
+    f.add("stop", b.stop == StopReason::none ? "null" : json_string(stop_reason_name(b.stop)));
     return f.add("child", b.child >= 0 ? std::to_string(b.child) : "null").object();
 }
 
 std::string node_json(const RayTree& tree, int index) {
     const RayNode& n = tree.nodes[std::size_t(index)];
     Fields f;
-    f.add("id", std::to_string(index)).add("kind", quoted(kind_name(n.kind)));
+    f.add("id", std::to_string(index)).add("kind", json_string(kind_name(n.kind)));
     f.add("parent", n.parent >= 0 ? std::to_string(n.parent) : "null");
     f.add("depth", std::to_string(n.depth)).add("weight", exact(n.weight));
     f.add("throughput", exact(n.throughput));
     f.add("origin", exact(n.ray.origin)).add("direction", exact(n.ray.direction));
     f.add("time", exact(n.ray.time));
-    f.add("stop", n.stop == StopReason::none ? "null" : quoted(stop_reason_name(n.stop)));
+    f.add("stop", n.stop == StopReason::none ? "null" : json_string(stop_reason_name(n.stop)));
     if (n.stop == StopReason::missed) {
         f.add("hit", "null").add("background", exact(n.background));
     } else {
         Fields hit;
         hit.add("t", exact(n.t)).add("object", std::to_string(n.object));
-        hit.add("shape", quoted(n.shape)).add("material", quoted(n.material));
+        hit.add("shape", json_string(n.shape)).add("material", json_string(n.material));
         hit.add("point", exact(n.point)).add("geometric_normal", exact(n.geometric_normal));
         hit.add("shading_normal", exact(n.shading_normal));
         hit.add("entering", n.entering ? "true" : "false");
@@ -337,13 +323,14 @@ std::string ray_tree_text(const RayTree& tree) { return TextWriter(tree).write()
 
 std::string ray_tree_json(const RayTree& tree) {
     Fields f;
-    f.add("format", quoted("glint-ray-tree")).add("version", "1");
+    f.add("format", json_string("glint-ray-tree")).add("version", "1");
     f.add("pixel", "[" + std::to_string(tree.x) + ", " + std::to_string(tree.y) + "]");
     f.add("sample", std::to_string(tree.sample)).add("seed", std::to_string(tree.seed));
-    f.add("integrator", quoted(tree.integrator)).add("film", exact(tree.film));
+    f.add("integrator", json_string(tree.integrator)).add("film", exact(tree.film));
     f.add("draws", array(tree.draws, [](const RandomDraw& d) {
               Fields draw;
-              draw.add("purpose", quoted(d.purpose)).add("dimension", std::to_string(d.dimension));
+              draw.add("purpose", json_string(d.purpose))
+                  .add("dimension", std::to_string(d.dimension));
               return draw.add("u", d.pair ? exact(d.u) : "[" + exact(d.u.x) + "]").object();
           }));
     f.add("sample_value", exact(tree.sample_value)).add("evaluated", exact(evaluate(tree)));

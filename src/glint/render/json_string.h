@@ -6,7 +6,7 @@
 #include <string>
 #include <string_view>
 
-namespace glint::cli {
+namespace glint {
 
 inline std::string json_string(std::string_view s) {
     std::string out = "\"";
@@ -25,4 +25,4 @@ inline std::string json_string(std::string_view s) {
     return out + "\"";
 }
 
-}  // namespace glint::cli
+}  // namespace glint
