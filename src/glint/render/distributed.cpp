@@ -28,37 +28,45 @@ Color DistributedIntegrator::trace_eye_ray(const Ray& ray, SampleStream& stream,
     return trace(ray, 1, 1, stream, stats);
 }
 
+// Each member below is compiled twice: with kRecord, telling the recorder every event; without,
+// the renderer's own code, with no trace of the recorder in it.
+
 Color DistributedIntegrator::trace(const Ray& ray, int depth, float weight, SampleStream& stream,
                                    RayStats& stats, const MediumStack& media) {
-    if (!recorder_) [[likely]]
-        return shade(ray, depth, weight, stream, stats, media);
+    return recorder_ ? trace_ray<true>(ray, depth, weight, stream, stats, media)
+                     : trace_ray<false>(ray, depth, weight, stream, stats, media);
+}
+
+template <bool kRecord>
+Color DistributedIntegrator::trace_ray(const Ray& ray, int depth, float weight,
+                                       SampleStream& stream, RayStats& stats,
+                                       const MediumStack& media) {
+    if constexpr (!kRecord) return shade<false>(ray, depth, weight, stream, stats, media);
     recorder_->begin_ray(ray, depth, weight);
-    const Color color = shade(ray, depth, weight, stream, stats, media);
+    const Color color = shade<true>(ray, depth, weight, stream, stats, media);
     recorder_->end_ray(color);
     return color;
 }
 
+template <bool kRecord>
 Color DistributedIntegrator::shade(const Ray& ray, int depth, float weight, SampleStream& stream,
                                    RayStats& stats, const MediumStack& media) {
     const RenderSettings& settings = world_.settings();
     const auto hit = world_.intersect(ray, {0, kInfinity}, kVisibleToCameraRays);
     if (!hit) {
-        if (recorder_) [[unlikely]]
-            recorder_->missed(settings.background);
+        if constexpr (kRecord) recorder_->missed(settings.background);
         return settings.background;
     }
     if (depth == 1) ++stats.primary_hits;
 
     const SurfaceContext c = surface_context(world_, ray, *hit);
-    if (recorder_) [[unlikely]]
-        recorder_->hit(c, *hit);
+    if constexpr (kRecord) recorder_->hit(c, *hit);
     const Material& m = *c.material;
     Color color = m.emission + ambient_term(m, c.color, world_.ambient());
-    color += direct_light(c, ray, stream, stats);
+    add_direct_light<kRecord>(c, ray, stream, stats, color);
 
     if (depth >= settings.max_depth) {
-        if (recorder_) [[unlikely]]
-            recorder_->stop(StopReason::max_depth);
+        if constexpr (kRecord) recorder_->stop(StopReason::max_depth);
         return color;
     }
     // A dispersive surface splits a ray that carries every wavelength: the refracted ray takes
@@ -70,12 +78,10 @@ Color DistributedIntegrator::shade(const Ray& ray, int depth, float weight, Samp
         parent.wavelength = sample_visible_wavelength(u);
         spectral_weight =
             wavelength_to_rgb_weight(parent.wavelength) / visible_wavelength_pdf(parent.wavelength);
-        if (recorder_) [[unlikely]]
-            recorder_->wavelength(u, parent.wavelength);
+        if constexpr (kRecord) recorder_->wavelength(u, parent.wavelength);
     }
     const Branches b = branches_at(c, ray.direction, media, parent.wavelength);
-    if (recorder_) [[unlikely]]
-        recorder_->branches(c, b, ray.direction, weight);
+    if constexpr (kRecord) recorder_->branches(c, b, ray.direction, weight);
     if (b.kr > 0 && weight * b.kr >= settings.min_weight) {
         const Vector3 mirror = normalize(reflect(ray.direction, c.n));
         const Point2 u = lobe_sample(c.roughness, stream);
@@ -83,10 +89,10 @@ Color DistributedIntegrator::shade(const Ray& ray, int depth, float weight, Samp
         if (d != kBlockedByTheSurface) {
             stats.count(RayKind::reflected);
             const Ray r = spawn_from(world_, c, ray, d);
-            if (recorder_) [[unlikely]]
+            if constexpr (kRecord)
                 recorder_->branch(RayKind::reflected, Color::gray(b.kr), lobe_draw(c.roughness, u));
-            color += b.kr * trace(r, depth + 1, weight * b.kr, stream, stats, media);
-        } else if (recorder_) [[unlikely]] {
+            color += b.kr * trace_ray<kRecord>(r, depth + 1, weight * b.kr, stream, stats, media);
+        } else if constexpr (kRecord) {
             recorder_->blocked(RayKind::reflected, u);
         }
     }
@@ -98,74 +104,64 @@ Color DistributedIntegrator::shade(const Ray& ray, int depth, float weight, Samp
             stats.count(RayKind::refracted);
             const Ray t = spawn_from(world_, c, parent, d);
             const Color factor = b.kt * spectral_weight;
-            if (recorder_) [[unlikely]]
+            if constexpr (kRecord)
                 recorder_->branch(RayKind::refracted, factor, lobe_draw(c.transmit_roughness, u));
-            color += factor * trace(t, depth + 1, weight * b.kt, stream, stats,
-                                    media_beyond(c, b, media, parent.wavelength));
-        } else if (recorder_) [[unlikely]] {
+            color += factor * trace_ray<kRecord>(t, depth + 1, weight * b.kt, stream, stats,
+                                                 media_beyond(c, b, media, parent.wavelength));
+        } else if constexpr (kRecord) {
             recorder_->blocked(RayKind::refracted, u);
         }
     }
     return color;
 }
 
-Color DistributedIntegrator::direct_light(const SurfaceContext& c, const Ray& ray,
-                                          SampleStream& stream, RayStats& stats) {
-    Color sum;
+template <bool kRecord>
+void DistributedIntegrator::add_direct_light(const SurfaceContext& c, const Ray& ray,
+                                             SampleStream& stream, RayStats& stats, Color& color) {
     const auto lights = world_.lights();
     for (std::size_t light = 0; light < lights.size(); ++light) {
         if (!is_area_light(lights[light])) {
             const LightSample ls = sample_light(lights[light], c.sp.p);
             const Color term = light_sample_term(feelers_, light, c, ls, ray.time, stats);
-            if (recorder_) [[unlikely]]
-                recorder_->light(light, c, ls, ray.time, term);
-            sum += term;
+            if constexpr (kRecord) recorder_->light(light, c, ls, ray.time, term);
+            color += term;
             continue;
         }
         // n shadow rays, stratified together with those of the pixel's other samples.
         const int own = std::get<AreaLight>(lights[light]).shadow_rays;
         const auto n = std::uint32_t(own > 0 ? own : world_.settings().shadow_rays);
         const std::uint32_t dimension = stream.next_dimension();
-        if (recorder_) [[unlikely]]
-            recorder_->begin_light(light, false);
+        if constexpr (kRecord) recorder_->begin_light(light, false);
         Color light_sum;
         for (std::uint32_t j = 0; j < n; ++j) {
             const Point2 u = stream.get_2d(dimension, j, n);
             const LightSample ls = sample_light(lights[light], c.sp.p, u);
             const Color term = light_sample_term(feelers_, light, c, ls, ray.time, stats);
-            if (recorder_) [[unlikely]]
-                recorder_->light_sample(c, ls, u, ray.time, term);
+            if constexpr (kRecord) recorder_->light_sample(c, ls, u, ray.time, term);
             light_sum += term;
         }
         const Color mean = light_sum / float(n);
-        if (recorder_) [[unlikely]]
-            recorder_->end_light(mean);
-        sum += mean;
+        if constexpr (kRecord) recorder_->end_light(mean);
+        color += mean;
     }
     const auto n = std::uint32_t(world_.settings().shadow_rays);
     const auto object_lights = world_.object_lights();
     for (std::size_t index = 0; index < object_lights.size(); ++index) {
         const std::uint32_t dimension = stream.next_dimension();
-        if (recorder_) [[unlikely]]
-            recorder_->begin_light(index, true);
+        if constexpr (kRecord) recorder_->begin_light(index, true);
         Color light_sum;
         for (std::uint32_t j = 0; j < n; ++j) {
             const Point2 u = stream.get_2d(dimension, j, n);
             const LightSample ls = sample_light(object_lights[index], c.sp.p, u);
             const Color term =
                 light_sample_term(feelers_, ShadowFeelers::kNoLight, c, ls, ray.time, stats);
-            if (recorder_) [[unlikely]]
-                recorder_->light_sample(c, ls, u, ray.time, term);
+            if constexpr (kRecord) recorder_->light_sample(c, ls, u, ray.time, term);
             light_sum += term;
         }
         const Color mean = light_sum / float(n);
-        if (recorder_) [[unlikely]]
-            recorder_->end_light(mean);
-        sum += mean;
+        if constexpr (kRecord) recorder_->end_light(mean);
+        color += mean;
     }
-    if (recorder_) [[unlikely]]
-        recorder_->direct(sum);
-    return sum;
 }
 
 }  // namespace glint

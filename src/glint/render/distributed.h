@@ -38,12 +38,17 @@ public:
     void record_into(RayTreeRecorder* recorder) { recorder_ = recorder; }
 
 private:
+    template <bool kRecord>
+    Color trace_ray(const Ray& ray, int depth, float weight, SampleStream& stream, RayStats& stats,
+                    const MediumStack& media);
+    template <bool kRecord>
     Color shade(const Ray& ray, int depth, float weight, SampleStream& stream, RayStats& stats,
                 const MediumStack& media);
-    // The local term's sum over the lights at the surface of c, each area light and emitting
-    // object sampled by its shadow rays.
-    Color direct_light(const struct SurfaceContext& c, const Ray& ray, SampleStream& stream,
-                       RayStats& stats);
+    // Adds to color the local term of each light at the surface of c in turn, each area light
+    // and emitting object sampled by its shadow rays.
+    template <bool kRecord>
+    void add_direct_light(const struct SurfaceContext& c, const Ray& ray, SampleStream& stream,
+                          RayStats& stats, Color& color);
 
     const World& world_;
     ShadowFeelers feelers_;

@@ -23,8 +23,12 @@ inline EyeSample eye_sample(const Camera& camera, const SampleStream& stream, in
     e.film = {float(x) + e.offset.x, float(y) + e.offset.y};
     // A pinhole and a closed shutter draw no numbers for the lens and the time.
     e.lens = camera.has_lens() ? stream.get_2d(kLensDimension) : Point2{0.5f, 0.5f};
-    e.time_u = camera.has_shutter() ? stream.get_1d(kTimeDimension) : 0;
-    e.time = camera.has_shutter() ? camera.shutter_time(e.time_u) : camera.shutter_open();
+    e.time_u = 0;
+    e.time = camera.shutter_open();
+    if (camera.has_shutter()) {
+        e.time_u = stream.get_1d(kTimeDimension);
+        e.time = camera.shutter_time(e.time_u);
+    }
     e.ray = camera.generate_ray(e.film, e.lens, e.time);
     return e;
 }

@@ -37,9 +37,7 @@ Color evaluate(const RayTree& tree, int index) {
     const RayNode& n = tree.nodes[std::size_t(index)];
     if (n.stop == StopReason::missed) return n.background;
     Color color = n.emission + n.ambient;
-    Color direct;
-    for (const LightRecord& light : n.lights) direct += light_value(light);
-    color += direct;
+    for (const LightRecord& light : n.lights) color += light_value(light);
     for (const BranchRecord& b : n.branches)
         if (b.child >= 0) color += b.factor * evaluate(tree, b.child);
     return color;

@@ -95,7 +95,7 @@ struct RayNode {
     Color background;  // what a missed ray brings
     Color emission, ambient;
     std::vector<LightRecord> lights;
-    Color direct;  // the lights' sum
+    Color direct;  // the lights' sum (the colour adds each light's value in turn)
     // Snell's law at a transmitting surface.
     bool transmits = false;
     float n1 = 1, n2 = 1, cos_incident = 0, cos_refracted = 0;
@@ -115,7 +115,8 @@ struct RayTree {
 };
 
 // The sample's colour worked out again from the tree's recorded terms, combined as the
-// integrators combine them: equal to sample_value to the last bit when the tree is complete.
+// integrators combine them (emission + ambient, plus each light's value in turn, plus each traced
+// branch's factor times its colour): equal to sample_value to the last bit.
 Color evaluate(const RayTree& tree);
 // The same for one node: its local terms and its children's colours times their factors.
 Color evaluate(const RayTree& tree, int node);

@@ -122,6 +122,7 @@ void RayTreeRecorder::light(std::size_t light, const SurfaceContext& c, const Li
     record.light = light;
     record.samples.push_back(sample_record(light, c, ls, time, term));
     record.value = term;
+    current().direct += term;
     current().lights.push_back(std::move(record));
 }
 
@@ -144,9 +145,10 @@ void RayTreeRecorder::light_sample(const SurfaceContext& c, const LightSample& l
     record.samples.push_back(r);
 }
 
-void RayTreeRecorder::end_light(Color value) { current().lights.back().value = value; }
-
-void RayTreeRecorder::direct(Color sum) { current().direct = sum; }
+void RayTreeRecorder::end_light(Color value) {
+    current().lights.back().value = value;
+    current().direct += value;
+}
 
 void RayTreeRecorder::wavelength(float u, float nanometres) {
     current().wavelength = nanometres;

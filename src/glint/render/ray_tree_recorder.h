@@ -37,7 +37,6 @@ public:
     void light_sample(const SurfaceContext& c, const LightSample& ls, Point2 u, float time,
                       Color term);
     void end_light(Color value);
-    void direct(Color sum);
 
     void wavelength(float u, float nanometres);
     // The surface's kr and kt and Snell's law for the incident direction; branches whose weight

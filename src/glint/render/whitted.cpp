@@ -12,72 +12,68 @@ Color WhittedIntegrator::trace_eye_ray(const Ray& ray, RayStats& stats) {
     return trace(ray, 1, 1, stats);
 }
 
+// Each member below is compiled twice: with kRecord, telling the recorder every event; without,
+// the renderer's own code, with no trace of the recorder in it.
+
 Color WhittedIntegrator::trace(const Ray& ray, int depth, float weight, RayStats& stats,
                                const MediumStack& media) {
-    if (!recorder_) [[likely]]
-        return shade(ray, depth, weight, stats, media);
+    return recorder_ ? trace_ray<true>(ray, depth, weight, stats, media)
+                     : trace_ray<false>(ray, depth, weight, stats, media);
+}
+
+template <bool kRecord>
+Color WhittedIntegrator::trace_ray(const Ray& ray, int depth, float weight, RayStats& stats,
+                                   const MediumStack& media) {
+    if constexpr (!kRecord) return shade<false>(ray, depth, weight, stats, media);
     recorder_->begin_ray(ray, depth, weight);
-    const Color color = shade(ray, depth, weight, stats, media);
+    const Color color = shade<true>(ray, depth, weight, stats, media);
     recorder_->end_ray(color);
     return color;
 }
 
+template <bool kRecord>
 Color WhittedIntegrator::shade(const Ray& ray, int depth, float weight, RayStats& stats,
                                const MediumStack& media) {
     const RenderSettings& settings = world_.settings();
     const auto hit = world_.intersect(ray, {0, kInfinity}, kVisibleToCameraRays);
     if (!hit) {
-        if (recorder_) [[unlikely]]
-            recorder_->missed(settings.background);
+        if constexpr (kRecord) recorder_->missed(settings.background);
         return settings.background;
     }
     if (depth == 1) ++stats.primary_hits;
 
     const SurfaceContext c = surface_context(world_, ray, *hit);
-    if (recorder_) [[unlikely]]
-        recorder_->hit(c, *hit);
+    if constexpr (kRecord) recorder_->hit(c, *hit);
     const Material& m = *c.material;
     Color color = m.emission + ambient_term(m, c.color, world_.ambient());
-    color += direct_light(c, ray, stats);
-
-    if (depth >= settings.max_depth) {
-        if (recorder_) [[unlikely]]
-            recorder_->stop(StopReason::max_depth);
-        return color;
-    }
-    const Branches b = branches_at(c, ray.direction, media, ray.wavelength);
-    if (recorder_) [[unlikely]]
-        recorder_->branches(c, b, ray.direction, weight);
-    if (b.kr > 0 && weight * b.kr >= settings.min_weight) {
-        stats.count(RayKind::reflected);
-        const Ray r = spawn_from(world_, c, ray, normalize(reflect(ray.direction, c.n)));
-        if (recorder_) [[unlikely]]
-            recorder_->branch(RayKind::reflected, Color::gray(b.kr));
-        color += b.kr * trace(r, depth + 1, weight * b.kr, stats, media);
-    }
-    if (b.kt > 0 && weight * b.kt >= settings.min_weight) {
-        stats.count(RayKind::refracted);
-        const Ray t = spawn_from(world_, c, ray, b.refracted);
-        if (recorder_) [[unlikely]]
-            recorder_->branch(RayKind::refracted, Color::gray(b.kt));
-        color += b.kt * trace(t, depth + 1, weight * b.kt, stats, media_beyond(c, b, media));
-    }
-    return color;
-}
-
-Color WhittedIntegrator::direct_light(const SurfaceContext& c, const Ray& ray, RayStats& stats) {
-    Color sum;
     const auto lights = world_.lights();
     for (std::size_t light = 0; light < lights.size(); ++light) {
         const LightSample ls = sample_light(lights[light], c.sp.p);
         const Color term = light_sample_term(feelers_, light, c, ls, ray.time, stats);
-        if (recorder_) [[unlikely]]
-            recorder_->light(light, c, ls, ray.time, term);
-        sum += term;
+        if constexpr (kRecord) recorder_->light(light, c, ls, ray.time, term);
+        color += term;
     }
-    if (recorder_) [[unlikely]]
-        recorder_->direct(sum);
-    return sum;
+
+    if (depth >= settings.max_depth) {
+        if constexpr (kRecord) recorder_->stop(StopReason::max_depth);
+        return color;
+    }
+    const Branches b = branches_at(c, ray.direction, media, ray.wavelength);
+    if constexpr (kRecord) recorder_->branches(c, b, ray.direction, weight);
+    if (b.kr > 0 && weight * b.kr >= settings.min_weight) {
+        stats.count(RayKind::reflected);
+        const Ray r = spawn_from(world_, c, ray, normalize(reflect(ray.direction, c.n)));
+        if constexpr (kRecord) recorder_->branch(RayKind::reflected, Color::gray(b.kr));
+        color += b.kr * trace_ray<kRecord>(r, depth + 1, weight * b.kr, stats, media);
+    }
+    if (b.kt > 0 && weight * b.kt >= settings.min_weight) {
+        stats.count(RayKind::refracted);
+        const Ray t = spawn_from(world_, c, ray, b.refracted);
+        if constexpr (kRecord) recorder_->branch(RayKind::refracted, Color::gray(b.kt));
+        color += b.kt *
+                 trace_ray<kRecord>(t, depth + 1, weight * b.kt, stats, media_beyond(c, b, media));
+    }
+    return color;
 }
 
 }  // namespace glint

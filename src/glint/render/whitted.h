@@ -40,9 +40,11 @@ public:
     void record_into(RayTreeRecorder* recorder) { recorder_ = recorder; }
 
 private:
+    template <bool kRecord>
+    Color trace_ray(const Ray& ray, int depth, float weight, RayStats& stats,
+                    const MediumStack& media);
+    template <bool kRecord>
     Color shade(const Ray& ray, int depth, float weight, RayStats& stats, const MediumStack& media);
-    // The local term's sum over the lights at the surface of c, one sample each.
-    Color direct_light(const struct SurfaceContext& c, const Ray& ray, RayStats& stats);
 
     const World& world_;
     ShadowFeelers feelers_;
