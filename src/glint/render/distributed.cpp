@@ -28,20 +28,29 @@ Color DistributedIntegrator::trace_eye_ray(const Ray& ray, SampleStream& stream,
     return trace(ray, 1, 1, stream, stats);
 }
 
-// Each member below is compiled twice: with kRecord, telling the recorder every event; without,
-// the renderer's own code, with no trace of the recorder in it.
+// shade() and what it calls are compiled twice: with kRecord, telling the recorder every event;
+// without, the renderer's own code, with no trace of the recorder in it.
 
 Color DistributedIntegrator::trace(const Ray& ray, int depth, float weight, SampleStream& stream,
                                    RayStats& stats, const MediumStack& media) {
-    return recorder_ ? trace_ray<true>(ray, depth, weight, stream, stats, media)
-                     : trace_ray<false>(ray, depth, weight, stream, stats, media);
+    if (recorder_) [[unlikely]]
+        return trace_recorded(ray, depth, weight, stream, stats, media);
+    return shade<false>(ray, depth, weight, stream, stats, media);
 }
 
 template <bool kRecord>
 Color DistributedIntegrator::trace_ray(const Ray& ray, int depth, float weight,
                                        SampleStream& stream, RayStats& stats,
                                        const MediumStack& media) {
-    if constexpr (!kRecord) return shade<false>(ray, depth, weight, stream, stats, media);
+    if constexpr (kRecord) return trace_recorded(ray, depth, weight, stream, stats, media);
+    return shade<false>(ray, depth, weight, stream, stats, media);
+}
+
+// Out of line: the renderer's code stays as small as it was without a recorder.
+[[gnu::noinline]] Color DistributedIntegrator::trace_recorded(const Ray& ray, int depth,
+                                                              float weight, SampleStream& stream,
+                                                              RayStats& stats,
+                                                              const MediumStack& media) {
     recorder_->begin_ray(ray, depth, weight);
     const Color color = shade<true>(ray, depth, weight, stream, stats, media);
     recorder_->end_ray(color);
@@ -63,7 +72,7 @@ Color DistributedIntegrator::shade(const Ray& ray, int depth, float weight, Samp
     if constexpr (kRecord) recorder_->hit(c, *hit);
     const Material& m = *c.material;
     Color color = m.emission + ambient_term(m, c.color, world_.ambient());
-    add_direct_light<kRecord>(c, ray, stream, stats, color);
+    color = plus_direct_light<kRecord>(c, ray, stream, stats, color);
 
     if (depth >= settings.max_depth) {
         if constexpr (kRecord) recorder_->stop(StopReason::max_depth);
@@ -81,7 +90,8 @@ Color DistributedIntegrator::shade(const Ray& ray, int depth, float weight, Samp
         if constexpr (kRecord) recorder_->wavelength(u, parent.wavelength);
     }
     const Branches b = branches_at(c, ray.direction, media, parent.wavelength);
-    if constexpr (kRecord) recorder_->branches(c, b, ray.direction, weight);
+    if constexpr (kRecord)
+        recorder_->branches(c, b, media, parent.wavelength, ray.direction, weight);
     if (b.kr > 0 && weight * b.kr >= settings.min_weight) {
         const Vector3 mirror = normalize(reflect(ray.direction, c.n));
         const Point2 u = lobe_sample(c.roughness, stream);
@@ -116,8 +126,8 @@ Color DistributedIntegrator::shade(const Ray& ray, int depth, float weight, Samp
 }
 
 template <bool kRecord>
-void DistributedIntegrator::add_direct_light(const SurfaceContext& c, const Ray& ray,
-                                             SampleStream& stream, RayStats& stats, Color& color) {
+Color DistributedIntegrator::plus_direct_light(const SurfaceContext& c, const Ray& ray,
+                                               SampleStream& stream, RayStats& stats, Color color) {
     const auto lights = world_.lights();
     for (std::size_t light = 0; light < lights.size(); ++light) {
         if (!is_area_light(lights[light])) {
@@ -162,6 +172,7 @@ void DistributedIntegrator::add_direct_light(const SurfaceContext& c, const Ray&
         if constexpr (kRecord) recorder_->end_light(mean);
         color += mean;
     }
+    return color;
 }
 
 }  // namespace glint

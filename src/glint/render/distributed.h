@@ -38,17 +38,21 @@ public:
     void record_into(RayTreeRecorder* recorder) { recorder_ = recorder; }
 
 private:
+    // A ray traced and told to the recorder.
+    Color trace_recorded(const Ray& ray, int depth, float weight, SampleStream& stream,
+                         RayStats& stats, const MediumStack& media);
     template <bool kRecord>
     Color trace_ray(const Ray& ray, int depth, float weight, SampleStream& stream, RayStats& stats,
                     const MediumStack& media);
     template <bool kRecord>
     Color shade(const Ray& ray, int depth, float weight, SampleStream& stream, RayStats& stats,
                 const MediumStack& media);
-    // Adds to color the local term of each light at the surface of c in turn, each area light
-    // and emitting object sampled by its shadow rays.
+    // color plus the local term of each light at the surface of c in turn, each area light and
+    // emitting object sampled by its shadow rays. (By value: a colour added to through a
+    // reference waits on its own stores.)
     template <bool kRecord>
-    void add_direct_light(const struct SurfaceContext& c, const Ray& ray, SampleStream& stream,
-                          RayStats& stats, Color& color);
+    Color plus_direct_light(const struct SurfaceContext& c, const Ray& ray, SampleStream& stream,
+                            RayStats& stats, Color color);
 
     const World& world_;
     ShadowFeelers feelers_;

@@ -155,8 +155,8 @@ void RayTreeRecorder::wavelength(float u, float nanometres) {
     current().wavelength_u = u;
 }
 
-void RayTreeRecorder::branches(const SurfaceContext& c, const Branches& b, Vector3 incident,
-                               float weight) {
+void RayTreeRecorder::branches(const SurfaceContext& c, const Branches& b, const MediumStack& media,
+                               float wavelength, Vector3 incident, float weight) {
     RayNode& n = current();
     const float min_weight = world_.settings().min_weight;
     const auto cut = [&](float k) {
@@ -164,14 +164,14 @@ void RayTreeRecorder::branches(const SurfaceContext& c, const Branches& b, Vecto
     };
     if (b.kr > 0)
         n.branches.push_back({RayKind::reflected, b.kr, Color::gray(b.kr), {}, cut(b.kr)});
-    const float transmit = c.material->transmit;
-    if (transmit <= 0) return;
+    if (c.material->transmit <= 0) return;
+    const SnellIndices indices = snell_indices(c, media, wavelength);
     n.transmits = true;
-    n.n1 = b.n1;
-    n.n2 = b.n2;
+    n.n1 = indices.n1;
+    n.n2 = indices.n2;
     n.cos_incident = dot(-incident, to_vector(c.n));
-    n.total_internal_reflection = b.total_internal_reflection;
-    if (b.total_internal_reflection) {
+    n.total_internal_reflection = b.kt == 0;  // branches_at moved kt to kr
+    if (n.total_internal_reflection) {
         n.branches.push_back(
             {RayKind::refracted, 0, {}, {}, StopReason::total_internal_reflection});
         return;

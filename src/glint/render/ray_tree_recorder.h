@@ -39,9 +39,11 @@ public:
     void end_light(Color value);
 
     void wavelength(float u, float nanometres);
-    // The surface's kr and kt and Snell's law for the incident direction; branches whose weight
-    // falls below the minimum are cut here, as the integrators cut them.
-    void branches(const SurfaceContext& c, const Branches& b, Vector3 incident, float weight);
+    // The surface's kr and kt (b, for a ray through `media` at that wavelength) and Snell's law
+    // for the incident direction; branches whose weight falls below the minimum are cut here,
+    // as the integrators cut them.
+    void branches(const SurfaceContext& c, const Branches& b, const MediumStack& media,
+                  float wavelength, Vector3 incident, float weight);
     // The branch of this kind is traced next, its colour multiplied by factor.
     void branch(RayKind kind, Color factor, std::optional<Point2> lobe_u = std::nullopt);
     // The branch's glossy lobe tipped it through the surface: not traced.

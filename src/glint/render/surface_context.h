@@ -78,25 +78,30 @@ struct Branches {
     float kr = 0, kt = 0;
     Vector3 refracted;  // unit; when kt > 0
     bool entering;      // the refracted ray enters the object (else it leaves it)
-    // Snell's law's indices, n1 on the ray's side and n2 beyond, for a transmitting material.
-    float n1 = 1, n2 = 1;
-    bool total_internal_reflection = false;  // the material's kt is now in kr
 };
+
+// Snell's law's indices at c: n1 on the ray's side, n2 beyond.
+struct SnellIndices {
+    float n1, n2;
+};
+inline SnellIndices snell_indices(const SurfaceContext& c, const MediumStack& media,
+                                  float wavelength) {
+    const float ior = ior_at(*c.material, wavelength);
+    return c.entering ? SnellIndices{media.ior(), ior}
+                      : SnellIndices{ior, media.ior_after_leaving(c.primitive, c.material)};
+}
 
 inline Branches branches_at(const SurfaceContext& c, Vector3 direction, const MediumStack& media,
                             float wavelength = 0) {
     const Material& m = *c.material;
     Branches b{c.reflect, m.transmit, {}, c.entering};
     if (b.kt > 0) {
-        const float ior = ior_at(m, wavelength);
-        b.n1 = c.entering ? media.ior() : ior;
-        b.n2 = c.entering ? ior : media.ior_after_leaving(c.primitive, &m);
-        if (const auto t = refract(direction, c.n, b.n1 / b.n2)) {
+        const auto [n1, n2] = snell_indices(c, media, wavelength);
+        if (const auto t = refract(direction, c.n, n1 / n2)) {
             b.refracted = normalize(*t);
-        } else {
+        } else {  // total internal reflection
             b.kr += b.kt;
             b.kt = 0;
-            b.total_internal_reflection = true;
         }
     }
     return b;

@@ -12,19 +12,27 @@ Color WhittedIntegrator::trace_eye_ray(const Ray& ray, RayStats& stats) {
     return trace(ray, 1, 1, stats);
 }
 
-// Each member below is compiled twice: with kRecord, telling the recorder every event; without,
-// the renderer's own code, with no trace of the recorder in it.
+// shade() and what it calls are compiled twice: with kRecord, telling the recorder every event;
+// without, the renderer's own code, with no trace of the recorder in it.
 
 Color WhittedIntegrator::trace(const Ray& ray, int depth, float weight, RayStats& stats,
                                const MediumStack& media) {
-    return recorder_ ? trace_ray<true>(ray, depth, weight, stats, media)
-                     : trace_ray<false>(ray, depth, weight, stats, media);
+    if (recorder_) [[unlikely]]
+        return trace_recorded(ray, depth, weight, stats, media);
+    return shade<false>(ray, depth, weight, stats, media);
 }
 
 template <bool kRecord>
 Color WhittedIntegrator::trace_ray(const Ray& ray, int depth, float weight, RayStats& stats,
                                    const MediumStack& media) {
-    if constexpr (!kRecord) return shade<false>(ray, depth, weight, stats, media);
+    if constexpr (kRecord) return trace_recorded(ray, depth, weight, stats, media);
+    return shade<false>(ray, depth, weight, stats, media);
+}
+
+// Out of line: the renderer's code stays as small as it was without a recorder.
+[[gnu::noinline]] Color WhittedIntegrator::trace_recorded(const Ray& ray, int depth, float weight,
+                                                          RayStats& stats,
+                                                          const MediumStack& media) {
     recorder_->begin_ray(ray, depth, weight);
     const Color color = shade<true>(ray, depth, weight, stats, media);
     recorder_->end_ray(color);
@@ -59,7 +67,7 @@ Color WhittedIntegrator::shade(const Ray& ray, int depth, float weight, RayStats
         return color;
     }
     const Branches b = branches_at(c, ray.direction, media, ray.wavelength);
-    if constexpr (kRecord) recorder_->branches(c, b, ray.direction, weight);
+    if constexpr (kRecord) recorder_->branches(c, b, media, ray.wavelength, ray.direction, weight);
     if (b.kr > 0 && weight * b.kr >= settings.min_weight) {
         stats.count(RayKind::reflected);
         const Ray r = spawn_from(world_, c, ray, normalize(reflect(ray.direction, c.n)));

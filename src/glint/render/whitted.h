@@ -40,6 +40,9 @@ public:
     void record_into(RayTreeRecorder* recorder) { recorder_ = recorder; }
 
 private:
+    // A ray traced and told to the recorder.
+    Color trace_recorded(const Ray& ray, int depth, float weight, RayStats& stats,
+                         const MediumStack& media);
     template <bool kRecord>
     Color trace_ray(const Ray& ray, int depth, float weight, RayStats& stats,
                     const MediumStack& media);
