@@ -11,26 +11,21 @@
 #include <string_view>
 #include <utility>
 
+#include "command_errors.h"
 #include "glint/accel/make_aggregate.h"
 #include "glint/render/accel_benchmark.h"
+#include "glint/render/json_string.h"
 #include "glint/render/ray_sets.h"
 #include "glint/render/world.h"
 #include "glint/scene/load_scene.h"
-#include "glint/scene/scene_error.h"
-#include "glint/render/json_string.h"
 #include "scene_read_options.h"
+#include "usage_error.h"
 
 namespace glint::cli {
 
 namespace {
 
-constexpr int kExitFailure = 1;
-constexpr int kExitBadInput = 2;
 constexpr int kRepetitions = 3;  // each figure is the best of these
-
-struct UsageError {
-    std::string message;
-};
 
 struct Row {
     std::string_view accel;
@@ -121,7 +116,7 @@ CLI::App* add_bench_command(CLI::App& app, BenchCommand& c) {
 }
 
 int run_bench(const BenchCommand& command) {
-    try {
+    return reporting_errors([&] {
         const std::vector<AccelKind> kinds = chosen_structures(command);
         Scene scene = load_scene(command.scene, command.reading.load_options());
         for (const std::string& warning : scene.warnings)
@@ -209,16 +204,7 @@ int run_bench(const BenchCommand& command) {
             std::printf("\nhit counts agree across structures\n");
         }
         return 0;
-    } catch (const SceneError& e) {
-        std::fputs(format_scene_error(e).c_str(), stderr);
-        return kExitBadInput;
-    } catch (const UsageError& e) {
-        std::fprintf(stderr, "glint: error: %s\n", e.message.c_str());
-        return kExitBadInput;
-    } catch (const std::exception& e) {
-        std::fprintf(stderr, "glint: error: %s\n", e.what());
-        return kExitFailure;
-    }
+    });
 }
 
 }  // namespace glint::cli

@@ -4,16 +4,14 @@
 #include <charconv>
 #include <cstdio>
 #include <limits>
-#include <new>
 
+#include "command_errors.h"
 #include "glint/image/atomic_file.h"
 #include "glint/image/file_io.h"
-#include "glint/image/image_error.h"
 #include "glint/render/explain.h"
 #include "glint/render/ray_tree_formats.h"
 #include "glint/render/world.h"
 #include "glint/scene/load_scene.h"
-#include "glint/scene/scene_error.h"
 #include "output_path.h"
 #include "usage_error.h"
 #include "whole_number_option.h"
@@ -21,9 +19,6 @@
 namespace glint::cli {
 
 namespace {
-
-constexpr int kExitFailure = 1;
-constexpr int kExitBadInput = 2;
 
 // "X,Y" as two whole numbers, or a UsageError that shows what was given.
 std::pair<int, int> parse_pixel(const std::string& text) {
@@ -76,7 +71,7 @@ CLI::App* add_explain_command(CLI::App& app, ExplainCommand& c) {
 }
 
 int run_explain(const ExplainCommand& command) {
-    try {
+    return reporting_errors([&] {
         const auto [x, y] = parse_pixel(command.pixel);
         if (!command.output.empty()) {
             if (const auto reason = unwritable_reason(command.output)) throw UsageError{*reason};
@@ -103,23 +98,7 @@ int run_explain(const ExplainCommand& command) {
                                                            : ray_tree_text(tree);
         write_output(command.output, text);
         return 0;
-    } catch (const SceneError& e) {
-        std::fputs(format_scene_error(e).c_str(), stderr);
-        return kExitBadInput;
-    } catch (const UsageError& e) {
-        std::fprintf(stderr, "glint: error: %s\n", e.message.c_str());
-        return kExitBadInput;
-    } catch (const ImageError& e) {
-        std::fprintf(stderr, "glint: error: %s\n", e.what());
-        return kExitFailure;
-    } catch (const std::bad_alloc&) {
-        std::fputs("glint: error: out of memory: the scene is too large for this machine\n",
-                   stderr);
-        return kExitFailure;
-    } catch (const std::exception& e) {
-        std::fprintf(stderr, "glint: error: %s\n", e.what());
-        return kExitFailure;
-    }
+    });
 }
 
 }  // namespace glint::cli

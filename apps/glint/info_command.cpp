@@ -2,23 +2,17 @@
 #include "info_command.h"
 
 #include <cstdio>
-#include <new>
 #include <utility>
 
+#include "command_errors.h"
 #include "glint/accel/make_aggregate.h"
 #include "glint/render/world.h"
 #include "glint/scene/load_scene.h"
-#include "glint/scene/scene_error.h"
 #include "info_report.h"
 
 namespace glint::cli {
 
-namespace {
-
-constexpr int kExitFailure = 1;
-constexpr int kExitBadInput = 2;
-
-}  // namespace
+namespace {}  // namespace
 
 CLI::App* add_info_command(CLI::App& app, InfoCommand& c) {
     CLI::App* info = app.add_subcommand(
@@ -38,7 +32,7 @@ CLI::App* add_info_command(CLI::App& app, InfoCommand& c) {
 }
 
 int run_info(const InfoCommand& command) {
-    try {
+    return reporting_errors([&] {
         Scene scene = load_scene(command.scene, command.reading.load_options());
         for (const std::string& warning : scene.warnings)
             std::fprintf(stderr, "glint: warning: %s\n", warning.c_str());
@@ -56,17 +50,7 @@ int run_info(const InfoCommand& command) {
         const std::string out = command.json ? info_json(report) : info_text(report);
         std::fputs(out.c_str(), stdout);
         return 0;
-    } catch (const SceneError& e) {
-        std::fputs(format_scene_error(e).c_str(), stderr);
-        return kExitBadInput;
-    } catch (const std::bad_alloc&) {
-        std::fputs("glint: error: out of memory: the scene is too large for this machine\n",
-                   stderr);
-        return kExitFailure;
-    } catch (const std::exception& e) {
-        std::fprintf(stderr, "glint: error: %s\n", e.what());
-        return kExitFailure;
-    }
+    });
 }
 
 }  // namespace glint::cli

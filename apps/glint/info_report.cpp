@@ -5,8 +5,8 @@
 #include <cstdarg>
 #include <cstdio>
 
-#include "glint/render/memory_estimate.h"
 #include "glint/render/json_string.h"
+#include "glint/render/memory_estimate.h"
 
 namespace glint::cli {
 

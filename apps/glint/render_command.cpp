@@ -10,20 +10,18 @@
 #include <csignal>
 #include <cstdio>
 #include <filesystem>
-#include <new>
 #include <string>
 #include <utility>
 
+#include "command_errors.h"
 #include "glint/image/atomic_file.h"
 #include "glint/image/file_io.h"
-#include "glint/image/image_error.h"
 #include "glint/image/image_io.h"
 #include "glint/render/memory_estimate.h"
 #include "glint/render/render.h"
 #include "glint/render/resume_file.h"
 #include "glint/render/world.h"
 #include "glint/scene/load_scene.h"
-#include "glint/scene/scene_error.h"
 #include "output_path.h"
 #include "progress.h"
 #include "stats_json.h"
@@ -37,8 +35,6 @@ namespace glint::cli {
 
 namespace {
 
-constexpr int kExitFailure = 1;
-constexpr int kExitBadInput = 2;
 constexpr int kExitInterrupted = 130;
 
 // From here on SIGINT and SIGTERM are ignored: the render is over and glint only writes its
@@ -159,7 +155,7 @@ void save_progress(const std::filesystem::path& partial, const std::filesystem::
 int run_render(const RenderCommand& command) {
     const std::string output =
         command.output.empty() ? default_output(command.scene) : command.output;
-    try {
+    return reporting_errors([&] {
         // Before loading: a bad output path should fail at once, not after the whole render.
         if (const auto reason = unwritable_image_reason(output)) throw UsageError{*reason};
         if (!command.stats_file.empty()) {
@@ -260,28 +256,7 @@ int run_render(const RenderCommand& command) {
         }
         if (!command.quiet) print_summary(output, s, result);
         return 0;
-    } catch (const SceneError& e) {
-        std::fputs(format_scene_error(e).c_str(), stderr);
-        return kExitBadInput;
-    } catch (const UsageError& e) {
-        std::fprintf(stderr, "glint: error: %s\n", e.message.c_str());
-        return kExitBadInput;
-    } catch (const ResumeError& e) {
-        std::fprintf(stderr, "glint: error: %s\n", e.what());
-        return kExitBadInput;
-    } catch (const ImageError& e) {
-        std::fprintf(stderr, "glint: error: %s\n", e.what());
-        return kExitFailure;
-    } catch (const std::bad_alloc&) {
-        // Its what() is only "std::bad_alloc", which tells a user nothing.
-        std::fputs(
-            "glint: error: out of memory: the scene or image is too large for this machine\n",
-            stderr);
-        return kExitFailure;
-    } catch (const std::exception& e) {
-        std::fprintf(stderr, "glint: error: %s\n", e.what());
-        return kExitFailure;
-    }
+    });
 }
 
 }  // namespace glint::cli
