@@ -222,6 +222,27 @@ TEST(Explain, SnellsLawValuesAtASurface) {
     EXPECT_EQ(eye.branches[0].k, 0.9f);
 }
 
+// A hit on a mesh names its triangle, in the tree and in the text.
+TEST(Explain, AMeshHitNamesItsTriangle) {
+    const Scene scene = small("scenes/features/meshes.yaml", 1);
+    const World world(scene);
+    int meshes = 0;
+    for (int y = 0; y < scene.settings.height; ++y)
+        for (int x = 0; x < scene.settings.width; ++x) {
+            const RayTree tree = explain(world, {x, y, 0, 0});
+            const RayNode& eye = tree.nodes[0];
+            // The floor is a plane; every other object is a mesh, placed by a transform.
+            EXPECT_EQ(eye.triangle.has_value(), eye.stop != StopReason::missed && eye.object > 0);
+            if (!eye.triangle) continue;
+            ++meshes;
+            const std::string text = ray_tree_text(tree);
+            EXPECT_NE(text.find("(transformed, triangle " + std::to_string(*eye.triangle) + ")"),
+                      std::string::npos)
+                << text;
+        }
+    EXPECT_GT(meshes, 0);
+}
+
 // JSON writes every float with 9 significant digits, so the sample read back is the same float.
 TEST(Explain, JsonCarriesTheSampleExactlyAndDotIsAGraph) {
     const Scene scene = small("scenes/distributed-showcase.yaml", 4);

@@ -86,6 +86,7 @@ struct RayNode {
     // The hit (when not missed).
     float t = 0;
     std::uint32_t object = 0;
+    std::optional<std::uint32_t> triangle;  // of a mesh, its index in the mesh
     std::string shape, material;
     Point3 point;
     Vector3 geometric_normal, shading_normal;  // turned towards the ray

@@ -100,8 +100,10 @@ private:
             line(in, "contributes " + read(contribution(n)) + " to the sample");
             return;
         }
-        line(in, "hits object " + std::to_string(n.object) + " (" + n.shape + "), material \"" +
-                     n.material + "\", at t = " + read(n.t));
+        const std::string triangle =
+            n.triangle ? ", triangle " + std::to_string(*n.triangle) : std::string();
+        line(in, "hits object " + std::to_string(n.object) + " (" + n.shape + triangle +
+                     "), material \"" + n.material + "\", at t = " + read(n.t));
         line(in + 1, "point " + read(n.point) + ", normal " + read(n.geometric_normal) +
                          (n.shading_normal == n.geometric_normal
                               ? ""
@@ -275,6 +277,7 @@ std::string node_json(const RayTree& tree, int index) {
     } else {
         Fields hit;
         hit.add("t", exact(n.t)).add("object", std::to_string(n.object));
+        hit.add("triangle", n.triangle ? std::to_string(*n.triangle) : "null");
         hit.add("shape", json_string(n.shape)).add("material", json_string(n.material));
         hit.add("point", exact(n.point)).add("geometric_normal", exact(n.geometric_normal));
         hit.add("shading_normal", exact(n.shading_normal));

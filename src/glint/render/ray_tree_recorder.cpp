@@ -48,7 +48,12 @@ void RayTreeRecorder::hit(const SurfaceContext& c, const Hit& hit) {
     const Material& m = *c.material;
     n.t = hit.shape_hit.t;
     n.object = hit.primitive;
-    n.shape = std::string(shape_name(world_.primitives()[hit.primitive].shape));
+    const Shape& shape = world_.primitives()[hit.primitive].shape;
+    n.shape = std::string(shape_name(shape));
+    // A placed mesh passes its triangle's index up through its transforms.
+    const Shape* inner = &shape;
+    while (const auto* placed = std::get_if<Transformed>(inner)) inner = placed->shape.get();
+    if (std::holds_alternative<TriangleMesh>(*inner)) n.triangle = hit.shape_hit.part;
     n.material = m.name;
     n.point = c.sp.p;
     n.geometric_normal = to_vector(c.ng);
