@@ -18,6 +18,7 @@
 #include <thread>
 #include <vector>
 
+#include "common/under_sanitizer.h"
 #include "glint/image/image_io.h"
 #include "glint/math/sanitizer_build.h"
 
@@ -762,6 +763,10 @@ objects:
         << explained.out;
 }
 
+// Samples per pixel of the renders these tests stop: 16 passes, or 4 under a sanitizer, which
+// makes each pass slow enough to be stopped halfway.
+constexpr int kResumeSpp = testing::kUnderSanitizer ? 64 : 256;
+
 class Resume : public Cli {
 protected:
     std::vector<std::string> args(const std::vector<std::string>& more = {},
@@ -769,7 +774,7 @@ protected:
         std::vector<std::string> a = {
             "render",  std::string(GLINT_SOURCE_DIR) + "/scenes/distributed-showcase.yaml",
             "--width", "120",
-            "--spp",   "256",
+            "--spp",   std::to_string(kResumeSpp),
             "--seed",  "3",
             "-o",      (dir_ / output).string()};
         a.insert(a.end(), more.begin(), more.end());
@@ -854,7 +859,7 @@ TEST_F(Resume, ResumeFileOfOtherSettingsIsRefusedAndAMissingOneIsAnError) {
     const std::string saved = slurp(dir_ / "out.png.resume");
     for (const auto& [option, message] :
          {std::pair<std::vector<std::string>, std::string>{{"--seed", "4"}, "for seed 3, not 4"},
-          {{"--spp", "128"}, "for 256 samples per pixel, not 128"},
+          {{"--spp", "128"}, "for " + std::to_string(kResumeSpp) + " samples per pixel, not 128"},
           {{"--width", "100"}, "for an image of 120x68, not 100x56"},
           {{"--filter", "box"}, "not a box filter"}}) {
         std::vector<std::string> changed = args({"--resume"});
@@ -892,7 +897,7 @@ TEST_F(Resume, OnePassRenderStopsAtTheFirstCtrlCAndResumesExactly) {
     // Whitted's single sample: one pass, which the first Ctrl-C does not wait for.
     const std::vector<std::string> whitted = {
         "render",    std::string(GLINT_SOURCE_DIR) + "/scenes/showcase.yaml",
-        "--width",   "1200",
+        "--width",   testing::kUnderSanitizer ? "400" : "1200",
         "--threads", "1"};
     std::vector<std::string> reference = whitted, resume = whitted;
     reference.insert(reference.end(), {"-q", "-o", (dir_ / "reference.png").string()});
