@@ -53,9 +53,10 @@ void check_numbers(const TextLines& lines, std::size_t line, const std::vector<T
     }
 }
 
-// One index of a face corner ("12", "-1"); kind is "vertex", "texture coordinate" or "normal".
+// One index of a corner ("12", "-1") of an element ("face", "line", "point"); kind is "vertex",
+// "texture coordinate" or "normal".
 void check_index(const TextLines& lines, std::size_t line, std::string_view text, int column,
-                 const char* kind, long long preceding, long long total) {
+                 std::string_view element, const char* kind, long long preceding, long long total) {
     const auto index = parse_integer(text);
     const int span = std::max(1, int(text.size()));
     if (!index) {
@@ -68,20 +69,24 @@ void check_index(const TextLines& lines, std::size_t line, std::string_view text
     }
     if (*index > total) {
         throw lines.error_at(line, column, span,
-                             "face refers to " + std::string(kind) + " " + std::to_string(*index) +
-                                 ", but the file has " + std::to_string(total));
+                             std::string(element) + " refers to " + std::string(kind) + " " +
+                                 std::to_string(*index) + ", but the file has " +
+                                 std::to_string(total));
     }
     if (*index < 0 && -*index > preceding) {
         throw lines.error_at(line, column, span,
-                             "face refers to " + std::string(kind) + " " + std::to_string(*index) +
-                                 " (counted back), but only " + std::to_string(preceding) +
-                                 " come before it");
+                             std::string(element) + " refers to " + std::string(kind) + " " +
+                                 std::to_string(*index) + " (counted back), but only " +
+                                 std::to_string(preceding) + " come before it");
     }
 }
 
-void check_face(const TextLines& lines, std::size_t line, const std::vector<Token>& tokens,
-                const Counts& before, const Counts& total) {
-    if (tokens.size() < 4) {
+// A face (f), polyline (l) or point set (p): its corners' indices, and at least 3 for a face.
+void check_element(const TextLines& lines, std::size_t line, const std::vector<Token>& tokens,
+                   const Counts& before, const Counts& total) {
+    const char kind = tokens[0].text.front();
+    const std::string_view element = kind == 'f' ? "face" : kind == 'l' ? "line" : "point";
+    if (kind == 'f' && tokens.size() < 4) {
         const Token& last = tokens.back();
         throw lines.error_at(
             line, tokens.front().column,
@@ -101,13 +106,15 @@ void check_face(const TextLines& lines, std::size_t line, const std::vector<Toke
                 static const char* kinds[] = {"vertex", "texture coordinate", "normal"};
                 const long long preceding[] = {before.v, before.vt, before.vn};
                 const long long totals[] = {total.v, total.vt, total.vn};
-                check_index(lines, line, index, column, kinds[part], preceding[part], totals[part]);
+                check_index(lines, line, index, column, element, kinds[part], preceding[part],
+                            totals[part]);
             }
             if (slash == t.text.size()) break;
             start = slash + 1;
             if (part == 2) {
                 throw lines.error_at(line, t.column, int(t.text.size()),
-                                     "face corner " + in_quotes(t.text) + " has more than 3 parts");
+                                     std::string(element) + " corner " + in_quotes(t.text) +
+                                         " has more than 3 parts");
             }
         }
     }
@@ -209,9 +216,11 @@ ObjCheck validate_obj(const std::filesystem::path& file, std::string_view text,
         } else if (key == "vn") {
             check_numbers(lines, n, tokens, 1, 3, "normal");
             ++before.vn;
-        } else if (key == "f" || key == "fo") {
-            check_face(lines, n, tokens, before, total);
-            ++faces;
+        } else if (key.front() == 'f' || key.front() == 'l' || key.front() == 'p') {
+            // Assimp reads every line that starts with f, l or p as a face, polyline or points
+            // ("f1 2 3" and "lod 2" too), and leaks what it built when an index is out of range.
+            check_element(lines, n, tokens, before, total);
+            if (key.front() == 'f') ++faces;
         } else if (key == "mtllib") {
             if (tokens.size() < 2) {
                 throw lines.error_at(n, tokens[0].column, 6, "mtllib names no file");

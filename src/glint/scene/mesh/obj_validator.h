@@ -11,14 +11,15 @@
 
 namespace glint {
 
-// Scans v, vt, vn and f lines and mtllib/usemtl, and the MTL files' colour, number and map_Kd
-// lines. Throws SceneError at the first bad one: a non-numeric or non-finite coordinate, a face
-// with fewer than 3 vertices, a face index that is 0 or out of range (positive indices against
+// Scans v, vt, vn, f, l and p lines (as Assimp does: every line that starts with f, l or p) and
+// mtllib/usemtl, and the MTL files' colour, number and map_Kd lines. Throws SceneError at the
+// first bad one: a non-numeric or non-finite coordinate, a face with fewer than 3 vertices, an
+// index of a face, polyline or points that is 0 or out of range (positive indices against
 // the file's total, negative ones against the elements before the face, as Assimp resolves
 // them), a missing MTL file, a missing texture, an MTL file or texture outside the sandbox.
 // Returns what the loader needs besides: warnings
 // (e.g. usemtl of an unknown material), the MTL files and the undefined material names. Everything
-// else (groups, lines, points, smoothing groups) passes unchecked.
+// else (groups, smoothing groups) passes unchecked.
 struct ObjCheck {
     std::vector<std::string> warnings;
     std::vector<std::filesystem::path> material_libraries;  // the MTL files, as found
