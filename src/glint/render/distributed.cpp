@@ -42,8 +42,10 @@ template <bool kRecord>
 Color DistributedIntegrator::trace_ray(const Ray& ray, int depth, float weight,
                                        SampleStream& stream, RayStats& stats,
                                        const MediumStack& media) {
-    if constexpr (kRecord) return trace_recorded(ray, depth, weight, stream, stats, media);
-    return shade<false>(ray, depth, weight, stream, stats, media);
+    if constexpr (kRecord)
+        return trace_recorded(ray, depth, weight, stream, stats, media);
+    else
+        return shade<false>(ray, depth, weight, stream, stats, media);
 }
 
 // Out of line: the renderer's code stays as small as it was without a recorder.

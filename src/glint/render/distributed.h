@@ -12,8 +12,8 @@
 #include "glint/math/color.h"
 #include "glint/math/ray.h"
 #include "glint/render/medium_stack.h"
+#include "glint/render/ray_recorder.h"
 #include "glint/render/ray_stats.h"
-#include "glint/render/ray_tree_recorder.h"
 #include "glint/render/shadow_feelers.h"
 #include "glint/render/world.h"
 #include "glint/sampling/sampler.h"
@@ -34,8 +34,9 @@ public:
     Color trace(const Ray& ray, int depth, float weight, SampleStream& stream, RayStats& stats,
                 const MediumStack& media = kVacuum);
 
-    // Records every ray it traces from now on into `recorder` (glint explain); null stops.
-    void record_into(RayTreeRecorder* recorder) { recorder_ = recorder; }
+    // Records every ray it traces from now on into `recorder` (glint explain, output variables);
+    // null stops.
+    void record_into(RayRecorder* recorder) { recorder_ = recorder; }
 
 private:
     // A ray traced and told to the recorder.
@@ -56,7 +57,7 @@ private:
 
     const World& world_;
     ShadowFeelers feelers_;
-    RayTreeRecorder* recorder_ = nullptr;
+    RayRecorder* recorder_ = nullptr;
 };
 
 }  // namespace glint

@@ -28,7 +28,7 @@ enum class StopReason : std::uint8_t {
 };
 std::string_view stop_reason_name(StopReason reason);
 
-// A number or pair of numbers a sample drew, and what for ("pixel", "lens", "glossy lobe", ...).
+// A number or pair of numbers the camera drew for a sample, and what for ("pixel", "lens", "time").
 struct RandomDraw {
     std::string purpose;
     std::uint32_t dimension;

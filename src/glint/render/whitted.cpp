@@ -25,8 +25,10 @@ Color WhittedIntegrator::trace(const Ray& ray, int depth, float weight, RayStats
 template <bool kRecord>
 Color WhittedIntegrator::trace_ray(const Ray& ray, int depth, float weight, RayStats& stats,
                                    const MediumStack& media) {
-    if constexpr (kRecord) return trace_recorded(ray, depth, weight, stats, media);
-    return shade<false>(ray, depth, weight, stats, media);
+    if constexpr (kRecord)
+        return trace_recorded(ray, depth, weight, stats, media);
+    else
+        return shade<false>(ray, depth, weight, stats, media);
 }
 
 // Out of line: the renderer's code stays as small as it was without a recorder.
