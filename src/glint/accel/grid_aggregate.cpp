@@ -7,6 +7,7 @@
 
 #include "glint/accel/mailbox.h"
 #include "glint/accel/rounding_margin.h"
+#include "glint/geometry/traversal_counters.h"
 
 namespace glint {
 
@@ -173,6 +174,7 @@ std::optional<Hit> GridAggregate::closest_hit(const Ray& ray, Interval t_range,
 
     Mailbox mailbox;
     walk_grid(layout_, ray, t_range, [&](std::uint32_t cell, Interval cell_t) {
+        count_nodes();
         for (std::uint32_t i = cell_offsets_[cell]; i < cell_offsets_[cell + 1]; ++i) {
             const std::uint32_t index = cell_primitives_[i];
             if (mailbox.first_visit(index)) try_primitive(index);
@@ -195,6 +197,7 @@ bool GridAggregate::any_hit(const Ray& ray, Interval t_range, std::uint32_t ray_
     bool found = false;
     Mailbox mailbox;
     walk_grid(layout_, ray, t_range, [&](std::uint32_t cell, Interval) {
+        count_nodes();
         for (std::uint32_t i = cell_offsets_[cell]; i < cell_offsets_[cell + 1]; ++i) {
             const std::uint32_t index = cell_primitives_[i];
             if (mailbox.first_visit(index) && hits(index)) {

@@ -8,6 +8,7 @@
 
 #include "glint/accel/mailbox.h"
 #include "glint/accel/rounding_margin.h"
+#include "glint/geometry/traversal_counters.h"
 
 namespace glint {
 
@@ -224,6 +225,7 @@ void KdTreeAggregate::walk(const Ray& ray, Interval t_range, VisitLeaf&& visit_l
     float t_min = inside->min, t_max = inside->max;
     for (;;) {
         const KdNode& node = nodes_[index];
+        count_nodes();
         if (!node.is_leaf()) {
             const int axis = node.axis();
             const float origin = ray.origin[axis], d = ray.direction[axis];

@@ -2,6 +2,8 @@
 // the kd-tree and the list.
 #include "glint/accel/primitive_refs.h"
 
+#include "glint/geometry/traversal_counters.h"
+
 namespace glint {
 
 std::size_t reference_count(const Shape& shape) {
@@ -40,6 +42,7 @@ std::optional<ShapeHit> PrimitiveRefs::intersect(std::uint32_t i, const Ray& ray
     const PrimitiveRef r = refs_[i];
     const Shape& shape = primitives_[r.primitive].shape;
     if (r.triangle == kWholePrimitive) return glint::intersect(shape, ray, t_range);
+    count_primitives();
     return intersect_triangle(*std::get<TriangleMesh>(shape).data, r.triangle, ray, t_range);
 }
 

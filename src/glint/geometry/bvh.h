@@ -11,6 +11,7 @@
 #include <span>
 #include <vector>
 
+#include "glint/geometry/traversal_counters.h"
 #include "glint/math/bounds.h"
 #include "glint/math/huge_page_allocator.h"
 #include "glint/math/interval.h"
@@ -125,6 +126,7 @@ std::optional<float> bvh_closest_hit(const Bvh& bvh, const Ray& ray, Interval t_
     std::optional<float> nearest;
     for (;;) {
         const BvhNode& node = bvh.nodes[node_index];
+        count_nodes();
         if (slab_hit(node.bounds, r, t_range.min, t_range.max)) {
             if (node.is_leaf()) {
                 for (std::uint32_t i = 0; i < node.count; ++i) {
@@ -160,6 +162,7 @@ bool bvh_any_hit(const Bvh& bvh, const Ray& ray, Interval t_range, Visit&& visit
     std::uint32_t node_index = 0;
     for (;;) {
         const BvhNode& node = bvh.nodes[node_index];
+        count_nodes();
         if (slab_hit(node.bounds, r, t_range.min, t_range.max)) {
             if (node.is_leaf()) {
                 for (std::uint32_t i = 0; i < node.count; ++i) {

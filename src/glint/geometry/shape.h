@@ -4,6 +4,7 @@
 
 #include <optional>
 #include <string_view>
+#include <type_traits>
 #include <variant>
 
 #include "glint/geometry/box.h"
@@ -22,6 +23,7 @@
 #include "glint/geometry/surface_point.h"
 #include "glint/geometry/torus.h"
 #include "glint/geometry/transformed.h"
+#include "glint/geometry/traversal_counters.h"
 #include "glint/geometry/triangle.h"
 #include "glint/geometry/triangle_mesh.h"
 
@@ -40,7 +42,14 @@ inline Bounds3 bounds(const Shape& shape) {
 }
 
 inline std::optional<ShapeHit> intersect(const Shape& shape, const Ray& ray, Interval t_range) {
-    return std::visit([&](const auto& s) { return s.intersect(ray, t_range); }, shape);
+    return std::visit(
+        [&](const auto& s) {
+            // A mesh's block tests count its triangles instead.
+            if constexpr (!std::is_same_v<std::decay_t<decltype(s)>, TriangleMesh>)
+                count_primitives();
+            return s.intersect(ray, t_range);
+        },
+        shape);
 }
 
 // Shapes whose uv is cheap take no Uv and always compute it.

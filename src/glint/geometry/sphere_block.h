@@ -3,11 +3,13 @@
 // exactly Sphere::intersect's for that sphere.
 #pragma once
 
+#include <bit>
 #include <cstdint>
 #include <optional>
 
 #include "glint/geometry/block_hit.h"
 #include "glint/geometry/sphere.h"
+#include "glint/geometry/traversal_counters.h"
 #include "glint/math/interval.h"
 #include "glint/math/ray.h"
 
@@ -119,6 +121,7 @@ public:
     template <bool kSimd, typename Accept>
     [[gnu::always_inline]] BlockHit nearest(const SphereBlock& b, Interval t_range,
                                             Accept&& accept) const {
+        if constexpr (kCountTraversal) count_primitives(unsigned(std::popcount(used_lanes(b))));
 #ifdef GLINT_SPHERE_BLOCK_HAS_SIMD
         if constexpr (kSimd) {
             sphere_simd::Float4 t;
@@ -137,6 +140,7 @@ public:
     // Whether an accepted lane is hit within t_range.
     template <bool kSimd, typename Accept>
     [[gnu::always_inline]] bool any(const SphereBlock& b, Interval t_range, Accept&& accept) const {
+        if constexpr (kCountTraversal) count_primitives(unsigned(std::popcount(used_lanes(b))));
 #ifdef GLINT_SPHERE_BLOCK_HAS_SIMD
         if constexpr (kSimd) {
             sphere_simd::Float4 t;

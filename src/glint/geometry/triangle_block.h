@@ -3,6 +3,7 @@
 // Triangle4). Every lane's answer is exactly intersect_watertight's for that triangle.
 #pragma once
 
+#include <bit>
 #include <cstddef>
 #include <cstdint>
 #include <cstring>
@@ -10,6 +11,7 @@
 #include <optional>
 
 #include "glint/geometry/block_hit.h"
+#include "glint/geometry/traversal_counters.h"
 #include "glint/geometry/watertight_triangle.h"
 #include "glint/math/interval.h"
 #include "glint/math/ray.h"
@@ -176,6 +178,7 @@ public:
     template <bool kSimd, typename Accept>
     [[gnu::always_inline]] BlockHit nearest(const TriangleBlock& b, Interval t_range,
                                             Accept&& accept) const {
+        if constexpr (kCountTraversal) count_primitives(unsigned(std::popcount(used_lanes(b))));
 #ifdef GLINT_TRIANGLE_BLOCK_HAS_SIMD
         if constexpr (kSimd) {
             block_simd::Float4 t, u, v;
@@ -195,6 +198,7 @@ public:
     template <bool kSimd, typename Accept>
     [[gnu::always_inline]] bool any(const TriangleBlock& b, Interval t_range,
                                     Accept&& accept) const {
+        if constexpr (kCountTraversal) count_primitives(unsigned(std::popcount(used_lanes(b))));
 #ifdef GLINT_TRIANGLE_BLOCK_HAS_SIMD
         if constexpr (kSimd) {
             block_simd::Float4 t, u, v;

@@ -92,6 +92,7 @@ template <typename Kernel, typename Visit>
         if ((child & kWideLeaf) == 0) {
             const WideBvhNode& node = bvh.nodes[child];
             alignas(32) float t_near[kWideBvhWidth];
+            count_nodes();
             const unsigned mask = Kernel::test(node, r, t_range.min, t_range.max, t_near);
             if (mask != 0) {
                 descend(node, mask, t_near, stack.data(), top, child, count);
@@ -143,6 +144,7 @@ template <typename Kernel, typename Visit>
         if ((child & kWideLeaf) == 0) {
             const WideBvhNode& node = bvh.nodes[child];
             alignas(32) float t_near[kWideBvhWidth];
+            count_nodes();
             const unsigned mask = Kernel::test(node, r, t_range.min, t_range.max, t_near);
             if (mask != 0) {
                 descend_in_slot_order(node, mask, t_near, stack.data(), top, child, count);
