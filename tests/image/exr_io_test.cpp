@@ -13,6 +13,8 @@
 #include <string>
 #include <vector>
 
+#include "glint/image/image_error.h"
+#include "glint/image/image_io.h"
 #include "test_files.h"
 
 namespace glint {
@@ -50,6 +52,49 @@ TEST(Exr, WritesFloatRgbWithZipCompression) {
     const Imath::Box2i window = file.header().dataWindow();
     EXPECT_EQ(window.min, Imath::V2i(0, 0));
     EXPECT_EQ(window.max, Imath::V2i(3, 2));
+}
+
+TEST(Exr, LayersAreWrittenAsNamedChannelsBesideTheImage) {
+    const auto path = testing::fresh_test_dir() / "layers.exr";
+    const Image image(3, 2, Color(1, 2, 3));
+    Image depth(3, 2), normal(3, 2);
+    for (std::size_t i = 0; i < 6; ++i) {
+        depth.pixels[i] = Color::gray(float(i) + 0.25f);
+        normal.pixels[i] = {0, -1, float(i)};
+    }
+    const ExrLayer layers[] = {{"depth", {"Z"}, &depth}, {"normal", {"X", "Y", "Z"}, &normal}};
+    write_image(path, image, WriteOptions{.exr_layers = layers});
+
+    Imf::InputFile file(path.c_str());
+    std::vector<std::string> names;
+    for (auto c = file.header().channels().begin(); c != file.header().channels().end(); ++c)
+        names.push_back(c.name());
+    EXPECT_EQ(names, (std::vector<std::string>{"B", "G", "R", "depth.Z", "normal.X", "normal.Y",
+                                               "normal.Z"}));
+    std::vector<float> z(6), ny(6);
+    Imf::FrameBuffer frame;
+    frame.insert("depth.Z", Imf::Slice(Imf::FLOAT, reinterpret_cast<char*>(z.data()), sizeof(float),
+                                       3 * sizeof(float)));
+    frame.insert("normal.Z", Imf::Slice(Imf::FLOAT, reinterpret_cast<char*>(ny.data()),
+                                        sizeof(float), 3 * sizeof(float)));
+    file.setFrameBuffer(frame);
+    file.readPixels(0, 1);
+    for (std::size_t i = 0; i < 6; ++i) {
+        EXPECT_EQ(z[i], float(i) + 0.25f);
+        EXPECT_EQ(ny[i], float(i));
+    }
+    EXPECT_TRUE(same_bits(read_exr(path), image));  // the image itself reads as before
+}
+
+TEST(Exr, OnlyAnExrFileTakesLayers) {
+    const auto dir = testing::fresh_test_dir();
+    const Image image(2, 2), depth(2, 2);
+    const ExrLayer layers[] = {{"depth", {"Z"}, &depth}};
+    EXPECT_THROW(write_image(dir / "a.png", image, WriteOptions{.exr_layers = layers}), ImageError);
+    EXPECT_FALSE(std::filesystem::exists(dir / "a.png"));
+    const Image small(1, 2);
+    const ExrLayer wrong[] = {{"depth", {"Z"}, &small}};
+    EXPECT_THROW(write_image(dir / "b.exr", image, WriteOptions{.exr_layers = wrong}), ImageError);
 }
 
 TEST(Exr, ReadsHalfChannelsAnOffsetDataWindowAndZeroForAMissingChannel) {

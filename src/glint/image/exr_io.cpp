@@ -64,21 +64,30 @@ void check_exr_header(const std::filesystem::path& path) {
 
 }  // namespace
 
-void write_exr(const std::filesystem::path& path, const Image& image) {
+void write_exr(const std::filesystem::path& path, const Image& image,
+               std::span<const ExrLayer> layers) {
     check_image_shape(path, image);
+    for (const ExrLayer& layer : layers) {
+        if (layer.image->width != image.width || layer.image->height != image.height ||
+            layer.channels.empty() || layer.channels.size() > 3)
+            throw ImageError(path, "layer " + layer.name + " does not fit the image");
+    }
     try {
         Imf::Header header(image.width, image.height);
         header.compression() = Imf::ZIP_COMPRESSION;
         Imf::FrameBuffer frame;
         // OpenEXR's slices take a non-const pointer for reading and writing alike; writing
         // only reads through it.
-        char* base = reinterpret_cast<char*>(const_cast<Color*>(image.pixels.data()));
-        for (int c = 0; c < 3; ++c) {
-            header.channels().insert(kChannels[c], Imf::Channel(Imf::FLOAT));
-            frame.insert(kChannels[c],
-                         Imf::Slice(Imf::FLOAT, base + c * sizeof(float), sizeof(Color),
-                                    sizeof(Color) * std::size_t(image.width)));
-        }
+        const auto add = [&](const std::string& name, const Image& from, int c) {
+            char* base = reinterpret_cast<char*>(const_cast<Color*>(from.pixels.data()));
+            header.channels().insert(name, Imf::Channel(Imf::FLOAT));
+            frame.insert(name, Imf::Slice(Imf::FLOAT, base + c * sizeof(float), sizeof(Color),
+                                          sizeof(Color) * std::size_t(from.width)));
+        };
+        for (int c = 0; c < 3; ++c) add(kChannels[c], image, c);
+        for (const ExrLayer& layer : layers)
+            for (std::size_t c = 0; c < layer.channels.size(); ++c)
+                add(layer.name + "." + layer.channels[c], *layer.image, int(c));
         Imf::OutputFile file(path.c_str(), header);
         file.setFrameBuffer(frame);
         file.writePixels(image.height);

@@ -32,6 +32,8 @@ void write_image(const std::filesystem::path& path, const Image& image,
                  const WriteOptions& options) {
     const ImageFormat format = format_or_throw(path);
     check_image_shape(path, image);  // before a temporary file exists
+    if (format != ImageFormat::exr && !options.exr_layers.empty())
+        throw ImageError(path, "only an EXR file holds layers beside the image");
     write_file_atomically(path, [&](const std::filesystem::path& temporary) {
         switch (format) {
             case ImageFormat::png:
@@ -42,7 +44,7 @@ void write_image(const std::filesystem::path& path, const Image& image,
             case ImageFormat::pfm:
                 return write_pfm(temporary, image);
             case ImageFormat::exr:
-                return write_exr(temporary, image);
+                return write_exr(temporary, image, options.exr_layers);
         }
     });
 }

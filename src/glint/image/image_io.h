@@ -3,13 +3,17 @@
 #pragma once
 
 #include <filesystem>
+#include <span>
 
+#include "glint/image/exr_io.h"
 #include "glint/image/image.h"
 
 namespace glint {
 
 struct WriteOptions {
     bool ppm_ascii = false;  // .ppm as plain "P3" text instead of binary "P6"
+    // Layers beside the image (output variables): .exr only, other formats throw ImageError.
+    std::span<const ExrLayer> exr_layers;
 };
 
 // Throws ImageError naming `path` for an unknown extension, an image whose size is not
