@@ -68,6 +68,12 @@ void add_render_command(CLI::App& app, glint::cli::RenderCommand& c) {
     render->add_option("--samples-image", c.samples_image,
                        "Also write the samples each pixel took here, as grey from none (black) "
                        "to the most (white); .exr and .pfm keep the counts themselves");
+    render->add_option("--aov", c.aovs,
+                       "Also write these output variables (comma-separated: depth, position, "
+                       "normal, albedo, uv, object, material, emission, ambient, diffuse, "
+                       "specular, reflected, refracted, tree_depth, samples, nodes, primitives; "
+                       "or contributions, surface, ids, cost, all): as layers of an .exr "
+                       "output, else as PNGs beside it with a colour map and a legend");
     render->add_flag("--ppm-ascii", c.ppm_ascii,
                      "Write .ppm images as ASCII (P3), not binary (P6)");
     render->add_flag("-q,--quiet", c.quiet, "No progress and no summary");

@@ -10,13 +10,17 @@
 #include <csignal>
 #include <cstdio>
 #include <filesystem>
+#include <stdexcept>
 #include <string>
 #include <utility>
+#include <vector>
 
 #include "command_errors.h"
 #include "glint/image/atomic_file.h"
 #include "glint/image/file_io.h"
+#include "glint/image/image_format.h"
 #include "glint/image/image_io.h"
+#include "glint/render/aov_picture.h"
 #include "glint/render/memory_estimate.h"
 #include "glint/render/render.h"
 #include "glint/render/resume_file.h"
@@ -58,10 +62,11 @@ std::string with_thousands(std::uint64_t n) {
 }
 
 // Refuses a render whose structures, film and images would not fit, before building them.
-void check_memory(const Scene& scene, AccelKind accel, const RenderCommand& c) {
+void check_memory(const Scene& scene, AccelKind accel, const RenderCommand& c, AovSet aovs) {
     const MemoryEstimate need = estimate_render_memory(
         scene, accel,
-        RenderExtras{.samples_image = !c.samples_image.empty(), .resuming = c.resume});
+        RenderExtras{
+            .samples_image = !c.samples_image.empty(), .resuming = c.resume, .aovs = aovs});
     const std::optional<std::uint64_t> room = c.max_memory ? c.max_memory : available_memory();
     if (!room || need.total() <= *room) return;
     const RenderSettings& s = scene.settings;
@@ -140,6 +145,48 @@ void write_stats(const std::string& file, const std::string& json) {
     });
 }
 
+// The output variables --aov asks for, refused where a render could not write them all.
+AovSet requested_aovs(const RenderCommand& c) {
+    if (c.aovs.empty()) return {};
+    AovSet set;
+    try {
+        set = parse_aov_list(c.aovs);
+    } catch (const std::invalid_argument& e) {
+        throw UsageError{std::string("--aov: ") + e.what()};
+    }
+    if (c.resume || c.checkpoint_minutes)
+        throw UsageError{
+            "--aov cannot be combined with --resume or --checkpoint: a resume file "
+            "does not hold the output variables"};
+    return set;
+}
+
+bool is_exr(const std::filesystem::path& path) {
+    return format_from_extension(path) == ImageFormat::exr;
+}
+
+// Where a variable's PNG goes when the output is not an EXR file: "out.png" gives
+// "out.depth.png".
+std::filesystem::path aov_png_path(const std::filesystem::path& output, Aov aov) {
+    std::filesystem::path p = output;
+    p.replace_filename(output.stem().string() + "." + std::string(aov_info(aov).name) + ".png");
+    return p;
+}
+
+// The image, with the output variables as its layers for an EXR output; else the image and a PNG
+// picture of each variable beside it.
+void write_image_and_aovs(const std::filesystem::path& output, const RenderResult& result,
+                          bool ppm_ascii) {
+    if (is_exr(output)) {
+        const std::vector<ExrLayer> layers = aov_exr_layers(result.aovs);
+        write_image(output, result.image, WriteOptions{.exr_layers = layers});
+        return;
+    }
+    write_image(output, result.image, WriteOptions{ppm_ascii});
+    for (const AovImage& layer : result.aovs)
+        write_image(aov_png_path(output, layer.aov), aov_picture(layer), WriteOptions{});
+}
+
 // The image so far beside the output, and the state to continue from: at a checkpoint and when
 // interrupted. The image first: a resume file always has an image of at most its samples.
 // The image so far (the state's film resolved) and the state.
@@ -166,13 +213,18 @@ int run_render(const RenderCommand& command) {
             if (const auto reason = unwritable_image_reason(command.samples_image))
                 throw UsageError{*reason};
         }
+        const AovSet aovs = requested_aovs(command);
+        if (!is_exr(output))
+            for (const Aov a : aovs.list())
+                if (const auto reason = unwritable_image_reason(aov_png_path(output, a).string()))
+                    throw UsageError{*reason};
         Scene scene = load_scene(command.scene, command.reading.load_options());
         for (const std::string& warning : scene.warnings)
             std::fprintf(stderr, "glint: warning: %s\n", warning.c_str());
         apply_image_options(command.image, scene.settings);
         const auto accel = accel_from_name(command.accel);
         if (!accel) throw UsageError{"unknown acceleration structure \"" + command.accel + "\""};
-        check_memory(scene, *accel, command);
+        check_memory(scene, *accel, command, aovs);
         ShadowAcceleration shadows;
         shadows.light_buffer = command.shadow_accel != "none";
         shadows.occluder_cache = command.shadow_accel == "light-buffer+cache";
@@ -184,6 +236,7 @@ int run_render(const RenderCommand& command) {
         options.threads = command.threads;
         options.seed = command.seed;
         options.record_samples_taken = !command.samples_image.empty();
+        options.aovs = aovs;
         const RenderSettings& s = world.settings();
         const RenderIdentity identity = identify_render(command.scene, s, options, GLINT_VERSION);
         const std::filesystem::path resume = resume_path(output),
@@ -219,7 +272,7 @@ int run_render(const RenderCommand& command) {
         // stale.
         const std::string written = result.complete ? output : partial.string();
         if (result.complete) {
-            write_image(output, result.image, WriteOptions{command.ppm_ascii});
+            write_image_and_aovs(output, result, command.ppm_ascii);
             std::error_code ignored;
             std::filesystem::remove(resume, ignored);
             std::filesystem::remove(partial, ignored);

@@ -24,6 +24,7 @@ struct RenderCommand {
     bool ppm_ascii = false;
     std::string stats_file;     // empty: none
     std::string samples_image;  // empty: none
+    std::string aovs;           // --aov's list of output variables; empty: none
     SceneReadOptions reading;   // --allow-read, --max-file-size
     // The most memory the render may take beyond the loaded scene; none: what the machine has
     // available. Checked against an estimate before anything is built.

@@ -763,6 +763,43 @@ objects:
         << explained.out;
 }
 
+// Output variables: PNG pictures beside a PNG image, layers of an EXR one; bad lists and
+// combinations are usage errors that write nothing.
+TEST_F(Cli, AovsArePngsBesideTheImageOrLayersOfItsExr) {
+    const std::string scene = std::string(GLINT_SOURCE_DIR) + "/scenes/showcase.yaml";
+    const Outcome png =
+        run_glint("render '" + scene + "' -q --width 40 --height 30 -o out.png --aov depth,ids");
+    ASSERT_EQ(png.exit_code, 0) << png.err;
+    for (const char* name : {"out.png", "out.depth.png", "out.object.png", "out.material.png"})
+        EXPECT_TRUE(fs::exists(dir_ / name)) << name;
+    const Image depth = read_image(dir_ / "out.depth.png");
+    EXPECT_EQ(depth.width, 40);
+    EXPECT_EQ(depth.height, 30 + 13);  // the legend's strip below
+
+    const Outcome exr = run_glint("render '" + scene +
+                                  "' -q --width 40 --height 30 -o out.exr --aov normal,samples");
+    ASSERT_EQ(exr.exit_code, 0) << exr.err;
+    const std::string bytes = slurp(dir_ / "out.exr");
+    for (const char* channel : {"normal.X", "normal.Y", "normal.Z", "samples.Y"})
+        EXPECT_NE(bytes.find(channel), std::string::npos) << channel;
+    EXPECT_FALSE(fs::exists(dir_ / "out.normal.png"));
+}
+
+TEST_F(Cli, BadAovListsAreUsageErrors) {
+    const std::string scene = std::string(GLINT_SOURCE_DIR) + "/scenes/showcase.yaml";
+    const Outcome unknown = run_glint("render '" + scene + "' -q -o out.png --aov depth,colour");
+    EXPECT_EQ(unknown.exit_code, 2);
+    EXPECT_NE(unknown.err.find("--aov: unknown output variable 'colour'"), std::string::npos)
+        << unknown.err;
+    const Outcome resumed =
+        run_glint("render '" + scene + "' -q -o out.png --aov depth --checkpoint 5");
+    EXPECT_EQ(resumed.exit_code, 2);
+    EXPECT_NE(resumed.err.find("cannot be combined with --resume or --checkpoint"),
+              std::string::npos)
+        << resumed.err;
+    EXPECT_FALSE(fs::exists(dir_ / "out.png"));
+}
+
 // Samples per pixel of the renders these tests stop: 16 passes, or 4 under a sanitizer, which
 // makes each pass slow enough to be stopped halfway.
 constexpr int kResumeSpp = testing::kUnderSanitizer ? 64 : 256;

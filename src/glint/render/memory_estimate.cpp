@@ -87,7 +87,17 @@ MemoryEstimate estimate_render_memory(const Scene& scene, AccelKind accel,
     // A resume file read holds the file's bytes and the state unpacked from them, each no larger
     // than the state (but for zlib's few bytes over on data it cannot pack).
     const std::uint64_t resume = extras.resuming ? 2 * state : 0;
-    e.film = pixels * (state + images + resume) + kFileBufferBytes;
+    // Each output variable: a film of the image's kind (an id per pixel instead for the ids),
+    // the layer resolved, and the copy written (an 8-bit one, or the EXR's floats).
+    std::uint64_t aovs = 0;
+    for (const Aov a : extras.aovs.list()) {
+        const AovKind kind = aov_info(a).kind;
+        aovs += kind == AovKind::id      ? sizeof(std::int32_t)
+                : kind == AovKind::pixel ? 0
+                                         : (one_pixel ? sizeof(BoxSum) : sizeof(PixelSum));
+        aovs += 2 * sizeof(Color);
+    }
+    e.film = pixels * (state + images + resume + aovs) + kFileBufferBytes;
     return e;
 }
 

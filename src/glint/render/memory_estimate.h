@@ -9,6 +9,7 @@
 #include <string>
 
 #include "glint/accel/make_aggregate.h"
+#include "glint/render/aov.h"
 #include "glint/scene/scene.h"
 
 namespace glint {
@@ -27,6 +28,7 @@ struct MemoryEstimate {
 struct RenderExtras {
     bool samples_image = false;  // writes the image of samples taken
     bool resuming = false;       // reads its state from a resume file first
+    AovSet aovs;                 // writes these output variables
 };
 
 // An upper estimate for `scene` (after any change to its settings) rendered with `accel`.

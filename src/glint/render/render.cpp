@@ -17,6 +17,8 @@
 #include <optional>
 #include <stdexcept>
 
+#include "glint/geometry/traversal_counters.h"
+#include "glint/render/aov_recorder.h"
 #include "glint/render/distributed.h"
 #include "glint/render/eye_sample.h"
 #include "glint/render/tiles.h"
@@ -45,6 +47,15 @@ void render_tile(const Tile& tile, Pass pass, const World& world, const Sampler&
     const int width = settings.width;
     Integrator integrator(world);  // one per tile: it holds per-thread caches
     FilmTile film_tile = state.film.make_tile(tile);
+    // Output variables come from a recorder on the integrator, which then runs its recording
+    // code; without them the integrator runs the renderer's own.
+    const bool aovs = !state.aovs.empty();
+    AovRecorder recorder(world);
+    std::optional<AovTile> aov_tile;
+    if (aovs) {
+        integrator.record_into(&recorder);
+        aov_tile = state.aovs.make_tile(tile);
+    }
     for (int y = tile.y0; y < tile.y1; ++y)
         for (int x = tile.x0; x < tile.x1; ++x) {
             const std::size_t pixel = std::size_t(y) * std::size_t(width) + std::size_t(x);
@@ -62,10 +73,21 @@ void render_tile(const Tile& tile, Pass pass, const World& world, const Sampler&
                     break;
                 SampleStream stream(patterns, std::uint32_t(s));
                 const EyeSample eye = eye_sample(camera, stream, x, y);
+                TraversalCounters before;
+                if (aovs) {
+                    recorder.start();
+                    before = traversal_counters;
+                }
                 const Color c = integrator.trace_eye_ray(eye.ray, stream, totals.rays);
                 if (is_valid_sample(c)) {
                     film_tile.add_sample(eye.film, c);
                     if (settings.adaptive) error.add(c);
+                    if (aovs) {
+                        AovSample a = recorder.sample();
+                        a.nodes = traversal_counters.nodes - before.nodes;
+                        a.primitives = traversal_counters.primitives - before.primitives;
+                        aov_tile->add(eye.film, x, y, s, a);
+                    }
                 } else {
                     totals.bad.add({x, y, s});
                 }
@@ -73,6 +95,7 @@ void render_tile(const Tile& tile, Pass pass, const World& world, const Sampler&
             taken = std::uint32_t(s);
         }
     state.film.merge(film_tile);
+    if (aovs) state.aovs.merge(*aov_tile);
 }
 
 // Renders the passes from state.next_pass on, until the last or a stop. Returns whether every
@@ -135,6 +158,14 @@ bool render_passes(const World& world, const RenderOptions& options, const std::
     return true;
 }
 
+// The samples each pixel took, in every channel.
+Image samples_image(const RenderState& state) {
+    Image image(state.width, state.height);
+    for (std::size_t i = 0; i < state.samples.size(); ++i)
+        image.pixels[i] = Color::gray(float(state.samples[i]));
+    return image;
+}
+
 }  // namespace
 
 int pass_size_of(const RenderSettings& settings, const RenderOptions& options) {
@@ -142,7 +173,7 @@ int pass_size_of(const RenderSettings& settings, const RenderOptions& options) {
 }
 
 RenderState initial_state(const RenderSettings& settings, const RenderOptions& options) {
-    return RenderState(settings, options.tile_size, pass_size_of(settings, options));
+    return RenderState(settings, options.tile_size, pass_size_of(settings, options), options.aovs);
 }
 
 RenderResult render(const World& world, const RenderOptions& options, RenderProgress* progress,
@@ -154,8 +185,9 @@ RenderResult render(const World& world, const RenderOptions& options, RenderProg
     if (!state) state = &fresh.emplace(initial_state(settings, options));
     if (state->width != settings.width || state->height != settings.height ||
         state->tiles_done.size() != tiles.size() ||
-        state->pass_size != pass_size_of(settings, options))
-        throw std::invalid_argument("render: the state is of another image, tile or pass size");
+        state->pass_size != pass_size_of(settings, options) || state->aovs.set() != options.aovs)
+        throw std::invalid_argument(
+            "render: the state is of another image, tile or pass size, or other output variables");
     if (progress) {
         const int passes = pass_count(settings.samples_per_pixel, state->pass_size);
         int done = state->next_pass * int(tiles.size());
@@ -179,10 +211,13 @@ RenderResult render(const World& world, const RenderOptions& options, RenderProg
             break;
     }
     result.image = state->film.resolve();
-    if (options.record_samples_taken) {
-        result.samples_taken = Image(settings.width, settings.height);
-        for (std::size_t i = 0; i < state->samples.size(); ++i)
-            result.samples_taken.pixels[i] = Color::gray(float(state->samples[i]));
+    if (options.record_samples_taken) result.samples_taken = samples_image(*state);
+    result.aovs = state->aovs.resolve();
+    if (options.aovs.has(Aov::samples)) {
+        // In Aov order: before the traversal counts, the only variables after it.
+        auto at = result.aovs.begin();
+        while (at != result.aovs.end() && at->aov < Aov::samples) ++at;
+        result.aovs.insert(at, {Aov::samples, samples_image(*state)});
     }
     result.rays = state->rays;
     result.bad_samples = state->bad_samples;

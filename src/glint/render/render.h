@@ -7,8 +7,10 @@
 #include <atomic>
 #include <cstdint>
 #include <functional>
+#include <vector>
 
 #include "glint/image/image.h"
+#include "glint/render/aov_films.h"
 #include "glint/render/film.h"
 #include "glint/render/ray_stats.h"
 #include "glint/render/render_state.h"
@@ -21,6 +23,7 @@ struct RenderOptions {
     int tile_size = 16;
     std::uint64_t seed = 0;
     bool record_samples_taken = false;  // fill RenderResult::samples_taken
+    AovSet aovs;                        // output variables to fill RenderResult::aovs with
     int pass_size = 0;                  // samples each pixel takes a pass; 0: samples_per_pass
     // Called on render()'s thread after each pass but the last, with the state so far (to save a
     // checkpoint, say); the render waits for it.
@@ -45,6 +48,8 @@ struct RenderResult {
     // Samples each pixel took, in every channel: the image of adaptive sampling's work. Empty
     // unless RenderOptions::record_samples_taken.
     Image samples_taken;
+    // The output variables asked for, in Aov order (`samples` is samples_taken).
+    std::vector<AovImage> aovs;
     RayStats rays;
     BadSamples bad_samples;
     double seconds = 0;    // wall time, earlier calls on the same state included

@@ -5,11 +5,13 @@
 
 namespace glint {
 
-RenderState::RenderState(const RenderSettings& settings, int tile_size, int pass_size_)
+RenderState::RenderState(const RenderSettings& settings, int tile_size, int pass_size_,
+                         AovSet aov_set)
     : width(settings.width),
       height(settings.height),
       pass_size(pass_size_),
       film(settings.width, settings.height, filter_of(settings)),
+      aovs(aov_set, settings.width, settings.height, filter_of(settings)),
       samples(std::size_t(settings.width) * settings.height, 0),
       tiles_done(make_tiles(settings.width, settings.height, tile_size).size(), 0) {
     if (settings.adaptive) errors.resize(samples.size());

@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "glint/render/aov_films.h"
 #include "glint/render/film.h"
 #include "glint/render/pixel_error.h"
 #include "glint/render/ray_stats.h"
@@ -27,12 +28,13 @@ inline int pass_count(int samples_per_pixel, int pass_size) {
 
 struct RenderState {
     // A render not yet started, of settings' image in tiles of tile_size, pass_size samples per
-    // pixel a pass.
-    RenderState(const RenderSettings& settings, int tile_size, int pass_size);
+    // pixel a pass, with films for the output variables `aovs`.
+    RenderState(const RenderSettings& settings, int tile_size, int pass_size, AovSet aovs = {});
 
     int width, height;
     int pass_size;
     Film film;
+    AovFilms aovs;  // none unless asked for; a resume file does not hold them
     // Samples each pixel has taken, row by row. Under adaptive sampling a pixel that took fewer
     // than the passes before offered has stopped.
     std::vector<std::uint32_t> samples;

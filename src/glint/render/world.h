@@ -68,6 +68,10 @@ public:
     const Material& material_of(std::uint32_t primitive) const {
         return materials_[material_of_[primitive]];
     }
+    // Its index among the scene's materials.
+    std::uint32_t material_index_of(std::uint32_t primitive) const {
+        return material_of_[primitive];
+    }
 
     // How far a secondary ray's origin is moved off the surface at p: a fixed fraction of the
     // larger of the scene's extent and p's own magnitude, since float rounding error grows with
