@@ -81,17 +81,21 @@ void check_index(const TextLines& lines, std::size_t line, std::string_view text
     }
 }
 
-// A face (f), polyline (l) or point set (p): its corners' indices, and at least 3 for a face.
+// A face (f), polyline (l) or point set (p): its corners' indices, and at least 3 for a face, 2
+// for a line and 1 for points (Assimp makes a mesh of none of a material's elements with fewer,
+// throws, and leaks it).
 void check_element(const TextLines& lines, std::size_t line, const std::vector<Token>& tokens,
                    const Counts& before, const Counts& total) {
     const char kind = tokens[0].text.front();
     const std::string_view element = kind == 'f' ? "face" : kind == 'l' ? "line" : "point";
-    if (kind == 'f' && tokens.size() < 4) {
+    const std::size_t least = kind == 'f' ? 3 : kind == 'l' ? 2 : 1;
+    if (tokens.size() - 1 < least) {
         const Token& last = tokens.back();
-        throw lines.error_at(
-            line, tokens.front().column,
-            last.column + int(last.text.size()) - tokens.front().column,
-            "face has " + std::to_string(tokens.size() - 1) + " vertices; a face needs at least 3");
+        throw lines.error_at(line, tokens.front().column,
+                             last.column + int(last.text.size()) - tokens.front().column,
+                             std::string(element) + " has " + std::to_string(tokens.size() - 1) +
+                                 (tokens.size() == 2 ? " vertex" : " vertices") + "; a " +
+                                 std::string(element) + " needs at least " + std::to_string(least));
     }
     for (std::size_t i = 1; i < tokens.size(); ++i) {
         const Token& t = tokens[i];
