@@ -33,11 +33,14 @@ void AovFilms::merge(const AovTile& tile) {
 }
 
 void AovTile::add(Point2 p, int x, int y, int sample, const AovSample& a) {
+    // The filter's weights once for every film: they would cost more than the rest.
+    const SampleFootprint footprint =
+        tiles_.empty() ? SampleFootprint{} : tiles_.front().second.footprint(p);
     for (auto& [aov, tile] : tiles_) {
         // What the eye ray hit averages over the samples that hit something.
         if (aov_info(aov).kind == AovKind::surface && !a.hit) continue;
         const Color value = a.value(aov);
-        if (is_valid_sample(value)) tile.add_sample(p, value);
+        if (is_valid_sample(value)) tile.add_sample_through(footprint, value);
     }
     if (sample != 0) return;
     const std::size_t pixel = std::size_t(y) * std::size_t(films_->width_) + std::size_t(x);

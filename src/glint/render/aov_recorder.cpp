@@ -37,7 +37,8 @@ void AovRecorder::hit(const SurfaceContext& c, const Hit& hit) {
     s.normal = to_vector(c.n);
     s.albedo = c.color;
     // The integrators skip uv where the material does not read it.
-    s.uv = uv_needed(m.color) == Uv::compute ? c.sp.uv : world_.surface_at(eye_ray_, hit).uv;
+    if (wants_uv_)
+        s.uv = uv_needed(m.color) == Uv::compute ? c.sp.uv : world_.surface_at(eye_ray_, hit).uv;
     s.object = std::int32_t(hit.primitive);
     s.material = std::int32_t(world_.material_index_of(hit.primitive));
     s.emission = m.emission;
@@ -58,7 +59,7 @@ Color AovRecorder::diffuse_part(const SurfaceContext& c, const LightSample& ls, 
 
 void AovRecorder::light(std::size_t, const SurfaceContext& c, const LightSample& ls, float,
                         Color term) {
-    if (!at_eye()) return;
+    if (!splits_lights()) return;
     const Color diffuse = diffuse_part(c, ls, term);
     sample_.diffuse += diffuse;
     sample_.specular += term - diffuse;
@@ -71,13 +72,13 @@ void AovRecorder::begin_light(std::size_t, bool) {
 
 void AovRecorder::light_sample(const SurfaceContext& c, const LightSample& ls, Point2, float,
                                Color term) {
-    if (!at_eye()) return;
+    if (!splits_lights()) return;
     light_diffuse_ += diffuse_part(c, ls, term);
     ++light_samples_;
 }
 
 void AovRecorder::end_light(Color value) {
-    if (!at_eye() || light_samples_ == 0) return;
+    if (!splits_lights() || light_samples_ == 0) return;
     const Color diffuse = light_diffuse_ / float(light_samples_);
     sample_.diffuse += diffuse;
     sample_.specular += value - diffuse;

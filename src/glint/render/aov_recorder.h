@@ -12,7 +12,12 @@ namespace glint {
 
 class AovRecorder final : public RayRecorder {
 public:
-    explicit AovRecorder(const World& world) : world_(world) {}
+    // Works out only what `wanted` needs beyond what the integrator hands it (uv where the
+    // material reads none, the lights' diffuse and highlight parts).
+    AovRecorder(const World& world, AovSet wanted)
+        : world_(world),
+          wants_uv_(wanted.has(Aov::uv)),
+          wants_split_(wanted.has(Aov::diffuse) || wanted.has(Aov::specular)) {}
 
     // Forgets the last sample: call before tracing each eye ray.
     void start() {
@@ -39,8 +44,10 @@ private:
     // diffuse and highlight parts, channel by channel.
     static Color diffuse_part(const SurfaceContext& c, const LightSample& ls, Color term);
     bool at_eye() const { return level_ == 1; }
+    bool splits_lights() const { return wants_split_ && at_eye(); }
 
     const World& world_;
+    bool wants_uv_, wants_split_;
     AovSample sample_;
     int level_ = 0;  // the depth of the ray being traced, 0 before and after the eye ray
     Ray eye_ray_;

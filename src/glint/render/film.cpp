@@ -36,9 +36,6 @@ Span reach(float p, float radius) {
     return {int(std::floor(p - 0.5f - radius)) + 1, int(std::floor(p - 0.5f + radius))};
 }
 
-// At most this many pixels along one axis: 2 * kMaxFilterRadius + 1.
-constexpr int kMaxReach = 2 * int(kMaxFilterRadius) + 1;
-
 }  // namespace
 
 void BadSamples::add(SampleLocation where) {
@@ -73,7 +70,7 @@ void FilmTile::splat(Point2 p, Color c) {
     const Span xs = reach(p.x, r), ys = reach(p.y, r);
     const int x0 = std::max(xs.first, region_.x0), x1 = std::min(xs.last, region_.x1 - 1);
     const int y0 = std::max(ys.first, region_.y0), y1 = std::min(ys.last, region_.y1 - 1);
-    float wx[kMaxReach];
+    float wx[kMaxFilterReach];
     for (int x = x0; x <= x1; ++x) wx[x - x0] = filter_->evaluate(float(x) + 0.5f - p.x);
     for (int y = y0; y <= y1; ++y) {
         const float wy = filter_->evaluate(float(y) + 0.5f - p.y);
@@ -81,6 +78,33 @@ void FilmTile::splat(Point2 p, Color c) {
         PixelSum* row = sums_.data() + std::size_t(y - region_.y0) * width();
         for (int x = x0; x <= x1; ++x)
             if (wx[x - x0] != 0) add(row[x - region_.x0], wx[x - x0] * wy, c);
+    }
+}
+
+SampleFootprint FilmTile::footprint(Point2 p) const {
+    SampleFootprint f;
+    f.p = p;
+    if (one_pixel_) return f;
+    const float r = filter_->radius();
+    const Span xs = reach(p.x, r), ys = reach(p.y, r);
+    f.x0 = std::max(xs.first, region_.x0), f.x1 = std::min(xs.last, region_.x1 - 1);
+    f.y0 = std::max(ys.first, region_.y0), f.y1 = std::min(ys.last, region_.y1 - 1);
+    for (int x = f.x0; x <= f.x1; ++x)
+        f.wx[std::size_t(x - f.x0)] = filter_->evaluate(float(x) + 0.5f - p.x);
+    for (int y = f.y0; y <= f.y1; ++y)
+        f.wy[std::size_t(y - f.y0)] = filter_->evaluate(float(y) + 0.5f - p.y);
+    return f;
+}
+
+void FilmTile::add_weighted(const SampleFootprint& f, Color c) {
+    for (int y = f.y0; y <= f.y1; ++y) {
+        const float wy = f.wy[std::size_t(y - f.y0)];
+        if (wy == 0) continue;
+        PixelSum* row = sums_.data() + std::size_t(y - region_.y0) * width();
+        for (int x = f.x0; x <= f.x1; ++x) {
+            const float wx = f.wx[std::size_t(x - f.x0)];
+            if (wx != 0) add(row[x - region_.x0], wx * wy, c);
+        }
     }
 }
 

@@ -7,6 +7,7 @@
 #pragma once
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <memory>
@@ -62,6 +63,18 @@ struct BoxSum {
     float count = 0;
 };
 
+// The most pixels a sample reaches along one axis.
+inline constexpr int kMaxFilterReach = 2 * int(kMaxFilterRadius) + 1;
+
+// Where a sample lands and its filter weights over the pixels it reaches: worked out once, it
+// adds the sample to several films of one filter and tile (the output variables') as
+// add_sample(p, c) adds it to one.
+struct SampleFootprint {
+    Point2 p;
+    int x0 = 0, x1 = -1, y0 = 0, y1 = -1;       // the pixels reached within the tile, inclusive
+    std::array<float, kMaxFilterReach> wx, wy;  // from x0 and y0 on; the rest is not set
+};
+
 // One tile's private part of the film: the pixels its samples reach, which extend past the tile
 // by the filter's radius. A render thread fills it without locks; Film::merge adds it in. Under
 // the one-pixel box it starts from the film's running sums of its pixels (Film::make_tile), so
@@ -84,6 +97,14 @@ public:
         s.count += 1;
     }
 
+    // The footprint of a sample at p, and the sample added through one: the same sums as
+    // add_sample(p, c).
+    SampleFootprint footprint(Point2 p) const;
+    void add_sample_through(const SampleFootprint& f, Color c) {
+        if (one_pixel_) return add_sample(f.p, c);
+        add_weighted(f, c);
+    }
+
     const Tile& region() const { return region_; }  // pixels covered, clipped to the image
     // A pixel's sums: box_at for the one-pixel box, at for every other filter.
     const PixelSum& at(int x, int y) const { return sums_[index(x, y)]; }
@@ -95,7 +116,10 @@ private:
     std::size_t index(int x, int y) const {
         return std::size_t(y - region_.y0) * width() + std::size_t(x - region_.x0);
     }
+    // The image's path, evaluating the weights as it adds (measured faster than through a
+    // footprint, bench/README.md#output-variables).
     void splat(Point2 p, Color c);
+    void add_weighted(const SampleFootprint& f, Color c);
 
     const Filter* filter_;
     bool one_pixel_;  // a box of radius 1/2: each sample adds to its own pixel with weight 1

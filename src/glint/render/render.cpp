@@ -39,7 +39,8 @@ struct Pass {
     int begin, end;
 };
 
-template <class Integrator>
+// Compiled twice: with the output variables' code (kAovs) and without, the render's own loop.
+template <class Integrator, bool kAovs>
 void render_tile(const Tile& tile, Pass pass, const World& world, const Sampler& sampler,
                  RenderState& state, TileTotals& totals) {
     const Camera& camera = world.camera();
@@ -49,10 +50,9 @@ void render_tile(const Tile& tile, Pass pass, const World& world, const Sampler&
     FilmTile film_tile = state.film.make_tile(tile);
     // Output variables come from a recorder on the integrator, which then runs its recording
     // code; without them the integrator runs the renderer's own.
-    const bool aovs = !state.aovs.empty();
-    AovRecorder recorder(world);
+    AovRecorder recorder(world, state.aovs.set());
     std::optional<AovTile> aov_tile;
-    if (aovs) {
+    if constexpr (kAovs) {
         integrator.record_into(&recorder);
         aov_tile = state.aovs.make_tile(tile);
     }
@@ -74,7 +74,7 @@ void render_tile(const Tile& tile, Pass pass, const World& world, const Sampler&
                 SampleStream stream(patterns, std::uint32_t(s));
                 const EyeSample eye = eye_sample(camera, stream, x, y);
                 TraversalCounters before;
-                if (aovs) {
+                if constexpr (kAovs) {
                     recorder.start();
                     before = traversal_counters;
                 }
@@ -82,7 +82,7 @@ void render_tile(const Tile& tile, Pass pass, const World& world, const Sampler&
                 if (is_valid_sample(c)) {
                     film_tile.add_sample(eye.film, c);
                     if (settings.adaptive) error.add(c);
-                    if (aovs) {
+                    if constexpr (kAovs) {
                         AovSample a = recorder.sample();
                         a.nodes = traversal_counters.nodes - before.nodes;
                         a.primitives = traversal_counters.primitives - before.primitives;
@@ -95,7 +95,7 @@ void render_tile(const Tile& tile, Pass pass, const World& world, const Sampler&
             taken = std::uint32_t(s);
         }
     state.film.merge(film_tile);
-    if (aovs) state.aovs.merge(*aov_tile);
+    if constexpr (kAovs) state.aovs.merge(*aov_tile);
 }
 
 // Renders the passes from state.next_pass on, until the last or a stop. Returns whether every
@@ -129,7 +129,12 @@ bool render_passes(const World& world, const RenderOptions& options, const std::
                             continue;
                         }
                         TileTotals totals;
-                        render_tile<Integrator>(tiles[i], pass, world, sampler, state, totals);
+                        if (state.aovs.empty())
+                            render_tile<Integrator, false>(tiles[i], pass, world, sampler, state,
+                                                           totals);
+                        else
+                            render_tile<Integrator, true>(tiles[i], pass, world, sampler, state,
+                                                          totals);
                         {
                             const std::lock_guard lock(totals_mutex);
                             state.rays += totals.rays;
