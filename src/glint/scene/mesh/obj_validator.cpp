@@ -156,12 +156,22 @@ std::vector<std::string> validate_mtl(const std::filesystem::path& file, std::st
                                       const ReadSandbox& sandbox) {
     const TextLines lines(text, file.string());
     std::vector<std::string> names;
+    bool in_material = false;
     for (std::size_t i = 0; i < lines.size(); ++i) {
         const std::string_view line = lines.line(i);
         const auto tokens = split_tokens(line);
         if (tokens.empty()) continue;
         const std::string_view key = tokens[0].text;
         const std::size_t n = i + 1;
+        if (key == "newmtl") {
+            in_material = true;
+        } else if (!in_material) {
+            // Assimp applies some statements to a material that does not exist yet, and
+            // crashes ("bump" does).
+            throw lines.error_at(n, tokens[0].column, int(key.size()),
+                                 in_quotes(key) + " comes before any newmtl",
+                                 {"a material's statements follow the newmtl line that names it"});
+        }
         if (key == "newmtl" && tokens.size() > 1) {
             names.emplace_back(named_file(tokens, line).first);
         } else if (key == "Kd" || key == "Ka" || key == "Ks" || key == "Ke" || key == "Tf") {

@@ -28,8 +28,8 @@ struct ObjCheck {
 ObjCheck validate_obj(const std::filesystem::path& file, std::string_view text,
                       const ReadSandbox& sandbox);
 
-// The same for an MTL file on its own; `text` is its contents. Returns the material names it
-// defines.
+// The same for an MTL file on its own; `text` is its contents. Also throws for a statement before
+// the first newmtl. Returns the material names it defines.
 std::vector<std::string> validate_mtl(const std::filesystem::path& file, std::string_view text,
                                       const ReadSandbox& sandbox);
 
