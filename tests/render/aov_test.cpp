@@ -15,6 +15,7 @@
 #include "glint/render/memory_estimate.h"
 #include "glint/render/render.h"
 #include "glint/scene/load_scene.h"
+#include "recorder_test_scenes.h"
 
 namespace glint {
 namespace {
@@ -79,7 +80,7 @@ Scene small(const std::string& file) {
     return scene;
 }
 
-class AovScenes : public testing::TestWithParam<const char*> {};
+class AovScenes : public ::testing::TestWithParam<const char*> {};
 
 TEST_P(AovScenes, ContributionsAddUpToTheImageWhichStaysAsItWas) {
     const Scene scene = small(GetParam());
@@ -106,22 +107,8 @@ TEST_P(AovScenes, ContributionsAddUpToTheImageWhichStaysAsItWas) {
         EXPECT_EQ(layer(r, Aov::samples).pixels[i], Color::gray(4));
 }
 
-INSTANTIATE_TEST_SUITE_P(
-    Scenes, AovScenes,
-    testing::Values("scenes/showcase.yaml", "scenes/whitted-basics.yaml",
-                    "scenes/distributed-showcase.yaml", "scenes/features/soft-shadows.yaml",
-                    "scenes/features/glossy.yaml", "scenes/features/translucency.yaml",
-                    "scenes/features/dispersion.yaml", "scenes/features/depth-of-field.yaml",
-                    "scenes/features/refraction.yaml", "scenes/features/textures.yaml",
-                    "scenes/features/csg.yaml", "scenes/features/meshes.yaml"),
-    [](const testing::TestParamInfo<const char*>& param) {
-        std::string name = param.param;
-        name = name.substr(name.rfind('/') + 1);
-        name = name.substr(0, name.find('.'));
-        for (char& c : name)
-            if (c == '-') c = '_';
-        return name;
-    });
+INSTANTIATE_TEST_SUITE_P(Scenes, AovScenes, ::testing::ValuesIn(testing::kRecorderTestScenes),
+                         testing::scene_test_name);
 
 // Camera at z = -5 looking at a unit sphere at the origin (material 1; material 0 unused), one
 // sample per pixel at the pixel's centre, a one-pixel box: each pixel is its eye ray's.

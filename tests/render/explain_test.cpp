@@ -12,6 +12,7 @@
 #include "glint/render/ray_tree_formats.h"
 #include "glint/render/render.h"
 #include "glint/scene/load_scene.h"
+#include "recorder_test_scenes.h"
 
 namespace glint {
 namespace {
@@ -44,7 +45,7 @@ void expect_every_node_evaluates_to_its_value(const RayTree& tree) {
             << text_of(tree.nodes[i].value);
 }
 
-class ExplainScenes : public testing::TestWithParam<const char*> {};
+class ExplainScenes : public ::testing::TestWithParam<const char*> {};
 
 TEST_P(ExplainScenes, TreeGivesTheRenderedPixelToTheLastBit) {
     for (const int spp : {1, 4}) {
@@ -78,23 +79,8 @@ TEST_P(ExplainScenes, TreeGivesTheRenderedPixelToTheLastBit) {
     }
 }
 
-INSTANTIATE_TEST_SUITE_P(
-    Scenes, ExplainScenes,
-    testing::Values("scenes/showcase.yaml", "scenes/whitted-basics.yaml",
-                    "scenes/distributed-showcase.yaml", "scenes/features/soft-shadows.yaml",
-                    "scenes/features/glossy.yaml", "scenes/features/translucency.yaml",
-                    "scenes/features/dispersion.yaml", "scenes/features/depth-of-field.yaml",
-                    "scenes/features/motion-blur.yaml", "scenes/features/refraction.yaml",
-                    "scenes/features/transparent-shadows.yaml", "scenes/features/textures.yaml",
-                    "scenes/features/csg.yaml", "scenes/features/meshes.yaml"),
-    [](const testing::TestParamInfo<const char*>& param) {
-        std::string name = param.param;
-        name = name.substr(name.rfind('/') + 1);
-        name = name.substr(0, name.find('.'));
-        for (char& c : name)
-            if (c == '-') c = '_';
-        return name;
-    });
+INSTANTIATE_TEST_SUITE_P(Scenes, ExplainScenes, ::testing::ValuesIn(testing::kRecorderTestScenes),
+                         testing::scene_test_name);
 
 // The notes' "Strahl-Kugel Schnitt, Beispiel": P0 = (1 -2 -1), R || (1 2 4), M = (3 0 5),
 // r = 3 gives t1 = 3.744, S1 = (1.816 -0.368 2.269), N1 = (-0.395 -0.123 -0.910). The eye ray of
