@@ -261,6 +261,23 @@ TEST(GlbValidator, HeaderAndChunksMustFitTheFile) {
               "the GLB header gives a length of 24 bytes, but the file has 23 (it is truncated)");
 }
 
+TEST(TextLines, LinesEndWhereTheirReaderEndsThem) {
+    using namespace std::string_view_literals;
+    const auto lines_of = [](std::string_view text, LineBreaks breaks) {
+        const TextLines lines(text, "t", breaks);
+        std::vector<std::string> out;
+        for (std::size_t i = 0; i < lines.size(); ++i) out.emplace_back(lines.line(i));
+        return out;
+    };
+    using Lines = std::vector<std::string>;
+    const std::string_view text = "a\r\nb\rc\fd\0e\nf"sv;
+    EXPECT_EQ(lines_of(text, LineBreaks::newline), (Lines{"a", std::string("b\rc\fd\0e", 7), "f"}));
+    EXPECT_EQ(lines_of(text, LineBreaks::obj), (Lines{"a", "b", "c", "d", "e", "f"}));
+    EXPECT_EQ(lines_of("x\r\n\r\ny\r", LineBreaks::obj), (Lines{"x", "", "y"}));
+    EXPECT_EQ(lines_of("x\r", LineBreaks::newline), (Lines{"x"}));
+    EXPECT_EQ(lines_of("", LineBreaks::obj), Lines{});
+}
+
 TEST(TextLines, NumbersParseWholeTokensOnly) {
     EXPECT_EQ(parse_float("1.5"), 1.5f);
     EXPECT_EQ(parse_float("+2"), 2.0f);

@@ -154,7 +154,7 @@ void check_sandbox(const TextLines& lines, std::size_t line, const Token& token,
 
 std::vector<std::string> validate_mtl(const std::filesystem::path& file, std::string_view text,
                                       const ReadSandbox& sandbox) {
-    const TextLines lines(text, file.string());
+    const TextLines lines(text, file.string(), LineBreaks::obj);
     std::vector<std::string> names;
     bool in_material = false;
     for (std::size_t i = 0; i < lines.size(); ++i) {
@@ -200,7 +200,7 @@ std::vector<std::string> validate_mtl(const std::filesystem::path& file, std::st
 
 ObjCheck validate_obj(const std::filesystem::path& file, std::string_view text,
                       const ReadSandbox& sandbox) {
-    const TextLines lines(text, file.string());
+    const TextLines lines(text, file.string(), LineBreaks::obj);
     // Positive indices may point forwards (Assimp resolves them after reading), so the totals
     // come first.
     Counts total;

@@ -179,6 +179,10 @@ private:
         bool have_format = false;
         for (std::size_t i = 1; i < lines_.size(); ++i) {
             const std::size_t n = i + 1;
+            // The header is text: Assimp reads its lines as C strings, and hangs on some with a
+            // NUL inside.
+            if (const std::size_t nul = lines_.line(i).find('\0'); nul != std::string_view::npos)
+                throw lines_.error_at(n, int(nul) + 1, 1, "the PLY header holds a NUL byte");
             const auto tokens = split_tokens(lines_.line(i), false);
             if (tokens.empty()) continue;
             const std::string_view key = tokens[0].text;

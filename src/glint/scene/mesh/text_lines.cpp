@@ -30,24 +30,29 @@ std::vector<Token> split_tokens(std::string_view line, bool hash_comments) {
     return tokens;
 }
 
-TextLines::TextLines(std::string_view text, std::string file_name)
+TextLines::TextLines(std::string_view text, std::string file_name, LineBreaks breaks)
     : text_(text), file_name_(std::move(file_name)) {
+    const std::string_view ends =
+        breaks == LineBreaks::obj ? std::string_view("\n\r\f\0", 4) : std::string_view("\n");
     std::size_t start = 0;
     while (start < text.size()) {
         starts_.push_back(start);
-        const std::size_t end = text.find('\n', start);
-        if (end == std::string_view::npos) break;
-        start = end + 1;
+        const std::size_t end = text.find_first_of(ends, start);
+        if (end == std::string_view::npos) {
+            ends_.push_back(text.size());
+            break;
+        }
+        ends_.push_back(end);
+        const bool crlf = text[end] == '\r' && end + 1 < text.size() && text[end + 1] == '\n';
+        start = end + (crlf ? 2 : 1);  // "\r\n" is one break
     }
 }
 
 std::string_view TextLines::line(std::size_t index) const {
     if (index >= starts_.size()) return {};
-    const std::size_t start = starts_[index];
-    std::size_t end = index + 1 < starts_.size() ? starts_[index + 1] - 1 : text_.size();
-    if (end > start && text_[end - 1] == '\n') --end;  // the last line's break
-    if (end > start && text_[end - 1] == '\r') --end;
-    return text_.substr(start, end - start);
+    std::size_t end = ends_[index];
+    if (end > starts_[index] && text_[end - 1] == '\r') --end;  // of "\r\n" under "\n" breaks
+    return text_.substr(starts_[index], end - starts_[index]);
 }
 
 SceneError TextLines::error_at(std::size_t line_number, int column, int span, std::string message,

@@ -22,10 +22,16 @@ struct Token {
 // Splits a line at spaces and tabs; a '#' starts a comment that runs to the end of the line.
 std::vector<Token> split_tokens(std::string_view line, bool hash_comments = true);
 
-// The text's lines, without their line breaks ("\n", "\r\n" or a lone "\r" at the end).
+// Which characters end a line: "\n" (and "\r\n"); or, as Assimp's OBJ and MTL readers do, any
+// of "\n", "\r", "\f" and NUL ("\r\n" one break), which a validator must follow to see the lines
+// Assimp will read.
+enum class LineBreaks { newline, obj };
+
+// The text's lines, without their line breaks (a lone "\r" at a line's end is dropped too).
 class TextLines {
 public:
-    TextLines(std::string_view text, std::string file_name);
+    TextLines(std::string_view text, std::string file_name,
+              LineBreaks breaks = LineBreaks::newline);
 
     std::size_t size() const { return starts_.size(); }
     std::string_view line(std::size_t index) const;  // 0-based
@@ -39,7 +45,7 @@ public:
 private:
     std::string_view text_;
     std::string file_name_;
-    std::vector<std::size_t> starts_;
+    std::vector<std::size_t> starts_, ends_;  // each line's first character and its end
 };
 
 // A float parsed from the whole token, or nothing when it is not a number. "nan", "inf" and
