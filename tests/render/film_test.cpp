@@ -33,6 +33,33 @@ TEST(Film, BoxFilterAveragesEachPixelsOwnSamples) {
     EXPECT_EQ(image.at(1, 0), (Color{0.5f, 0, 0}));
 }
 
+TEST(Film, ASampleAddedThroughItsFootprintGivesTheSameSums) {
+    // The output variables add each sample through one footprint to many films; each must hold
+    // the sums the image's own path gives, bit for bit, for every filter.
+    std::mt19937 rng(7);
+    std::uniform_real_distribution<float> u(0, 1);
+    for (const FilterKind kind :
+         {FilterKind::box, FilterKind::tent, FilterKind::gaussian, FilterKind::mitchell}) {
+        for (const float radius : {0.5f, default_filter_radius(kind)}) {
+            const FilterSpec spec{kind, radius};
+            Film direct(9, 7, spec), through(9, 7, spec);
+            const Tile region{2, 1, 7, 6};
+            FilmTile a = direct.make_tile(region), b = through.make_tile(region);
+            for (int i = 0; i < 200; ++i) {
+                const Point2 p{2 + 5 * u(rng), 1 + 5 * u(rng)};
+                const Color c{u(rng), 2 * u(rng), -u(rng)};
+                a.add_sample(p, c);
+                b.add_sample_through(b.footprint(p), c);
+            }
+            direct.merge(a);
+            through.merge(b);
+            const Image x = direct.resolve(), y = through.resolve();
+            for (std::size_t i = 0; i < x.pixels.size(); ++i)
+                ASSERT_EQ(x.pixels[i], y.pixels[i]) << int(kind) << " " << radius << " " << i;
+        }
+    }
+}
+
 TEST(Film, BoxFilterKeepsASampleOnTheTilesFarEdgeInTheTile) {
     // A jittered offset can round up to 1: the sample at x = 2 still belongs to pixel 1 of the
     // tile [0, 2), never to the next tile's pixel 2.
