@@ -190,11 +190,16 @@ private:
                 if (!have_format) throw lines_.error_at(n, 1, 10, "PLY header has no format line");
                 data_line_ = i + 1;
                 const std::size_t newline = bytes_.find('\n', line_offset(i));
-                data_offset_ = newline == std::string_view::npos ? bytes_.size() : newline + 1;
+                // Assimp hangs on some headers that end the file (two format lines do it).
+                if (newline == std::string_view::npos)
+                    throw lines_.error_at(n, 1, 10,
+                                          "the file ends at end_header: no line break, no data");
+                data_offset_ = newline + 1;
                 return;
             }
             if (key == "comment" || key == "obj_info") continue;
             if (key == "format") {
+                if (have_format) throw lines_.error_at(n, 1, 6, "a second format line");
                 if (tokens.size() < 2)
                     throw lines_.error_at(n, 1, 6, "format line names no format");
                 const std::string_view f = tokens[1].text;
