@@ -183,6 +183,11 @@ private:
             // NUL inside.
             if (const std::size_t nul = lines_.line(i).find('\0'); nul != std::string_view::npos)
                 throw lines_.error_at(n, int(nul) + 1, 1, "the PLY header holds a NUL byte");
+            // Nor a carriage return but before a line feed: Assimp ends a line there, glint
+            // does not, and Assimp read out of bounds on one such header.
+            if (const std::size_t cr = lines_.line(i).find('\r'); cr != std::string_view::npos)
+                throw lines_.error_at(n, int(cr) + 1, 1,
+                                      "the PLY header holds a carriage return that ends no line");
             const auto tokens = split_tokens(lines_.line(i), false);
             if (tokens.empty()) continue;
             const std::string_view key = tokens[0].text;
@@ -224,6 +229,14 @@ private:
                                           "element count must be a non-negative integer, got \"" +
                                               std::string(tokens[2].text) + "\"");
                 }
+                // Assimp sizes a mesh's faces by the first face element and writes every face
+                // element's into it: past the end, for a second one.
+                for (const PlyElement& e : elements_)
+                    if (e.name == tokens[1].text)
+                        throw lines_.error_at(n, tokens[1].column, int(tokens[1].text.size()),
+                                              "a second element \"" + e.name +
+                                                  "\" (the first is at line " +
+                                                  std::to_string(e.line) + ")");
                 elements_.push_back({std::string(tokens[1].text), *count, n, {}});
             } else if (key == "property") {
                 if (elements_.empty()) {
