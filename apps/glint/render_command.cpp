@@ -225,6 +225,7 @@ int run_render(const RenderCommand& command) {
         const auto accel = accel_from_name(command.accel);
         if (!accel) throw UsageError{"unknown acceleration structure \"" + command.accel + "\""};
         check_memory(scene, *accel, command, aovs);
+        const std::vector<std::filesystem::path> files_read = scene.sources.files_read;
         ShadowAcceleration shadows;
         shadows.light_buffer = command.shadow_accel != "none";
         shadows.occluder_cache = command.shadow_accel == "light-buffer+cache";
@@ -238,7 +239,8 @@ int run_render(const RenderCommand& command) {
         options.record_samples_taken = !command.samples_image.empty();
         options.aovs = aovs;
         const RenderSettings& s = world.settings();
-        const RenderIdentity identity = identify_render(command.scene, s, options, GLINT_VERSION);
+        const RenderIdentity identity =
+            identify_render(command.scene, files_read, s, options, GLINT_VERSION);
         const std::filesystem::path resume = resume_path(output),
                                     partial = partial_output_path(output);
         RenderState state =

@@ -808,12 +808,11 @@ class Resume : public Cli {
 protected:
     std::vector<std::string> args(const std::vector<std::string>& more = {},
                                   const std::string& output = "out.png") const {
-        std::vector<std::string> a = {
-            "render",  std::string(GLINT_SOURCE_DIR) + "/scenes/distributed-showcase.yaml",
-            "--width", "120",
-            "--spp",   std::to_string(kResumeSpp),
-            "--seed",  "3",
-            "-o",      (dir_ / output).string()};
+        std::vector<std::string> a = {"render",  scene_.string(),
+                                      "--width", "120",
+                                      "--spp",   std::to_string(kResumeSpp),
+                                      "--seed",  "3",
+                                      "-o",      (dir_ / output).string()};
         a.insert(a.end(), more.begin(), more.end());
         return a;
     }
@@ -852,6 +851,8 @@ protected:
     bool progress_shown() const {
         return slurp(dir_ / "stderr.txt").find("% done") != std::string::npos;
     }
+
+    fs::path scene_ = fs::path(GLINT_SOURCE_DIR) / "scenes/distributed-showcase.yaml";
 };
 
 TEST_F(Resume, InterruptedRenderResumesToTheUninterruptedImage) {
@@ -915,6 +916,31 @@ TEST_F(Resume, ResumeFileOfOtherSettingsIsRefusedAndAMissingOneIsAnError) {
     EXPECT_EQ(run_glint(joined(args({"--resume", "-q", "--accel", "kdtree", "--threads", "1"})))
                   .exit_code,
               0);
+}
+
+// The files a scene reads are checked as its own is: a texture changed since the interruption
+// refuses the resume file, naming the texture; put back, the render resumes.
+TEST_F(Resume, ATextureChangedSinceTheInterruptionIsNamed) {
+    fs::copy_file(fs::path(GLINT_SOURCE_DIR) / "tests/data/meshes/spot_texture.png",
+                  dir_ / "spot.png");
+    std::string text = slurp(scene_);
+    text.replace(text.find("materials:\n"), 11,
+                 "materials:\n  spot: {color: {type: image, file: spot.png}, ka: 0.3, kd: 0.7}\n");
+    text += "  - {type: sphere, center: [0, 3, 2], radius: 0.8, material: spot}\n";
+    scene_ = dir_ / "textured.yaml";
+    write_scene("textured.yaml", text);
+    if (interrupt({SIGINT}, {}, [&] { return progress_shown(); }) != 130)
+        GTEST_SKIP() << "the render finished before Ctrl-C";
+    const std::string texture = slurp(dir_ / "spot.png");
+    std::ofstream(dir_ / "spot.png", std::ios::app) << "a changed texture";
+    const Outcome refused = run_glint(joined(args({"--resume", "-q"})));
+    EXPECT_EQ(refused.exit_code, 2);
+    EXPECT_NE(refused.err.find("the resume file was written before " +
+                               fs::canonical(dir_ / "spot.png").string() + " changed"),
+              std::string::npos)
+        << refused.err;
+    std::ofstream(dir_ / "spot.png", std::ios::binary | std::ios::trunc) << texture;
+    EXPECT_EQ(run_glint(joined(args({"--resume", "-q"}))).exit_code, 0);
 }
 
 TEST_F(Resume, CheckpointsLetARenderKilledOutrightResume) {

@@ -45,7 +45,7 @@ protected:
     void TearDown() override { fs::remove_all(dir_); }
 
     RenderIdentity identity() const {
-        return identify_render(scene_file_, scene_.settings, options_, "1.2.3");
+        return identify_render(scene_file_, {}, scene_.settings, options_, "1.2.3");
     }
     // A render stopped after its first pass, saved to `file`.
     RenderState save_stopped_render(const fs::path& file) const {
@@ -104,7 +104,8 @@ TEST_F(ResumeFile, AnotherRenderIsRefusedNamingWhatDiffers) {
     const RenderSettings s = scene_.settings;
     const auto refused = [&](RenderSettings settings, RenderOptions options,
                              std::string version = "1.2.3") {
-        return refusal(file, identify_render(scene_file_, settings, options, version), settings);
+        return refusal(file, identify_render(scene_file_, {}, settings, options, version),
+                       settings);
     };
     RenderOptions seed = options_;
     seed.seed = 3;
@@ -141,6 +142,42 @@ TEST_F(ResumeFile, AnotherRenderIsRefusedNamingWhatDiffers) {
     // The scene file edited since: the same path, other bytes.
     std::ofstream(scene_file_, std::ios::app) << "# edited\n";
     EXPECT_NE(refused(s, options_).find("another scene (its file has changed since)"),
+              std::string::npos);
+}
+
+// A render of a scene that reads other files: a change to any of them, or another list of them,
+// refuses the resume file, naming the file.
+TEST_F(ResumeFile, AFileTheSceneReadIsCheckedForChangesToo) {
+    const fs::path texture = dir_ / "wood.png", mesh = dir_ / "mesh.stl";
+    std::ofstream(texture) << "texture bytes";
+    std::ofstream(mesh) << "mesh bytes";
+    const std::vector<fs::path> both = {texture, mesh};
+    const auto refused = [&](const std::vector<fs::path>& files) {
+        return refusal(dir_ / "image.png.resume",
+                       identify_render(scene_file_, files, scene_.settings, options_, "1.2.3"),
+                       scene_.settings);
+    };
+    RenderState state = initial_state(scene_.settings, options_);
+    write_resume_file(dir_ / "image.png.resume",
+                      identify_render(scene_file_, both, scene_.settings, options_, "1.2.3"),
+                      state);
+    EXPECT_EQ(refused(both), "(read without complaint)");
+    EXPECT_NE(refused({texture}).find("was written for a scene that read " + mesh.string() +
+                                      ", which this one does not"),
+              std::string::npos)
+        << refused({texture});
+    EXPECT_NE(
+        refused({texture, mesh, dir_ / "other.png"})
+            .find("was written for a scene that did not read " + (dir_ / "other.png").string()),
+        std::string::npos);
+    std::ofstream(mesh) << "mesh bytes, edited";
+    EXPECT_NE(refused(both).find("was written before " + mesh.string() + " changed"),
+              std::string::npos)
+        << refused(both);
+    // The same size, other bytes.
+    std::ofstream(mesh) << "mesh bytes";
+    std::ofstream(texture) << "texture bytez";
+    EXPECT_NE(refused(both).find("was written before " + texture.string() + " changed"),
               std::string::npos);
 }
 

@@ -3,6 +3,7 @@
 // symbolic link) are refused with the path and where the scene names it, and load once their
 // folder is allowed; paths that stay inside load as before.
 #include <gtest/gtest.h>
+#include <sys/stat.h>
 
 #include <algorithm>
 #include <filesystem>
@@ -301,6 +302,58 @@ TEST_F(SceneSandbox, AModelFileRenderedOnItsOwnReadsOnlyItsFolder) {
     // looked for beside the link, inside the link's folder.
     fs::create_symlink(outside_ / "mesh.stl", scene_ / "linked.stl");
     expect_loads(scene_ / "linked.stl");
+}
+
+// What a resume file checks for changes: every file the scene read besides its own, each once,
+// whoever opened it (glint's texture loader, Assimp for meshes, material libraries and buffers).
+TEST_F(SceneSandbox, TheFilesASceneReadAreListedOnceEach) {
+    write_text(scene_ / "b.mtl", "newmtl m\nKd 1 1 1\nmap_Kd sub/tex.png\n");
+    write_text(scene_ / "b.obj",
+               "mtllib b.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nusemtl m\nf 1/1 2/1 3/1\n");
+    write_text(scene_ / "all.yaml",
+               "camera: {from: [0, 0, -5], at: [0, 0, 0]}\n"
+               "materials:\n"
+               "  a: {color: {type: image, file: sub/tex.png}}\n"
+               "  b: {color: {type: image, file: ../outside/tex.png}}\n"
+               "objects:\n"
+               "  - {type: sphere, center: [0, 0, 0], radius: 1, material: a}\n"
+               "  - {type: sphere, center: [2, 0, 0], radius: 1, material: b}\n"
+               "  - {type: mesh, file: b.obj}\n"
+               "  - {type: mesh, file: sub/mesh.stl}\n"
+               "  - {type: mesh, file: sub/mesh.stl}\n");
+    const Scene scene = load_scene(scene_ / "all.yaml", allowing_outside());
+    const std::vector<fs::path> expected = {scene_ / "sub/tex.png", outside_ / "tex.png",
+                                            scene_ / "b.obj", scene_ / "b.mtl",
+                                            scene_ / "sub/mesh.stl"};
+    EXPECT_EQ(scene.sources.files_read, expected);
+
+    // A model file on its own lists what it read, not itself; an NFF file reads nothing else.
+    const Scene model = load_scene(scene_ / "b.obj");
+    EXPECT_EQ(model.sources.files_read,
+              (std::vector<fs::path>{scene_ / "b.mtl", scene_ / "sub/tex.png"}));
+    write_text(scene_ / "s.nff",
+               "v\nfrom 0 0 -5\nat 0 0 0\nup 0 1 0\nangle 40\nhither 1\n"
+               "resolution 8 8\nf 1 1 1 1 0 0 0 1\ns 0 0 0 1\n");
+    EXPECT_TRUE(load_scene(scene_ / "s.nff").sources.files_read.empty());
+}
+
+// A pipe would block the open and a device like /dev/zero never end: only regular files are read.
+TEST_F(SceneSandbox, APipeOrAFolderInPlaceOfAFileIsRefusedAtItsKey) {
+    ASSERT_EQ(::mkfifo((scene_ / "pipe.png").c_str(), 0600), 0);
+    fs::create_directories(scene_ / "folder.png");
+    for (const std::string& path : {std::string("pipe.png"), std::string("folder.png")}) {
+        SCOPED_TRACE(path);
+        const SceneError e = load_error(texture_scene(path));
+        EXPECT_EQ(e.location().line, 3);
+        EXPECT_EQ(e.location().column, 34);
+        EXPECT_EQ(e.message(), "texture \"" + path + "\" is not a regular file");
+    }
+    ASSERT_EQ(::mkfifo((scene_ / "pipe.stl").c_str(), 0600), 0);
+    const SceneError e = load_error(mesh_scene("pipe.stl"));
+    EXPECT_EQ(e.message(), "mesh file \"pipe.stl\" is not a regular file") << format_scene_error(e);
+    // The sandbox allows /dev here, but a device is still no texture.
+    const SceneError device = load_error(texture_scene("/dev/zero"), LoadOptions{{"/dev"}});
+    EXPECT_EQ(device.message(), "texture \"/dev/zero\" is not a regular file");
 }
 
 }  // namespace

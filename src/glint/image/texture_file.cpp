@@ -177,6 +177,10 @@ Image decode_texture_image(std::span<const unsigned char> file_bytes,
 Image load_texture_image(const std::filesystem::path& path, std::uintmax_t max_bytes) {
     max_bytes = std::min(max_bytes, kMaxDecodableTextureBytes);
     std::error_code ec;
+    // A pipe or a device (/dev/zero) has no size to check and might never end.
+    const auto status = std::filesystem::status(path, ec);
+    if (!ec && std::filesystem::exists(status) && !std::filesystem::is_regular_file(status))
+        throw ImageError(path, "texture file is not a regular file");
     const auto size = std::filesystem::file_size(path, ec);
     if (!ec && size > max_bytes) {
         throw ImageError(path, "texture file is " + std::to_string(size) +

@@ -5,6 +5,7 @@
 
 #include <zlib.h>
 
+#include <algorithm>
 #include <bit>
 #include <cassert>
 #include <cstring>
@@ -21,7 +22,7 @@ namespace glint {
 namespace {
 
 constexpr char kMagic[8] = {'G', 'L', 'I', 'N', 'T', 'R', 'E', 'S'};
-constexpr std::uint32_t kFormatVersion = 1;
+constexpr std::uint32_t kFormatVersion = 2;
 
 class ByteWriter {
 public:
@@ -160,13 +161,29 @@ private:
     std::string truncated_;
 };
 
-std::uint64_t fnv1a(const std::vector<unsigned char>& bytes) {
-    std::uint64_t h = 0xcbf29ce484222325ull;
-    for (const unsigned char b : bytes) {
-        h ^= b;
-        h *= 0x100000001b3ull;
+// `path` as it is now. A pipe or a device is not read: its bytes could not be read again.
+FileStamp stamp_file(const std::filesystem::path& path) {
+    FileStamp stamp;
+    stamp.path = path.string();
+    std::error_code ec;
+    if (!std::filesystem::is_regular_file(path, ec)) {
+        stamp.readable = false;
+        return stamp;
     }
-    return h;
+    const UniqueFile file(std::fopen(stamp.path.c_str(), "rb"));
+    if (!file) {
+        stamp.readable = false;
+        return stamp;
+    }
+    uLong crc = crc32(0, nullptr, 0);
+    unsigned char buffer[1 << 16];
+    while (const std::size_t n = std::fread(buffer, 1, sizeof buffer, file.get())) {
+        crc = crc32_z(crc, buffer, n);
+        stamp.size += n;
+    }
+    stamp.readable = std::ferror(file.get()) == 0;
+    stamp.crc = std::uint32_t(crc);
+    return stamp;
 }
 
 template <class Kind>
@@ -197,7 +214,13 @@ void write_identity(ByteWriter& out, const RenderIdentity& id) {
     out.u32(kFormatVersion);
     out.text(id.glint_version);
     out.text(id.scene_path);
-    out.u64(id.scene_hash);
+    out.u32(std::uint32_t(id.files.size()));
+    for (const FileStamp& f : id.files) {
+        out.text(f.path);
+        out.u64(f.size);
+        out.u32(f.crc);
+        out.u8(f.readable ? 1 : 0);
+    }
     out.i32(id.width);
     out.i32(id.height);
     out.i32(id.samples_per_pixel);
@@ -222,7 +245,15 @@ RenderIdentity read_identity(ByteReader& in) {
     RenderIdentity id;
     id.glint_version = in.text();
     id.scene_path = in.text();
-    id.scene_hash = in.u64();
+    const std::uint32_t files = in.u32();
+    for (std::uint32_t i = 0; i < files; ++i) {
+        FileStamp f;
+        f.path = in.text();
+        f.size = in.u64();
+        f.crc = in.u32();
+        f.readable = in.u8() != 0;
+        id.files.push_back(std::move(f));
+    }
     id.width = in.i32();
     id.height = in.i32();
     id.samples_per_pixel = in.i32();
@@ -244,6 +275,30 @@ RenderIdentity read_identity(ByteReader& in) {
     return id;
 }
 
+// What differs between the files two renders' scenes were made from, the scene file first:
+// "written before /models/wood.png changed". Empty when they are the same.
+std::string files_difference(const std::vector<FileStamp>& was, const std::vector<FileStamp>& now) {
+    const auto named = [](const std::vector<FileStamp>& files, const std::string& path) {
+        return std::find_if(files.begin(), files.end(),
+                            [&](const FileStamp& f) { return f.path == path; });
+    };
+    for (std::size_t i = 0; i < now.size(); ++i) {
+        const FileStamp& file = now[i];
+        const auto before = named(was, file.path);
+        if (before == was.end()) return "written for a scene that did not read " + file.path;
+        if (!file.readable || !before->readable)
+            return "written for a scene whose file " + file.path +
+                   " cannot be checked for changes (it is not a regular file)";
+        if (*before != file)
+            return i == 0 ? "written for another scene (its file has changed since)"
+                          : "written before " + file.path + " changed";
+    }
+    for (const FileStamp& file : was)
+        if (named(now, file.path) == now.end())
+            return "written for a scene that read " + file.path + ", which this one does not";
+    return {};
+}
+
 // What differs between the render a file was written for and this one, first difference first:
 // "written for seed 3, not 7". Empty when they are the same.
 std::string difference(const RenderIdentity& was, const RenderIdentity& now) {
@@ -252,8 +307,7 @@ std::string difference(const RenderIdentity& was, const RenderIdentity& now) {
         return "written by glint " + was.glint_version + ", this is glint " + now.glint_version;
     if (was.scene_path != now.scene_path)
         return "written for scene " + was.scene_path + ", not " + now.scene_path;
-    if (was.scene_hash != now.scene_hash)
-        return "written for another scene (its file has changed since)";
+    if (const std::string why = files_difference(was.files, now.files); !why.empty()) return why;
     if (was.width != now.width || was.height != now.height)
         return "written for an image of " + num(was.width) + "x" + num(was.height) + ", not " +
                num(now.width) + "x" + num(now.height);
@@ -366,12 +420,14 @@ void decode_state(ByteReader& in, RenderState& s, const std::string& corrupt) {
 }  // namespace
 
 RenderIdentity identify_render(const std::filesystem::path& scene_file,
+                               std::span<const std::filesystem::path> files_read,
                                const RenderSettings& settings, const RenderOptions& options,
                                std::string_view glint_version) {
     RenderIdentity id;
     id.glint_version = glint_version;
     id.scene_path = std::filesystem::absolute(scene_file).lexically_normal().string();
-    id.scene_hash = fnv1a(read_whole_file(scene_file));
+    id.files.push_back(stamp_file(id.scene_path));
+    for (const std::filesystem::path& file : files_read) id.files.push_back(stamp_file(file));
     id.width = settings.width;
     id.height = settings.height;
     id.samples_per_pixel = settings.samples_per_pixel;

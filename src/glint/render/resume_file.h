@@ -5,9 +5,11 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <span>
 #include <stdexcept>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "glint/render/render.h"
 #include "glint/render/render_state.h"
@@ -15,12 +17,22 @@
 
 namespace glint {
 
+// A file a scene was made from, as it was when the render began.
+struct FileStamp {
+    std::string path;  // absolute
+    std::uint64_t size = 0;
+    std::uint32_t crc = 0;  // CRC-32 of its bytes
+    bool readable = true;   // false: not a regular file, or it could not be read
+    bool operator==(const FileStamp&) const = default;
+};
+
 // Everything that decides a render's image (the acceleration structure and the thread count do
 // not), and the version of glint that rendered it.
 struct RenderIdentity {
     std::string glint_version;
-    std::string scene_path;      // absolute
-    std::uint64_t scene_hash{};  // FNV-1a of the scene file's bytes
+    std::string scene_path;  // absolute
+    // The scene file first, then every file it read (Scene::sources.files_read).
+    std::vector<FileStamp> files;
     int width = 0, height = 0, samples_per_pixel = 0;
     std::uint64_t seed = 0;
     IntegratorKind integrator{};
@@ -32,9 +44,10 @@ struct RenderIdentity {
     int pass_size = 0;  // samples_per_pass
 };
 
-// The identity of a render of `scene_file` (read here, to hash it) with the settings it was
-// loaded with and the options given. Throws ImageError if the file cannot be read.
+// The identity of a render of `scene_file`, which read `files_read`, with the settings it was
+// loaded with and the options given. Every file is read here, to stamp it.
 RenderIdentity identify_render(const std::filesystem::path& scene_file,
+                               std::span<const std::filesystem::path> files_read,
                                const RenderSettings& settings, const RenderOptions& options,
                                std::string_view glint_version);
 

@@ -26,10 +26,14 @@ Scene load_scene(const std::filesystem::path& file, const LoadOptions& options) 
              ".obj, .ply, .gltf, .glb, .stl (models)"});
     }
     const ReadSandbox sandbox = make_read_sandbox(file, options.allow_read, options.max_file_bytes);
-    if (yaml) return load_yaml_scene(file, sandbox);
     // An NFF file names no other files: only its own size is checked.
     if (nff) return load_nff_scene(file, sandbox.file_limit(kMaxNffFileBytes));
-    return load_model_scene(file, sandbox);
+    Scene scene = yaml ? load_yaml_scene(file, sandbox) : load_model_scene(file, sandbox);
+    // A model scene's own file is among those Assimp opened.
+    const auto own = resolve_path(file);
+    for (const std::filesystem::path& read : *sandbox.files_read)
+        if (read != own) scene.sources.files_read.push_back(read);
+    return scene;
 }
 
 }  // namespace glint

@@ -2,6 +2,7 @@
 // count for where they lead) and must lie inside one of the allowed folders.
 #include "glint/scene/read_sandbox.h"
 
+#include <algorithm>
 #include <system_error>
 
 #include "glint/scene/quote.h"
@@ -67,17 +68,36 @@ bool inside_a_folder(const ReadSandbox& sandbox, const std::filesystem::path& re
     return false;
 }
 
+// Whether `resolved` names something other than a regular file: a folder, a pipe, a device.
+bool is_special(const std::filesystem::path& resolved) {
+    std::error_code ec;
+    const auto status = std::filesystem::status(resolved, ec);
+    return !ec && std::filesystem::exists(status) && !std::filesystem::is_regular_file(status);
+}
+
 }  // namespace
 
 bool may_read(const ReadSandbox& sandbox, const std::filesystem::path& path) {
     const auto resolved = resolve_path(path);
-    return resolved && inside_a_folder(sandbox, *resolved);
+    return resolved && inside_a_folder(sandbox, *resolved) && !is_special(*resolved);
+}
+
+void record_read(const ReadSandbox& sandbox, const std::filesystem::path& path) {
+    const auto resolved = resolve_path(path);
+    if (!resolved) return;
+    std::vector<std::filesystem::path>& files = *sandbox.files_read;
+    if (std::find(files.begin(), files.end(), *resolved) == files.end()) files.push_back(*resolved);
 }
 
 std::optional<ReadRefusal> check_read(const ReadSandbox& sandbox, const std::filesystem::path& path,
                                       std::string_view what, std::string_view written) {
     const auto resolved = resolve_path(path);
-    if (resolved && inside_a_folder(sandbox, *resolved)) return std::nullopt;
+    if (resolved && inside_a_folder(sandbox, *resolved)) {
+        if (!is_special(*resolved)) return std::nullopt;
+        return ReadRefusal{
+            std::string(what) + " " + quote(written, written.size()) + " is not a regular file",
+            {"it resolves to " + resolved->string()}};
+    }
     ReadRefusal refusal;
     // A path is quoted whole, however long: the user must see which file it is.
     refusal.message = std::string(what) + " " + quote(written, written.size()) +

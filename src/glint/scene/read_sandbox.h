@@ -5,6 +5,7 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <memory>
 #include <optional>
 #include <span>
 #include <string>
@@ -19,6 +20,11 @@ struct ReadSandbox {
     // The largest file of any kind the scene may read (`--max-file-size`); nothing: each kind's
     // own limit (kMaxSceneFileBytes, kMaxMeshFileBytes, ...).
     std::optional<std::uintmax_t> max_file_bytes;
+    // The files the scene read besides its own, resolved, each once, in the order first read
+    // (record_read): what a resume file checks for changes. Shared by the sandbox's copies, as
+    // Assimp's file system keeps one; a scene is loaded on one thread.
+    std::shared_ptr<std::vector<std::filesystem::path>> files_read =
+        std::make_shared<std::vector<std::filesystem::path>>();
 
     // The limit for a kind of file whose own limit is `kind_limit`.
     std::uintmax_t file_limit(std::uintmax_t kind_limit) const {
@@ -47,8 +53,13 @@ std::optional<std::filesystem::path> resolve_path(const std::filesystem::path& p
 // inside /a/b. Both are taken as they are; callers pass resolved paths.
 bool is_inside(const std::filesystem::path& path, const std::filesystem::path& folder);
 
-// Whether the sandbox lets the file at `path` (as the loader will open it) be read.
+// Whether the sandbox lets the file at `path` (as the loader will open it) be read: it lies
+// inside an allowed folder, and is a regular file if it exists (a pipe would block the open and
+// a device like /dev/zero never end).
 bool may_read(const ReadSandbox& sandbox, const std::filesystem::path& path);
+
+// Notes that the scene read `path` (a file the sandbox allowed) into sandbox.files_read.
+void record_read(const ReadSandbox& sandbox, const std::filesystem::path& path);
 
 // Why a path is refused, for the error the caller places (at the YAML key, the OBJ line, ...).
 struct ReadRefusal {

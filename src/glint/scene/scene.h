@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstdint>
+#include <filesystem>
 #include <optional>
 #include <span>
 #include <string>
@@ -93,6 +94,9 @@ struct SceneSources {
     std::string file;
     std::vector<TextPosition> materials, lights;
     LargeVector<TextPosition> objects;
+    // Every file the scene read besides its own (meshes, material libraries, glTF buffers,
+    // textures), resolved, in the order first read; filled by load_scene.
+    std::vector<std::filesystem::path> files_read;
 };
 
 struct Scene {

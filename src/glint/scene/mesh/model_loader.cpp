@@ -416,6 +416,7 @@ private:
         const std::string key = found->lexically_normal().string();
         if (auto it = textures_.find(key); it != textures_.end()) return it->second;
         try {
+            record_read(sandbox_, *found);
             return textures_[key] = std::make_shared<const Image>(
                        load_texture_image(*found, sandbox_.file_limit(kMaxTextureFileBytes)));
         } catch (const ImageError& e) {

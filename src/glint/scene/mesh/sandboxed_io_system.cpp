@@ -25,7 +25,10 @@ Assimp::IOStream* SandboxedIOSystem::Open(const char* file, const char* mode) {
     if (mode == nullptr || mode[0] != 'r' || std::string(mode).find('+') != std::string::npos) {
         return nullptr;
     }
-    return allowed(file) ? ClosingIOSystem::Open(file, mode) : nullptr;
+    if (!allowed(file)) return nullptr;
+    Assimp::IOStream* stream = ClosingIOSystem::Open(file, mode);
+    if (stream != nullptr) record_read(sandbox_, file);
+    return stream;
 }
 
 }  // namespace glint

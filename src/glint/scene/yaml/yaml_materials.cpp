@@ -54,6 +54,7 @@ Texture read_image_texture(const YamlSource& source, const ReadSandbox& sandbox,
     const std::string name = read_string(source, file.value, map.field("file"));
     const auto path = scene_file_path(source, sandbox, file.value, name, "texture");
     try {
+        record_read(sandbox, path);
         texture.image = std::make_shared<const Image>(
             load_texture_image(path, sandbox.file_limit(kMaxTextureFileBytes)));
     } catch (const ImageError& e) {
