@@ -249,7 +249,8 @@ int run_render(const RenderCommand& command) {
         Clock::time_point last_checkpoint = Clock::now();
         if (command.checkpoint_minutes) {
             const std::chrono::duration<double> interval(*command.checkpoint_minutes * 60);
-            options.after_pass = [&](const RenderState& so_far) {
+            // The interval by value: it goes out of scope before the render calls this.
+            options.after_pass = [&, interval](const RenderState& so_far) {
                 if (Clock::now() - last_checkpoint < interval) return;
                 save_progress(partial, resume, identity, so_far, so_far.film.resolve(),
                               command.ppm_ascii);
