@@ -66,10 +66,11 @@ void apply_image_options(const ImageOptions& c, RenderSettings& s) {
     }
     if (c.width) s.width = *c.width;
     if (c.height) s.height = *c.height;
-    if (std::int64_t(s.width) * s.height > kMaxImagePixels || s.width > kMaxImageSide ||
+    // What the command line asks is bounded by the ceilings alone (scene_limits.h).
+    if (std::int64_t(s.width) * s.height > kMaxRenderPixels || s.width > kMaxImageSide ||
         s.height > kMaxImageSide)
         throw UsageError{"image of " + std::to_string(s.width) + "x" + std::to_string(s.height) +
-                         " pixels is larger than the limit of " + std::to_string(kMaxImagePixels) +
+                         " pixels is larger than the limit of " + std::to_string(kMaxRenderPixels) +
                          " pixels"};
     if (!c.integrator.empty()) s.integrator = *integrator_from_name(c.integrator);
     if (!c.sampler.empty()) s.sampler = *sampler_from_name(c.sampler);

@@ -1,5 +1,6 @@
 // The options of the verbs that load a scene about what it may read: `--allow-read DIR`, the
-// folders besides its own (glint's sandbox, docs/reliability.md), and `--max-file-size SIZE`.
+// folders besides its own (glint's sandbox, docs/reliability.md), `--max-file-size SIZE`, and
+// the limits on what it may ask for (`--max-pixels`, `--max-samples`, `--max-ray-depth`).
 #pragma once
 
 #include <CLI/CLI.hpp>
@@ -10,15 +11,17 @@
 
 #include "glint/scene/load_scene.h"
 #include "size_option.h"
+#include "whole_number_option.h"
 
 namespace glint::cli {
 
 struct SceneReadOptions {
     std::vector<std::string> allow_read;         // folders the scene may read besides its own
     std::optional<std::uint64_t> max_file_size;  // none: each kind of file's own limit
+    SceneLimits limits;
 
     LoadOptions load_options() const {
-        return {{allow_read.begin(), allow_read.end()}, max_file_size};
+        return {{allow_read.begin(), allow_read.end()}, max_file_size, limits};
     }
 };
 
@@ -38,6 +41,25 @@ inline void add_scene_read_options(CLI::App& command, SceneReadOptions& options)
     add_size_option(command, "--max-file-size", options.max_file_size,
                     "Largest file the scene may read, itself, meshes and textures alike (textures "
                     "at most 2G); default: 64M for YAML, 1G for NFF and textures, 2G for meshes");
+    const SceneLimits defaults;
+    command
+        .add_option("--max-pixels", options.limits.image_pixels,
+                    "Most pixels the scene's image, and each image it reads, may have; default " +
+                        std::to_string(defaults.image_pixels))
+        ->type_name("N")
+        ->check(whole_number<std::int64_t>(1, kMaxRenderPixels));
+    command
+        .add_option("--max-samples", options.limits.samples_per_pixel,
+                    "Most samples per pixel the scene may ask for; default " +
+                        std::to_string(defaults.samples_per_pixel))
+        ->type_name("N")
+        ->check(whole_number(1, kMaxSamplesPerPixel));
+    command
+        .add_option(
+            "--max-ray-depth", options.limits.max_depth,
+            "Deepest ray tree the scene may ask for; default " + std::to_string(defaults.max_depth))
+        ->type_name("N")
+        ->check(whole_number(1, kMaxDepth));
 }
 
 }  // namespace glint::cli

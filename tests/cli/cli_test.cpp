@@ -104,7 +104,7 @@ TEST_F(Cli, UsageErrorsExitWithTwo) {
     EXPECT_EQ(run_glint("render").exit_code, 2);
     EXPECT_EQ(run_glint("paint x.yaml").exit_code, 2);
     EXPECT_EQ(run_glint("render " + scene("showcase.yaml") + " --width 0").exit_code, 2);
-    EXPECT_EQ(run_glint("render " + scene("showcase.yaml") + " --max-depth 999").exit_code, 2);
+    EXPECT_EQ(run_glint("render " + scene("showcase.yaml") + " --max-depth 2000").exit_code, 2);
 }
 
 TEST_F(Cli, RenderHelpNamesEverySceneFormat) {
@@ -118,9 +118,9 @@ TEST_F(Cli, RenderHelpNamesEverySceneFormat) {
 TEST_F(Cli, NonNumericOptionValuesAreNamedAsSuch) {
     const std::map<std::string, std::string> expected = {
         {"--width abc", "--width: expected a whole number from 1 to 65536, got \"abc\""},
-        {"--spp 1.5", "--spp: expected a whole number from 1 to 65536, got \"1.5\""},
+        {"--spp 1.5", "--spp: expected a whole number from 1 to 16777216, got \"1.5\""},
         {"--threads 2x", "--threads: expected a whole number from 0 to 4096, got \"2x\""},
-        {"--max-depth 65", "--max-depth: expected a whole number from 1 to 64, got \"65\""},
+        {"--max-depth 1025", "--max-depth: expected a whole number from 1 to 1024, got \"1025\""},
         {"--seed -1", "--seed: expected a whole number from 0 to 18446744073709551615, got \"-1\""},
     };
     for (const auto& [option, message] : expected) {
@@ -469,6 +469,38 @@ TEST_F(Cli, InfoReadsNffAndModelFiles) {
 
 // A scene reads only under its own folder unless --allow-read (repeatable, on render and bench)
 // names another; a folder that does not exist is bad usage.
+// A scene asking for more than a default limit is refused with the way to raise it; raised, it
+// renders (its samples replaced by --spp, which the limits do not bound).
+TEST_F(Cli, LimitsOnWhatASceneAsksAreRaisedByFlags) {
+    write_scene("deep.yaml",
+                "camera: {from: [0, 0, -5], at: [0, 0, 0]}\n"
+                "image: {width: 8, height: 6, samples: 70000, sampler: jittered, max_depth: 100}\n"
+                "objects: [{type: sphere, center: [0, 0, 0], radius: 1}]\n");
+    const std::string render = "render deep.yaml --spp 2 -q -o a.png";
+    const Outcome samples = run_glint(render);
+    EXPECT_EQ(samples.exit_code, 2);
+    EXPECT_NE(samples.err.find("deep.yaml:2:39: error: samples 70000 is more than the limit of "
+                               "65536"),
+              std::string::npos)
+        << samples.err;
+    EXPECT_NE(samples.err.find("note: raise the limit with --max-samples N"), std::string::npos);
+    const Outcome depth = run_glint(render + " --max-samples 70000");
+    EXPECT_EQ(depth.exit_code, 2);
+    EXPECT_NE(depth.err.find("max_depth 100 is more than the limit of 64"), std::string::npos)
+        << depth.err;
+    EXPECT_FALSE(fs::exists(dir_ / "a.png"));
+    const Outcome raised = run_glint(render + " --max-samples 70000 --max-ray-depth 100");
+    EXPECT_EQ(raised.exit_code, 0) << raised.err;
+    EXPECT_TRUE(fs::exists(dir_ / "a.png"));
+    const Outcome info = run_glint("info deep.yaml --max-samples 70000 --max-ray-depth 100");
+    EXPECT_EQ(info.exit_code, 0) << info.err;
+    for (const char* bad : {"--max-pixels 0", "--max-samples 20000000", "--max-ray-depth 2000"}) {
+        const Outcome usage = run_glint(render + " " + bad);
+        EXPECT_EQ(usage.exit_code, 2) << bad;
+        EXPECT_NE(usage.err.find("expected a whole number"), std::string::npos) << usage.err;
+    }
+}
+
 TEST_F(Cli, AllowReadLetsASceneReadAnotherFolder) {
     fs::create_directories(dir_ / "scene");
     fs::create_directories(dir_ / "models");
@@ -822,7 +854,8 @@ protected:
         return line;
     }
     // Starts the render, waits until `ready` holds, sends the signals; the exit status, or -1
-    // when the render ended before `ready` (a machine too fast for the test).
+    // when the render ended before `ready` (a machine too fast for the test; a failure if it
+    // did not end well).
     int interrupt(const std::vector<int>& signals, const std::vector<std::string>& more,
                   const std::function<bool()>& ready) const {
         const pid_t pid = spawn_glint(args(more));
@@ -830,7 +863,12 @@ protected:
         int status = 0;
         const auto deadline = std::chrono::steady_clock::now() + std::chrono::minutes(5);
         while (!ready()) {
-            if (waitpid(pid, &status, WNOHANG) == pid) return -1;
+            if (waitpid(pid, &status, WNOHANG) == pid) {
+                // Finished: too fast to be stopped, which is no failure; anything else is.
+                EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0)
+                    << "glint failed before it could be stopped: " << slurp(dir_ / "stderr.txt");
+                return -1;
+            }
             if (std::chrono::steady_clock::now() > deadline) {
                 kill(pid, SIGKILL);
                 waitpid(pid, &status, 0);

@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "bad_file_checks.h"
+#include "glint/scene/nff/nff_to_scene.h"
 
 namespace glint {
 namespace {
@@ -375,7 +376,7 @@ TEST(NffParser, PiecesReadInParallelGiveWhatOneParserGives) {
 // Malformed files in tests/scene/bad_nff/, one error each, stated in the file's first line as
 // `# error: LINE:COL: MESSAGE` (0:0 for an error without a location), with `# note: TEXT` lines
 // after it for text that one of the error's notes must contain. Each file is loaded as a
-// renderer would: load_nff, then require_view.
+// renderer would: load_nff_scene (load_nff, the pixel limit, then nff_to_scene).
 const std::filesystem::path kBadDir = kSource / "tests/scene/bad_nff";
 
 TEST(BadNffFiles, ThereAreAtLeast15) {
@@ -384,7 +385,7 @@ TEST(BadNffFiles, ThereAreAtLeast15) {
 
 TEST(BadNffFiles, EachGivesItsStatedError) {
     for (const auto& file : testing::files_with_extension(kBadDir, ".nff")) {
-        testing::expect_stated_error(file, [&] { require_view(load_nff(file)); });
+        testing::expect_stated_error(file, [&] { load_nff_scene(file); });
     }
 }
 

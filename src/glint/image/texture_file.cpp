@@ -116,7 +116,7 @@ const std::array<float, 256>& srgb8_table() {
 }  // namespace
 
 Image decode_texture_image(std::span<const unsigned char> file_bytes,
-                           const std::filesystem::path& name) {
+                           const std::filesystem::path& name, std::int64_t max_pixels) {
     if (file_bytes.size() > kMaxDecodableTextureBytes) {
         throw ImageError(name, "texture is larger than the decoder takes (2 GiB)");
     }
@@ -133,7 +133,7 @@ Image decode_texture_image(std::span<const unsigned char> file_bytes,
         throw ImageError(name, "not a PNG, JPEG, HDR, TGA or BMP image stb_image can read (" +
                                    stb_reason() + ")");
     }
-    check_image_size(name, width, height);
+    check_image_size(name, width, height, max_pixels);
     const bool hdr = stbi_is_hdr_from_memory(data, length);
     if (too_short_for_size(bytes, width, height)) {
         throw ImageError(name,
@@ -174,7 +174,8 @@ Image decode_texture_image(std::span<const unsigned char> file_bytes,
     return image;
 }
 
-Image load_texture_image(const std::filesystem::path& path, std::uintmax_t max_bytes) {
+Image load_texture_image(const std::filesystem::path& path, std::uintmax_t max_bytes,
+                         std::int64_t max_pixels) {
     max_bytes = std::min(max_bytes, kMaxDecodableTextureBytes);
     std::error_code ec;
     // A pipe or a device (/dev/zero) has no size to check and might never end.
@@ -187,7 +188,7 @@ Image load_texture_image(const std::filesystem::path& path, std::uintmax_t max_b
                                    " bytes, more than the limit of " + std::to_string(max_bytes));
     }
     const std::vector<unsigned char> bytes = read_whole_file(path);  // names the file on failure
-    return decode_texture_image(bytes, path);
+    return decode_texture_image(bytes, path, max_pixels);
 }
 
 }  // namespace glint

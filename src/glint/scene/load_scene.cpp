@@ -25,9 +25,10 @@ Scene load_scene(const std::filesystem::path& file, const LoadOptions& options) 
             {"scene formats are: .yaml, .yml (glint), .nff, .nff.gz (Haines' NFF), and "
              ".obj, .ply, .gltf, .glb, .stl (models)"});
     }
-    const ReadSandbox sandbox = make_read_sandbox(file, options.allow_read, options.max_file_bytes);
+    ReadSandbox sandbox = make_read_sandbox(file, options.allow_read, options.max_file_bytes);
+    sandbox.limits = options.limits;
     // An NFF file names no other files: only its own size is checked.
-    if (nff) return load_nff_scene(file, sandbox.file_limit(kMaxNffFileBytes));
+    if (nff) return load_nff_scene(file, sandbox.file_limit(kMaxNffFileBytes), options.limits);
     Scene scene = yaml ? load_yaml_scene(file, sandbox) : load_model_scene(file, sandbox);
     // A model scene's own file is among those Assimp opened.
     const auto own = resolve_path(file);

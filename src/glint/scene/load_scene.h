@@ -18,6 +18,8 @@ struct LoadOptions {
     // The largest file of any kind the scene may read, itself included; nothing: each kind's
     // own limit (docs/cli.md, "Limits").
     std::optional<std::uintmax_t> max_file_bytes;
+    // What the scene may ask for (scene_limits.h).
+    SceneLimits limits;
 };
 
 // .yaml and .yml (glint's format), .nff and .nff.gz (Haines' NFF), and the model files Assimp

@@ -12,6 +12,8 @@
 #include <string_view>
 #include <vector>
 
+#include "glint/scene/scene_limits.h"
+
 namespace glint {
 
 struct ReadSandbox {
@@ -20,6 +22,8 @@ struct ReadSandbox {
     // The largest file of any kind the scene may read (`--max-file-size`); nothing: each kind's
     // own limit (kMaxSceneFileBytes, kMaxMeshFileBytes, ...).
     std::optional<std::uintmax_t> max_file_bytes;
+    // What the scene may ask for: image size, samples, depth (and the size of images it reads).
+    SceneLimits limits;
     // The files the scene read besides its own, resolved, each once, in the order first read
     // (record_read): what a resume file checks for changes. Shared by the sandbox's copies, as
     // Assimp's file system keeps one; a scene is loaded on one thread.

@@ -12,11 +12,11 @@
 
 #include "glint/camera/camera_spec.h"
 #include "glint/geometry/shape.h"
-#include "glint/image/image_limits.h"  // kMaxImagePixels, shared with image files
 #include "glint/math/color.h"
 #include "glint/math/huge_page_allocator.h"
 #include "glint/sampling/filter.h"
 #include "glint/sampling/sampler.h"
+#include "glint/scene/scene_limits.h"
 #include "glint/shading/light.h"
 #include "glint/shading/material.h"
 
@@ -110,11 +110,5 @@ struct Scene {
     std::vector<std::string> warnings;
     SceneSources sources;
 };
-
-// Limits checked before memory is taken, so that an absurd scene is an error, not an outage.
-inline constexpr int kMaxImageSide = 65536;
-inline constexpr int kMaxSamplesPerPixel = 65536;
-inline constexpr int kMaxDepth = 64;
-inline constexpr int kMaxShadowRays = 4096;
 
 }  // namespace glint

@@ -418,7 +418,8 @@ private:
         try {
             record_read(sandbox_, *found);
             return textures_[key] = std::make_shared<const Image>(
-                       load_texture_image(*found, sandbox_.file_limit(kMaxTextureFileBytes)));
+                       load_texture_image(*found, sandbox_.file_limit(kMaxTextureFileBytes),
+                                          sandbox_.limits.image_pixels));
         } catch (const ImageError& e) {
             throw SceneError({found->string(), 0, 0}, e.detail, notes);
         }

@@ -55,8 +55,9 @@ class NffParser {
 public:
     // A parser of a piece after the first gives the objects before its first "f" the material
     // kInheritedMaterial rather than calling them an error.
-    NffParser(std::string_view text, const std::string& file_name, bool inherits_material = false)
-        : tokens_(text, file_name), inherits_material_(inherits_material) {
+    NffParser(std::string_view text, const std::string& file_name, std::int64_t max_pixels,
+              bool inherits_material = false)
+        : tokens_(text, file_name), max_pixels_(max_pixels), inherits_material_(inherits_material) {
         scene_.file_name = file_name;
         // The SPD's files take 10 to 100 bytes per object; the vector grows if there are more.
         scene_.objects.reserve(text.size() / 64);
@@ -311,7 +312,7 @@ private:
                 keyword, "a second view; a file has one",
                 {"the first view is at line " + std::to_string(scene_.view->location.line)});
         }
-        scene_.view = read_nff_view(tokens_, keyword);
+        scene_.view = read_nff_view(tokens_, keyword, max_pixels_);
     }
 
     [[noreturn]] void unknown_entity(const NffToken& keyword) const {
@@ -345,6 +346,7 @@ private:
     }
 
     NffTokenizer tokens_;
+    std::int64_t max_pixels_;
     bool inherits_material_;
     NffScene scene_;
     NffToken previous_;                    // the last entity's keyword
@@ -382,7 +384,7 @@ void shift(NffLocation& location, std::uint32_t lines) { location.line += lines;
 // material, a second view or background) returns nullopt, and the one parser reads the whole
 // file to say what is wrong where.
 std::optional<NffScene> parse_in_pieces(std::string_view text, const std::string& file_name,
-                                        std::size_t piece_bytes) {
+                                        std::size_t piece_bytes, std::int64_t max_pixels) {
     const std::vector<std::size_t> starts = piece_starts(text, piece_bytes);
     const std::size_t n = starts.size();
     if (n < 2) return std::nullopt;
@@ -393,7 +395,7 @@ std::optional<NffScene> parse_in_pieces(std::string_view text, const std::string
         const std::size_t end = k + 1 < n ? starts[k + 1] : text.size();
         const std::string_view piece = text.substr(starts[k], end - starts[k]);
         try {
-            pieces[k] = NffParser(piece, file_name, k > 0).parse();
+            pieces[k] = NffParser(piece, file_name, max_pixels, k > 0).parse();
         } catch (const SceneError&) {
             failed = true;
         } catch (const std::bad_alloc&) {
@@ -454,13 +456,14 @@ std::optional<NffScene> parse_in_pieces(std::string_view text, const std::string
 
 }  // namespace
 
-NffScene parse_nff(std::string_view text, const std::string& file_name, std::size_t piece_bytes) {
+NffScene parse_nff(std::string_view text, const std::string& file_name, std::size_t piece_bytes,
+                   std::int64_t max_pixels) {
     try {
         if (text.size() > piece_bytes) {
-            if (auto scene = parse_in_pieces(text, file_name, piece_bytes))
+            if (auto scene = parse_in_pieces(text, file_name, piece_bytes, max_pixels))
                 return std::move(*scene);
         }
-        return NffParser(text, file_name).parse();
+        return NffParser(text, file_name, max_pixels).parse();
     } catch (const SceneError&) {
         throw;
     } catch (const std::bad_alloc&) {
@@ -468,9 +471,10 @@ NffScene parse_nff(std::string_view text, const std::string& file_name, std::siz
     }
 }
 
-NffScene load_nff(const std::filesystem::path& file, std::uint64_t max_bytes) {
+NffScene load_nff(const std::filesystem::path& file, std::uint64_t max_bytes,
+                  std::int64_t max_pixels) {
     const std::string text = read_maybe_gzipped(file, max_bytes);
-    return parse_nff(text, file.string());
+    return parse_nff(text, file.string(), kNffPieceBytes, max_pixels);
 }
 
 const NffView& require_view(const NffScene& scene) {

@@ -7,6 +7,7 @@
 #include <string>
 #include <string_view>
 
+#include "glint/image/image_limits.h"  // kMaxImagePixels
 #include "glint/scene/nff/nff_scene.h"
 #include "glint/scene/scene_error.h"
 
@@ -26,13 +27,16 @@ inline constexpr std::int64_t kMaxNffPolygonVertices = 1'000'000;
 // checked: a malformed file gives a SceneError at the offending token. A file without a view
 // parses; require_view() says what is missing. Throws SceneError only.
 // Text longer than piece_bytes is read in pieces of about that size in parallel, with the same
-// result, errors included (a file with an error is read again in one piece to report it).
+// result, errors included (a file with an error is read again in one piece to report it). A view
+// of more than max_pixels is an error at its resolution (SceneLimits::image_pixels).
 NffScene parse_nff(std::string_view text, const std::string& file_name,
-                   std::size_t piece_bytes = kNffPieceBytes);
+                   std::size_t piece_bytes = kNffPieceBytes,
+                   std::int64_t max_pixels = kMaxImagePixels);
 
 // Reads a .nff file, or a gzip-compressed one (.nff.gz, recognised by its content), of at most
 // max_bytes once decompressed, and parses it. Throws SceneError only.
-NffScene load_nff(const std::filesystem::path& file, std::uint64_t max_bytes = kMaxNffFileBytes);
+NffScene load_nff(const std::filesystem::path& file, std::uint64_t max_bytes = kMaxNffFileBytes,
+                  std::int64_t max_pixels = kMaxImagePixels);
 
 // The view, or a SceneError saying that the file has none.
 const NffView& require_view(const NffScene& scene);

@@ -226,8 +226,9 @@ Scene nff_to_scene(const NffScene& nff) {
     return scene;
 }
 
-Scene load_nff_scene(const std::filesystem::path& file, std::uint64_t max_bytes) {
-    return nff_to_scene(load_nff(file, max_bytes));
+Scene load_nff_scene(const std::filesystem::path& file, std::uint64_t max_bytes,
+                     const SceneLimits& limits) {
+    return nff_to_scene(load_nff(file, max_bytes, limits.image_pixels));
 }
 
 }  // namespace glint

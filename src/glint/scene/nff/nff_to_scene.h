@@ -15,8 +15,9 @@ namespace glint {
 // Throws SceneError when the file has no view.
 Scene nff_to_scene(const NffScene& nff);
 
-// load_nff (plain or gzip-compressed, at most max_bytes uncompressed) then nff_to_scene. Throws
-// SceneError only.
-Scene load_nff_scene(const std::filesystem::path& file, std::uint64_t max_bytes = kMaxNffFileBytes);
+// load_nff (plain or gzip-compressed, at most max_bytes uncompressed) then nff_to_scene, with a
+// view of no more pixels than limits allow. Throws SceneError only.
+Scene load_nff_scene(const std::filesystem::path& file, std::uint64_t max_bytes = kMaxNffFileBytes,
+                     const SceneLimits& limits = {});
 
 }  // namespace glint

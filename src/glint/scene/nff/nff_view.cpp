@@ -12,7 +12,7 @@
 
 namespace glint {
 
-NffView read_nff_view(NffTokenizer& tokens, const NffToken& keyword) {
+NffView read_nff_view(NffTokenizer& tokens, const NffToken& keyword, std::int64_t max_pixels) {
     const auto point = [&](const NffEntity& e, const char* x, const char* y, const char* z) {
         const float px = tokens.number(e, {x});
         const float py = tokens.number(e, {y});
@@ -88,11 +88,13 @@ NffView read_nff_view(NffTokenizer& tokens, const NffToken& keyword) {
                                                          std::string(token.text));
                     }
                 }
-                if (width * height > kMaxImagePixels) {
-                    throw tokens.error_at(h, "the view's resolution " + std::string(w.text) +
-                                                 " x " + std::string(h.text) +
-                                                 " has more pixels than the limit of " +
-                                                 std::to_string(kMaxImagePixels));
+                if (width * height > max_pixels) {
+                    throw tokens.error_at(h,
+                                          "the view's resolution " + std::string(w.text) + " x " +
+                                              std::string(h.text) +
+                                              " has more pixels than the limit of " +
+                                              std::to_string(max_pixels),
+                                          {"raise the limit with --max-pixels N"});
                 }
                 v.width = int(width), v.height = int(height);
             }

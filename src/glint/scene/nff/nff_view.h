@@ -2,6 +2,7 @@
 #pragma once
 
 #include <array>
+#include <cstdint>
 #include <string_view>
 
 #include "glint/scene/nff/nff_scene.h"
@@ -18,8 +19,8 @@ inline constexpr const char* kNffViewOrder =
     "up x y z, angle degrees, hither distance, resolution width height";
 
 // Reads the six lines after the `v` keyword. Checks the angle (in (0, 180)), the resolution
-// (within glint's image limits), that at differs from from, and that up is not along the view.
-// Throws SceneError at the offending token.
-NffView read_nff_view(NffTokenizer& tokens, const NffToken& keyword);
+// (sides within glint's ceiling, at most max_pixels in all), that at differs from from, and that
+// up is not along the view. Throws SceneError at the offending token.
+NffView read_nff_view(NffTokenizer& tokens, const NffToken& keyword, std::int64_t max_pixels);
 
 }  // namespace glint

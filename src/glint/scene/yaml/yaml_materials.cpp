@@ -55,8 +55,8 @@ Texture read_image_texture(const YamlSource& source, const ReadSandbox& sandbox,
     const auto path = scene_file_path(source, sandbox, file.value, name, "texture");
     try {
         record_read(sandbox, path);
-        texture.image = std::make_shared<const Image>(
-            load_texture_image(path, sandbox.file_limit(kMaxTextureFileBytes)));
+        texture.image = std::make_shared<const Image>(load_texture_image(
+            path, sandbox.file_limit(kMaxTextureFileBytes), sandbox.limits.image_pixels));
     } catch (const ImageError& e) {
         throw source.error_at(file.value, "cannot read texture " + quote(name) + ": " + e.detail,
                               {"looked for " + path.string()});

@@ -75,7 +75,7 @@ Scene read_scene(const YamlSource& source, const ReadSandbox& sandbox, const YAM
         {"image", "camera", "ambient", "materials", "lights", "define", "objects"});
     Scene result;
     if (const MapEntry* image = section(scene, "image")) {
-        result.settings = read_image(source, image->value, scene.field("image"));
+        result.settings = read_image(source, image->value, scene.field("image"), sandbox.limits);
     }
     result.camera = read_camera(source, scene.require("camera").value, scene.field("camera"));
     result.ambient = scene.color("ambient", result.ambient);

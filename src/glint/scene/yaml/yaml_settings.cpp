@@ -68,9 +68,24 @@ AdaptiveSampling read_adaptive(const YamlSource& source, const YAML::Node& node,
     return a;
 }
 
+// The whole number at `key`, up to `ceiling`, refused above `limit` with the way to raise it. The
+// limit bounds what the file asks: the fallback is not checked against it.
+int limited_integer(const YamlSource& source, const MapReader& map, std::string_view key,
+                    int ceiling, int limit, const char* flag, int fallback) {
+    const int value = map.integer(key, {1, ceiling}, fallback);
+    if (map.has(key) && value > limit) {
+        throw source.error_at(map.require(key).value,
+                              std::string(key) + " " + std::to_string(value) +
+                                  " is more than the limit of " + std::to_string(limit),
+                              {"raise the limit with " + std::string(flag) + " N"});
+    }
+    return value;
+}
+
 }  // namespace
 
-RenderSettings read_image(const YamlSource& source, const YAML::Node& node, const Field& field) {
+RenderSettings read_image(const YamlSource& source, const YAML::Node& node, const Field& field,
+                          const SceneLimits& limits) {
     const MapReader map(
         source, node, field, "image",
         {"width", "height", "integrator", "samples", "sampler", "filter", "adaptive", "shadow_rays",
@@ -78,10 +93,12 @@ RenderSettings read_image(const YamlSource& source, const YAML::Node& node, cons
     RenderSettings s;
     s.width = map.integer("width", {1, kMaxImageSide}, s.width);
     s.height = map.integer("height", {1, kMaxImageSide}, s.height);
-    if (std::int64_t(s.width) * s.height > kMaxImagePixels) {
-        throw source.error_at(node, "image is too large: " + std::to_string(s.width) + " x " +
-                                        std::to_string(s.height) + " pixels, more than the " +
-                                        "limit of " + std::to_string(kMaxImagePixels));
+    if (std::int64_t(s.width) * s.height > limits.image_pixels) {
+        throw source.error_at(node,
+                              "image is too large: " + std::to_string(s.width) + " x " +
+                                  std::to_string(s.height) + " pixels, more than the " +
+                                  "limit of " + std::to_string(limits.image_pixels),
+                              {"raise the limit with --max-pixels N"});
     }
     const std::string integrator =
         map.choice("integrator", integrator_names(), "integrator", "integrators", "whitted");
@@ -91,7 +108,9 @@ RenderSettings read_image(const YamlSource& source, const YAML::Node& node, cons
             sampler_from_name(map.choice("sampler", sampler_names(), "sampler", "samplers", ""));
     if (const MapEntry* filter = map.find("filter"))
         s.filter = read_filter(source, filter->value, map.field("filter"));
-    s.samples_per_pixel = map.integer("samples", {1, kMaxSamplesPerPixel}, s.samples_per_pixel);
+    s.samples_per_pixel =
+        limited_integer(source, map, "samples", kMaxSamplesPerPixel, limits.samples_per_pixel,
+                        "--max-samples", s.samples_per_pixel);
     if (const MapEntry* adaptive = map.find("adaptive"))
         s.adaptive = read_adaptive(source, adaptive->value, map.field("adaptive"), s);
     if (!is_valid_sample_count(sampler_of(s), s.samples_per_pixel)) {
@@ -102,7 +121,8 @@ RenderSettings read_image(const YamlSource& source, const YAML::Node& node, cons
                               {"the jittered and sobol samplers take any number"});
     }
     s.shadow_rays = map.integer("shadow_rays", {1, kMaxShadowRays}, s.shadow_rays);
-    s.max_depth = map.integer("max_depth", {1, kMaxDepth}, s.max_depth);
+    s.max_depth = limited_integer(source, map, "max_depth", kMaxDepth, limits.max_depth,
+                                  "--max-ray-depth", s.max_depth);
     s.min_weight = map.number("min_weight", kUnitInterval, s.min_weight);
     s.background = map.color("background", s.background);
     s.transparent_shadows = map.boolean("transparent_shadows", s.transparent_shadows);

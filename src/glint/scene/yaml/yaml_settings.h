@@ -7,7 +7,8 @@
 
 namespace glint {
 
-RenderSettings read_image(const YamlSource& source, const YAML::Node& node, const Field& field);
+RenderSettings read_image(const YamlSource& source, const YAML::Node& node, const Field& field,
+                          const SceneLimits& limits);
 CameraSpec read_camera(const YamlSource& source, const YAML::Node& node, const Field& field);
 
 }  // namespace glint
