@@ -208,5 +208,32 @@ TEST(TextureFile, HugeClaimedSizeIsRefusedBeforeDecoding) {
     }
 }
 
+// The bits per pixel sit at another offset in the old 12-byte BMP header (16-bit sides): the
+// size check reads them there, so a whole file loads and one claiming more than it holds does not.
+TEST(TextureFile, OldHeaderBmpIsCheckedAtItsOwnOffsets) {
+    const auto u32 = [](std::uint32_t v) {
+        return std::string{char(v & 255), char((v >> 8) & 255), char((v >> 16) & 255),
+                           char((v >> 24) & 255)};
+    };
+    const auto u16 = [](std::uint16_t v) { return std::string{char(v & 255), char(v >> 8)}; };
+    const auto bmp = [&](std::uint16_t side, const std::string& pixels) {
+        return "BM" + u32(std::uint32_t(26 + pixels.size())) + u32(0) + u32(26) + u32(12) +
+               u16(side) + u16(side) + u16(1) + u16(24) + pixels;
+    };
+    // 2 x 2, blue-green-red, rows padded to 4 bytes: white and black, then black and white.
+    const std::string rows =
+        std::string("\xff\xff\xff\0\0\0\0\0", 8) + std::string("\0\0\0\xff\xff\xff\0\0", 8);
+    const Image image = load_texture_image(write_bytes("old.bmp", bmp(2, rows)));
+    ASSERT_EQ(image.width, 2);
+    EXPECT_FLOAT_EQ(image.at(0, 1).r, 1.0f);
+    EXPECT_FLOAT_EQ(image.at(1, 1).r, 0.0f);
+    try {
+        load_texture_image(write_bytes("old-huge.bmp", bmp(5000, rows)));
+        FAIL() << "decoded 5000 x 5000 pixels from 16 bytes";
+    } catch (const ImageError& e) {
+        EXPECT_NE(std::string(e.what()).find("truncated"), std::string::npos) << e.what();
+    }
+}
+
 }  // namespace
 }  // namespace glint

@@ -16,7 +16,10 @@
 #include <cstddef>
 #include <cstdint>
 #include <exception>
+#include <fstream>
+#include <optional>
 #include <string>
+#include <system_error>
 
 #include "glint/image/image_error.h"
 #include "glint/image/image_limits.h"
@@ -30,10 +33,56 @@ static_assert(sizeof(Color) == 3 * sizeof(float) && offsetof(Color, g) == sizeof
 
 constexpr const char* kChannels[3] = {"R", "G", "B"};
 
+// The attribute, if any, of the file's headers whose value claims more bytes than the file has
+// left: OpenEXR allocates a value of an unknown type at its claimed size before reading it
+// (1.8 GB for a 108-byte file). An attribute is a name and a type, each ended by a NUL, a 32-bit
+// size and the value; an empty name ends a header, and an empty header the list of a multi-part
+// file's. Damage of any other kind is left to OpenEXR, which reports it.
+std::optional<std::string> exr_attribute_overrun(const std::filesystem::path& path) {
+    std::ifstream in(path, std::ios::binary);
+    std::error_code ec;
+    const auto file_size = std::filesystem::file_size(path, ec);
+    if (!in || ec) return std::nullopt;
+    unsigned char start[8];
+    if (!in.read(reinterpret_cast<char*>(start), 8) ||
+        !Imf::isImfMagic(reinterpret_cast<char*>(start)))
+        return std::nullopt;
+    const bool multi_part = (start[5] & 0x10) != 0;  // version flags, bit 12
+    const auto text = [&](std::string& s) {          // a NUL-ended string of at most 255 bytes
+        s.clear();
+        for (char c; in.get(c);) {
+            if (c == '\0') return true;
+            if (s.size() == 255) return false;
+            s += c;
+        }
+        return false;
+    };
+    for (bool first = true;; first = false) {
+        std::string name, type;
+        if (!text(name)) return std::nullopt;
+        if (name.empty()) {  // the end of a header: the next one's first name, or the end
+            if (!multi_part || first) return std::nullopt;
+            if (!text(name) || name.empty()) return std::nullopt;
+        }
+        unsigned char size_bytes[4];
+        if (!text(type) || !in.read(reinterpret_cast<char*>(size_bytes), 4)) return std::nullopt;
+        const std::int64_t size =
+            std::int32_t(std::uint32_t(size_bytes[0]) | std::uint32_t(size_bytes[1]) << 8 |
+                         std::uint32_t(size_bytes[2]) << 16 | std::uint32_t(size_bytes[3]) << 24);
+        const auto at = std::int64_t(in.tellg());
+        if (size < 0 || size > std::int64_t(file_size) - at)
+            return "an attribute claims " + std::to_string(size) + " bytes, more than the " +
+                   std::to_string(std::int64_t(file_size) - at) + " the file has left";
+        in.seekg(size, std::ios::cur);
+    }
+}
+
 // The first part's header, read alone: Imf::InputFile's constructor allocates line and tile
 // buffers as large as the header claims, before glint could refuse an absurd size. Files whose
 // header does not parse are left to InputFile, which says what is wrong with them.
 void check_exr_header(const std::filesystem::path& path) {
+    if (const auto overrun = exr_attribute_overrun(path))
+        throw ImageError(path, "corrupt EXR header: " + *overrun);
     Imf::Header header;
     try {
         Imf::StdIFStream stream(path.c_str());

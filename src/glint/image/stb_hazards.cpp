@@ -1,6 +1,7 @@
 // The walks through texture data that find what stb_image would hang on or overflow with.
 #include "glint/image/stb_hazards.h"
 
+#include <algorithm>
 #include <cstddef>
 #include <cstdint>
 #include <string_view>
@@ -91,19 +92,36 @@ std::uint64_t png_bytes(std::span<const unsigned char> bytes, std::uint64_t widt
     return height * row / 1032;
 }
 
+// Whether a PNG chunk (a 4-byte length, a 4-byte type, the data, a 4-byte CRC) claims more bytes
+// than the file has left: stb grows its buffer for an IDAT chunk's claimed length before reading
+// it (2 GiB for a 185-byte file).
+bool png_chunk_overruns(std::span<const unsigned char> bytes) {
+    for (std::size_t p = 8; p + 8 <= bytes.size();) {
+        const std::uint64_t length = big_endian32(bytes, p);
+        if (length + 12 > bytes.size() - p) return true;
+        if (starts_with(bytes.subspan(p + 4), "IEND")) return false;
+        p += 12 + std::size_t(length);
+    }
+    return false;
+}
+
 }  // namespace
 
 bool too_short_for_size(std::span<const unsigned char> bytes, int width, int height) {
     const std::uint64_t w = std::uint64_t(width), h = std::uint64_t(height), pixels = w * h;
     std::uint64_t least = 0;
     if (starts_with(bytes, "\x89PNG")) {
+        if (png_chunk_overruns(bytes)) return true;
         least = png_bytes(bytes, w, h);
     } else if (is_jpeg(bytes)) {
         // Every 8 x 8 block of the full-resolution component codes its DC term in 1 bit or more.
         least = pixels / 512;
     } else if (starts_with(bytes, "BM")) {
         if (bytes.size() < 30) return true;  // the header ends before the bits per pixel
-        const unsigned bits = bytes[28] | unsigned(bytes[29]) << 8;
+        // The bits per pixel follow 16-bit sides in the old 12-byte header, 32-bit ones in the
+        // others; a count of 0 (not one stb reads) is taken as 1, the fewest.
+        const std::size_t at = bytes[14] == 12 && bytes[15] == 0 ? 24 : 28;
+        const unsigned bits = std::max(1u, bytes[at] | unsigned(bytes[at + 1]) << 8);
         least = h * ((w * bits + 7) / 8);  // stb reads no run-length BMPs
     } else if (starts_with(bytes, "#?")) {
         // A run-length scanline: a 4-byte header, then per channel 2 bytes a run of up to 127.

@@ -20,7 +20,8 @@ std::optional<std::string> hdr_hang(std::span<const unsigned char> bytes, int wi
 // Whether the file is too short for the size its header claims, by the most pixels its format
 // can pack into a byte: stb decodes every pixel, past the end of the data too, so a file of a
 // few hundred bytes claiming hundreds of millions of pixels would take gigabytes and minutes
-// before glint could refuse it as truncated.
+// before glint could refuse it as truncated. A PNG chunk longer than the rest of the file is
+// truncation too.
 bool too_short_for_size(std::span<const unsigned char> bytes, int width, int height);
 
 // The PNG without its empty IDAT chunks, or nothing when it has none: stb's PNG decoder passes
