@@ -467,8 +467,6 @@ TEST_F(Cli, InfoReadsNffAndModelFiles) {
     EXPECT_NE(mesh.out.find("Triangles    12\n"), std::string::npos) << mesh.out;
 }
 
-// A scene reads only under its own folder unless --allow-read (repeatable, on render and bench)
-// names another; a folder that does not exist is bad usage.
 // A scene asking for more than a default limit is refused with the way to raise it; raised, it
 // renders (its samples replaced by --spp, which the limits do not bound).
 TEST_F(Cli, LimitsOnWhatASceneAsksAreRaisedByFlags) {
@@ -501,6 +499,8 @@ TEST_F(Cli, LimitsOnWhatASceneAsksAreRaisedByFlags) {
     }
 }
 
+// A scene reads only under its own folder unless --allow-read (repeatable, on render and bench)
+// names another; a folder that does not exist is bad usage.
 TEST_F(Cli, AllowReadLetsASceneReadAnotherFolder) {
     fs::create_directories(dir_ / "scene");
     fs::create_directories(dir_ / "models");
