@@ -6,6 +6,7 @@
 #include <cstdint>
 
 #include "glint/sampling/sampler.h"
+#include "glint/scene/settings_problem.h"
 #include "usage_error.h"
 #include "whole_number_option.h"
 
@@ -81,13 +82,14 @@ void apply_image_options(const ImageOptions& c, RenderSettings& s) {
         s.filter = filter;
     }
     if (c.spp) s.samples_per_pixel = *c.spp;
-    if (!is_valid_sample_count(sampler_of(s), s.samples_per_pixel))
-        throw UsageError{
-            "samples per pixel must be a square number (1, 4, 9, 16, ...) for the "
-            "regular sampler, got " +
-            std::to_string(s.samples_per_pixel) +
-            " (the jittered and sobol samplers take any number)"};
     if (c.max_depth) s.max_depth = *c.max_depth;
+    // The scene file's own checks, on what the options made of its settings.
+    if (const std::optional<SettingsProblem> problem = settings_problem(s)) {
+        std::string text = "the scene's image settings with" + image_options_arguments(c) + ": " +
+                           problem->message;
+        for (const std::string& note : problem->notes) text += " (" + note + ")";
+        throw UsageError{text};
+    }
 }
 
 }  // namespace glint::cli

@@ -23,8 +23,9 @@ void add_image_options(CLI::App& command, ImageOptions& options);
 std::string image_options_arguments(const ImageOptions& options);
 
 // The scene's settings with the options applied; a lone width or height keeps the scene's
-// aspect ratio. Throws UsageError for an image over the limits or a sample count the sampler
-// cannot take.
+// aspect ratio. Throws UsageError for an image over the limits or settings that a scene file
+// could not hold either (settings_problem: a sample count the sampler cannot take, adaptive
+// sampling with the regular sampler or below its min_samples).
 void apply_image_options(const ImageOptions& options, RenderSettings& settings);
 
 }  // namespace glint::cli

@@ -565,11 +565,39 @@ TEST_F(Cli, BadNffExitsWithTwoAtTheOffendingToken) {
 TEST_F(Cli, NonSquareSampleCountIsRejectedForTheRegularSamplerOnly) {
     const Outcome r = run_glint("render " + scene("showcase.yaml") + " --spp 5");
     EXPECT_EQ(r.exit_code, 2);
-    EXPECT_NE(r.err.find("samples per pixel must be a square number"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("with --spp 5: samples must be a square number"), std::string::npos)
+        << r.err;
     const Outcome jittered =
         run_glint("render " + scene("showcase.yaml") +
                   " --spp 5 --sampler jittered --width 16 -q -o " + (dir_ / "five.png").string());
     EXPECT_EQ(jittered.exit_code, 0) << jittered.err;
+}
+
+// What a scene file may not ask for, the command line may not either: the same check of the
+// settings as a whole, on the scene's settings with the options applied.
+TEST_F(Cli, OptionsCannotGetRoundTheSceneFilesChecksOfAdaptiveSampling) {
+    const std::string adaptive = scene("features/adaptive.yaml");  // min_samples 16, samples 256
+    const Outcome regular = run_glint("render " + adaptive + " --sampler regular --spp 16");
+    EXPECT_EQ(regular.exit_code, 2);
+    EXPECT_NE(regular.err.find("with --spp 16 --sampler regular: adaptive sampling needs the "
+                               "jittered or sobol sampler"),
+              std::string::npos)
+        << regular.err;
+    const Outcome few = run_glint("render " + adaptive + " --spp 8");
+    EXPECT_EQ(few.exit_code, 2);
+    EXPECT_NE(few.err.find("with --spp 8: adaptive min_samples (16) exceeds the image's samples "
+                           "(8)"),
+              std::string::npos)
+        << few.err;
+    // explain takes the same options through the same check.
+    const Outcome explained =
+        run_glint("explain " + adaptive + " --pixel 0,0 --sampler regular --spp 16");
+    EXPECT_EQ(explained.exit_code, 2);
+    EXPECT_NE(explained.err.find("needs the jittered or sobol sampler"), std::string::npos)
+        << explained.err;
+    // At min_samples the render goes ahead.
+    const Outcome ok = run_glint("render " + adaptive + " --spp 16 --width 24 -q -o ok.png");
+    EXPECT_EQ(ok.exit_code, 0) << ok.err;
 }
 
 // The output is checked before the scene is even read (here it does not exist), so a path that

@@ -2,6 +2,9 @@
 // to the most, the image of samples taken says so, and the result does not depend on threads.
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <vector>
+
 #include "glint/render/render.h"
 
 namespace glint {
@@ -68,6 +71,81 @@ TEST(AdaptiveSampling, ImagesAndCountsDoNotDependOnThreads) {
     const RenderResult a = render(world, one), b = render(world, two);
     EXPECT_EQ(a.image.pixels, b.image.pixels);
     EXPECT_EQ(a.samples_taken.pixels, b.samples_taken.pixels);
+}
+
+// A pixel's red channel over renders with several seeds: its mean and the variance of that mean.
+struct PixelMeans {
+    std::vector<double> mean, variance_of_mean;
+};
+
+PixelMeans render_means(const Scene& scene, int renders, std::uint64_t first_seed) {
+    const World world(scene);
+    const std::size_t pixels = std::size_t(scene.settings.width) * scene.settings.height;
+    std::vector<double> sum(pixels), squares(pixels);
+    for (int i = 0; i < renders; ++i) {
+        RenderOptions options;
+        options.seed = first_seed + std::uint64_t(i);
+        const Image image = render(world, options).image;
+        for (std::size_t p = 0; p < pixels; ++p) {
+            sum[p] += image.pixels[p].r;
+            squares[p] += double(image.pixels[p].r) * image.pixels[p].r;
+        }
+    }
+    PixelMeans m;
+    for (std::size_t p = 0; p < pixels; ++p) {
+        const double mean = sum[p] / renders;
+        const double variance = std::max(0.0, (squares[p] - renders * mean * mean) / (renders - 1));
+        m.mean.push_back(mean);
+        m.variance_of_mean.push_back(variance / renders);
+    }
+    return m;
+}
+
+// Adaptive against non-adaptive renders, pixel by pixel, with each filter: the mean of adaptive
+// renders over seeds agrees with that of non-adaptive renders of many samples, within the noise
+// of both. Splatted through a filter wider than a pixel, a background pixel beside the floor
+// that stopped at the fewest samples took most of its weight from its neighbours' many samples.
+// The threshold is low enough that only flat pixels stop early: a noisy pixel that stops when
+// its first samples happen to agree is biased whatever the filter.
+TEST(AdaptiveSampling, AgreesWithTheNonAdaptiveImagePixelByPixelWithEveryFilter) {
+    constexpr int kMost = 64, kFewest = 8, kAdaptiveRenders = 8;
+    constexpr int kReferenceSamples = 256, kReferenceRenders = 4;
+    const FilterSpec filters[] = {{FilterKind::box, 0.5f},
+                                  {FilterKind::box, 1},
+                                  {FilterKind::tent, 1},
+                                  {FilterKind::gaussian, 1.5f},
+                                  {FilterKind::mitchell, 2}};
+    for (const FilterSpec& filter : filters) {
+        Scene adaptive = half_noisy(kMost, kFewest);
+        adaptive.settings.adaptive->threshold = 0.005f;
+        adaptive.settings.filter = filter;
+        Scene reference = adaptive;
+        reference.settings.adaptive.reset();
+        reference.settings.samples_per_pixel = kReferenceSamples;
+        const PixelMeans a = render_means(adaptive, kAdaptiveRenders, 1);
+        const PixelMeans r = render_means(reference, kReferenceRenders, 100);
+        // Near the image's edge the adaptive pixels' filter reaches past it, where the splatted
+        // ones have no samples (docs/scene-format.md#adaptive-sampling).
+        const int border = int(std::ceil(filter.radius - 0.5f));
+        const int width = adaptive.settings.width, height = adaptive.settings.height;
+        int failures = 0;
+        for (int y = border; y < height - border; ++y)
+            for (int x = border; x < width - border; ++x) {
+                const std::size_t p = std::size_t(y) * width + x;
+                // Five standard errors, and a little for the bias of stopping on the samples
+                // themselves (a pixel stops when its samples happen to agree).
+                const double allowed =
+                    5 * std::sqrt(a.variance_of_mean[p] + r.variance_of_mean[p]) +
+                    0.01 * r.mean[p] + 1e-4;
+                if (std::abs(a.mean[p] - r.mean[p]) > allowed) {
+                    ++failures;
+                    ADD_FAILURE() << "filter " << int(filter.kind) << " radius " << filter.radius
+                                  << ": pixel (" << x << ", " << y << ") adaptive " << a.mean[p]
+                                  << ", non-adaptive " << r.mean[p] << ", allowed " << allowed;
+                }
+                if (failures > 10) return;
+            }
+    }
 }
 
 TEST(AdaptiveSampling, WithoutItEveryPixelTakesEverySample) {

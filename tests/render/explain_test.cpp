@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstdio>
 #include <cstring>
 #include <string>
@@ -81,6 +82,54 @@ TEST_P(ExplainScenes, TreeGivesTheRenderedPixelToTheLastBit) {
 
 INSTANTIATE_TEST_SUITE_P(Scenes, ExplainScenes, ::testing::ValuesIn(testing::kRecorderTestScenes),
                          testing::scene_test_name);
+
+// Under adaptive sampling each sample counts for its own pixel alone, with the filter's weight
+// that explain shows: the pixel is its samples' weighted mean, to the last bit.
+TEST(Explain, AnAdaptivePixelIsTheWeightedMeanOfItsOwnSamples) {
+    Scene scene = load_scene(std::string(GLINT_SOURCE_DIR) + "/scenes/features/adaptive.yaml");
+    scene.settings.width = 16;
+    scene.settings.height = 9;
+    scene.settings.samples_per_pixel = 32;
+    scene.settings.adaptive->min_samples = 4;
+    for (const FilterSpec filter :
+         {FilterSpec{FilterKind::gaussian, 1.5f}, FilterSpec{FilterKind::mitchell, 2}}) {
+        scene.settings.filter = filter;
+        const World world(scene);
+        RenderOptions options;
+        options.seed = 2;
+        options.record_samples_taken = true;
+        const RenderResult result = render(world, options);
+        int negative = 0;
+        for (int y = 0; y < scene.settings.height; ++y)
+            for (int x = 0; x < scene.settings.width; ++x) {
+                const int taken = int(result.samples_taken.at(x, y).r);
+                Color sum;
+                float weights = 0;
+                for (int s = 0; s < taken; ++s) {
+                    const RayTree tree = explain(world, {x, y, s, options.seed});
+                    ASSERT_TRUE(tree.filter_weight);
+                    // Drawn around the pixel's centre, within the filter's radius.
+                    EXPECT_LE(std::abs(tree.film.x - (x + 0.5f)), filter.radius);
+                    EXPECT_LE(std::abs(tree.film.y - (y + 0.5f)), filter.radius);
+                    sum += tree.sample_value * *tree.filter_weight;
+                    weights += *tree.filter_weight;
+                    negative += *tree.filter_weight < 0;
+                }
+                ASSERT_TRUE(same_bits(sum / weights, result.image.at(x, y)))
+                    << "pixel " << x << "," << y << ": the trees give " << text_of(sum / weights)
+                    << ", the render " << text_of(result.image.at(x, y));
+            }
+        // Mitchell's negative lobes weigh some samples negatively.
+        if (filter.kind == FilterKind::mitchell) {
+            EXPECT_GT(negative, 0);
+        }
+        const RayTree tree = explain(world, {3, 4, 1, options.seed});
+        EXPECT_NE(ray_tree_text(tree).find("counting for this pixel alone with the filter's "
+                                           "weight"),
+                  std::string::npos);
+        EXPECT_NE(ray_tree_json(tree).find("\"filter_weight\": "), std::string::npos);
+    }
+}
 
 // The notes' "Strahl-Kugel Schnitt, Beispiel": P0 = (1 -2 -1), R || (1 2 4), M = (3 0 5),
 // r = 3 gives t1 = 3.744, S1 = (1.816 -0.368 2.269), N1 = (-0.395 -0.123 -0.910). The eye ray of

@@ -47,10 +47,11 @@ TEST(MemoryEstimate, CountsEveryTriangleAndEveryPixel) {
     // Fixed-point sums: four 128-bit integers a pixel.
     EXPECT_EQ(estimate_render_memory(scene, AccelKind::bvh).film,
               pixels * (64 + 4 + 12 + 4) + buffers);
-    // Adaptive sampling keeps each pixel's error: a count, a mean and a sum of squares.
+    // Adaptive sampling keeps each pixel's error: a count, a mean and a sum of squares; its
+    // samples count for their own pixels alone, in float sums.
     scene.settings.adaptive = AdaptiveSampling{0.01f, 16};
     EXPECT_EQ(estimate_render_memory(scene, AccelKind::bvh).film,
-              pixels * (64 + 4 + 24 + 12 + 4) + buffers);
+              pixels * (16 + 4 + 24 + 12 + 4) + buffers);
     EXPECT_EQ(box.total(), box.acceleration + box.film);
 }
 

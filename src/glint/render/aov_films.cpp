@@ -2,14 +2,15 @@
 
 namespace glint {
 
-AovFilms::AovFilms(AovSet set, int width, int height, const FilterSpec& filter)
-    : set_(set), width_(width), height_(height) {
+AovFilms::AovFilms(AovSet set, int width, int height, const FilterSpec& filter,
+                   bool importance_sampled)
+    : set_(set), width_(width), height_(height), importance_sampled_(importance_sampled) {
     const std::size_t pixels = std::size_t(width) * std::size_t(height);
     for (const Aov a : set.list()) {
         switch (aov_info(a).kind) {
             case AovKind::surface:
             case AovKind::sample_mean:
-                films_.emplace_back(a, Film(width, height, filter));
+                films_.emplace_back(a, Film(width, height, filter, importance_sampled));
                 break;
             case AovKind::id:
                 (a == Aov::object ? objects_ : materials_).assign(pixels, -1);
@@ -32,15 +33,20 @@ void AovFilms::merge(const AovTile& tile) {
     for (std::size_t i = 0; i < films_.size(); ++i) films_[i].second.merge(tile.tiles_[i].second);
 }
 
-void AovTile::add(Point2 p, int x, int y, int sample, const AovSample& a) {
+void AovTile::add(Point2 p, int x, int y, int sample, float weight, const AovSample& a) {
+    const bool own_pixel = films_->importance_sampled_;
     // The filter's weights once for every film: they would cost more than the rest.
     const SampleFootprint footprint =
-        tiles_.empty() ? SampleFootprint{} : tiles_.front().second.footprint(p);
+        tiles_.empty() || own_pixel ? SampleFootprint{} : tiles_.front().second.footprint(p);
     for (auto& [aov, tile] : tiles_) {
         // What the eye ray hit averages over the samples that hit something.
         if (aov_info(aov).kind == AovKind::surface && !a.hit) continue;
         const Color value = a.value(aov);
-        if (is_valid_sample(value)) tile.add_sample_through(footprint, value);
+        if (!is_valid_sample(value)) continue;
+        if (own_pixel)
+            tile.add_to_pixel(x, y, weight, value);
+        else
+            tile.add_sample_through(footprint, value);
     }
     if (sample != 0) return;
     const std::size_t pixel = std::size_t(y) * std::size_t(films_->width_) + std::size_t(x);

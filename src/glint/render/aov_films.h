@@ -26,8 +26,9 @@ class AovFilms;
 // A tile's part of every film, filled by one render thread.
 class AovTile {
 public:
-    // Adds the sample taken at film position p of pixel (x, y), its index `sample`.
-    void add(Point2 p, int x, int y, int sample, const AovSample& a);
+    // Adds the sample taken at film position p of pixel (x, y), its index `sample`, of filter
+    // weight `weight` under filter importance sampling (1 otherwise).
+    void add(Point2 p, int x, int y, int sample, float weight, const AovSample& a);
 
 private:
     friend class AovFilms;
@@ -38,7 +39,9 @@ private:
 class AovFilms {
 public:
     AovFilms() = default;  // no variables
-    AovFilms(AovSet set, int width, int height, const FilterSpec& filter);
+    // importance_sampled as for Film.
+    AovFilms(AovSet set, int width, int height, const FilterSpec& filter,
+             bool importance_sampled = false);
 
     const AovSet& set() const { return set_; }
     bool empty() const { return set_.empty(); }
@@ -55,6 +58,7 @@ private:
     friend class AovTile;
     AovSet set_;
     int width_ = 0, height_ = 0;
+    bool importance_sampled_ = false;
     std::vector<std::pair<Aov, Film>> films_;
     std::vector<std::int32_t> objects_, materials_;  // -1: missed, or no sample yet
 };

@@ -1,6 +1,8 @@
 // One sample traced as render_tile traces it, with a recorder attached to the integrator.
 #include "glint/render/explain.h"
 
+#include <optional>
+
 #include "glint/render/distributed.h"
 #include "glint/render/eye_sample.h"
 #include "glint/render/ray_tree_recorder.h"
@@ -30,7 +32,9 @@ RayTree explain(const World& world, const PixelSample& which) {
         std::uint64_t(which.y) * std::uint64_t(settings.width) + std::uint64_t(which.x);
     PixelPatterns patterns(sampler, pixel);
     SampleStream stream(patterns, std::uint32_t(which.sample));
-    const EyeSample eye = eye_sample(camera, stream, which.x, which.y);
+    std::optional<FilterSampling> filter;
+    if (importance_samples_filter(settings)) filter.emplace(filter_of(settings));
+    const EyeSample eye = eye_sample(camera, stream, which.x, which.y, filter ? &*filter : nullptr);
 
     RayTree tree;
     tree.x = which.x;
@@ -39,6 +43,7 @@ RayTree explain(const World& world, const PixelSample& which) {
     tree.seed = which.seed;
     tree.integrator = integrator_name(settings.integrator);
     tree.film = eye.film;
+    if (filter) tree.filter_weight = eye.weight;
     tree.draws.push_back({"pixel", kPixelDimension, eye.offset});
     if (camera.has_lens()) tree.draws.push_back({"lens", kLensDimension, eye.lens});
     if (camera.has_shutter())

@@ -4,23 +4,43 @@
 
 #include "glint/camera/camera.h"
 #include "glint/math/ray.h"
+#include "glint/sampling/filter_sampling.h"
 #include "glint/sampling/sampler.h"
+#include "glint/scene/scene.h"
 
 namespace glint {
 
+// Whether a render draws its samples by filter importance sampling, each counting for its own
+// pixel alone: under adaptive sampling, where a splatted pixel that stopped early would be
+// pulled towards the colours of neighbours that took more samples. The one-pixel box splats
+// into no other pixel, and needs none.
+inline bool importance_samples_filter(const RenderSettings& settings) {
+    return settings.adaptive && !is_one_pixel_box(filter_of(settings));
+}
+
 struct EyeSample {
-    Point2 offset;  // the sample's place in the pixel, [0,1)^2: the pixel dimension's numbers
+    Point2 offset;  // the pixel dimension's numbers, [0,1)^2: the sample's place in the pixel
     Point2 film;    // on the film, in pixels
+    float weight;   // the filter's weight under filter importance sampling; else 1
     Point2 lens;    // the lens dimension's numbers; (1/2, 1/2), none drawn, for a pinhole
     float time_u;   // the time dimension's number; 0, none drawn, when the shutter is closed
     float time;     // the moment; the shutter's opening when it does not move
     Ray ray;
 };
 
-inline EyeSample eye_sample(const Camera& camera, const SampleStream& stream, int x, int y) {
+// With `filter`, the pixel's numbers are drawn through filter importance sampling, and the
+// film position may lie in a neighbouring pixel or beyond the image's edge.
+inline EyeSample eye_sample(const Camera& camera, const SampleStream& stream, int x, int y,
+                            const FilterSampling* filter = nullptr) {
     EyeSample e;
     e.offset = stream.get_2d(kPixelDimension);
     e.film = {float(x) + e.offset.x, float(y) + e.offset.y};
+    e.weight = 1;
+    if (filter) {
+        const FilterSample f = filter->sample(e.offset);
+        e.film = {float(x) + f.position.x, float(y) + f.position.y};
+        e.weight = f.weight;
+    }
     // A pinhole and a closed shutter draw no numbers for the lens and the time.
     e.lens = camera.has_lens() ? stream.get_2d(kLensDimension) : Point2{0.5f, 0.5f};
     e.time_u = 0;

@@ -49,9 +49,9 @@ BadSamples& BadSamples::operator+=(const BadSamples& o) {
     return *this;
 }
 
-FilmTile::FilmTile(const Tile& tile, int image_width, int image_height, const Filter& filter)
-    : filter_(&filter),
-      one_pixel_(filter.spec().kind == FilterKind::box && filter.radius() == 0.5f) {
+FilmTile::FilmTile(const Tile& tile, int image_width, int image_height, const Filter& filter,
+                   bool importance_sampled)
+    : filter_(&filter), one_pixel_(importance_sampled || is_one_pixel_box(filter.spec())) {
     if (one_pixel_) {
         region_ = tile;
         box_sums_.resize(std::size_t(width()) * std::size_t(region_.y1 - region_.y0));
@@ -118,11 +118,12 @@ Color resolved(const PixelSum& s) {
 
 }  // namespace
 
-Film::Film(int width, int height, const FilterSpec& filter)
+Film::Film(int width, int height, const FilterSpec& filter, bool importance_sampled)
     : width_(width),
       height_(height),
       filter_(filter),
-      one_pixel_(filter.kind == FilterKind::box && filter.radius == 0.5f) {
+      importance_sampled_(importance_sampled),
+      one_pixel_(importance_sampled || is_one_pixel_box(filter)) {
     if (one_pixel_) {
         box_sums_.resize(std::size_t(width) * height);
     } else {
@@ -131,7 +132,7 @@ Film::Film(int width, int height, const FilterSpec& filter)
 }
 
 FilmTile Film::make_tile(const Tile& tile) const {
-    FilmTile film_tile(tile, width_, height_, filter_);
+    FilmTile film_tile(tile, width_, height_, filter_, importance_sampled_);
     if (one_pixel_) {
         const Tile& r = film_tile.region();
         for (int y = r.y0; y < r.y1; ++y)
@@ -167,7 +168,7 @@ Image Film::resolve() const {
     Image image(width_, height_);
     if (one_pixel_) {
         for (std::size_t i = 0; i < box_sums_.size(); ++i)
-            if (const BoxSum& s = box_sums_[i]; s.count > 0) image.pixels[i] = s.sum / s.count;
+            if (const BoxSum& s = box_sums_[i]; s.weight > 0) image.pixels[i] = s.sum / s.weight;
         return image;
     }
     for (std::size_t i = 0; i < sums_.size(); ++i) image.pixels[i] = resolved(sums_[i]);

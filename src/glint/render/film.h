@@ -3,7 +3,9 @@
 // is exact and the image is the same bit for bit whatever order the tiles, threads, passes or
 // machines add their samples in. A box of radius 1/2 (Whitted's film) keeps each sample in its
 // own pixel, whose samples all arrive from one tile in sample order, pass after pass: plain float
-// sums are as deterministic there, and cheaper.
+// sums are as deterministic there, and cheaper. So does filter importance sampling (adaptive
+// sampling's film, filter_sampling.h): the filter shapes where a pixel's samples are taken and
+// how much each weighs, and each sample counts for its own pixel alone.
 #pragma once
 
 #include <algorithm>
@@ -57,10 +59,12 @@ struct PixelSum {
     FixedSum r = 0, g = 0, b = 0, weight = 0;
 };
 
-// A pixel's sum under the one-pixel box: its samples, added in sample order, and their count.
+// A pixel's sum of its own samples (the one-pixel box, filter importance sampling): the
+// weighted samples, added in sample order, and the sum of their weights (their count under the
+// box, whose weights are 1).
 struct BoxSum {
     Color sum;
-    float count = 0;
+    float weight = 0;
 };
 
 // The most pixels a sample reaches along one axis.
@@ -81,7 +85,9 @@ struct SampleFootprint {
 // that each pixel's float additions happen in sample order across passes.
 class FilmTile {
 public:
-    FilmTile(const Tile& tile, int image_width, int image_height, const Filter& filter);
+    // With importance_sampled, samples are added to their own pixels with add_to_pixel.
+    FilmTile(const Tile& tile, int image_width, int image_height, const Filter& filter,
+             bool importance_sampled = false);
 
     // Adds sample c taken at film position p (pixels; p is inside the tile) to every pixel whose
     // centre lies within the filter's radius, weighted by the filter. c must be valid
@@ -94,7 +100,15 @@ public:
         const int x = std::min(int(p.x), region_.x1 - 1), y = std::min(int(p.y), region_.y1 - 1);
         BoxSum& s = box_sums_[std::size_t(y - region_.y0) * width() + std::size_t(x - region_.x0)];
         s.sum += c;
-        s.count += 1;
+        s.weight += 1;
+    }
+
+    // Adds sample c of pixel (x, y) (in the tile), drawn by filter importance sampling, to that
+    // pixel alone with its weight.
+    void add_to_pixel(int x, int y, float weight, Color c) {
+        BoxSum& s = box_sums_[index(x, y)];
+        s.sum += c * weight;
+        s.weight += weight;
     }
 
     // The footprint of a sample at p, and the sample added through one: the same sums as
@@ -122,21 +136,25 @@ private:
     void add_weighted(const SampleFootprint& f, Color c);
 
     const Filter* filter_;
-    bool one_pixel_;  // a box of radius 1/2: each sample adds to its own pixel with weight 1
-    Tile region_;     // the tile itself for one_pixel_
+    // A box of radius 1/2 (each sample adds to its own pixel with weight 1), or filter
+    // importance sampling (add_to_pixel).
+    bool one_pixel_;
+    Tile region_;  // the tile itself for one_pixel_
     std::vector<PixelSum> sums_;
     std::vector<BoxSum> box_sums_;  // instead of sums_ for one_pixel_
 };
 
 class Film {
 public:
-    // The spec must be valid (describe_problem(spec) is empty).
-    Film(int width, int height, const FilterSpec& filter);
+    // The spec must be valid (describe_problem(spec) is empty). importance_sampled: the samples
+    // are drawn by filter importance sampling and added each to its own pixel (add_to_pixel).
+    Film(int width, int height, const FilterSpec& filter, bool importance_sampled = false);
 
     int width() const { return width_; }
     int height() const { return height_; }
     const Filter& filter() const { return filter_; }
-    // A box of radius 1/2: the film keeps box_sums(), not sums().
+    bool importance_sampled() const { return importance_sampled_; }
+    // A box of radius 1/2, or importance sampled: the film keeps box_sums(), not sums().
     bool one_pixel() const { return one_pixel_; }
 
     // A tile to fill; for the one-pixel box it holds the film's sums of its pixels so far.
@@ -158,9 +176,10 @@ public:
 private:
     int width_, height_;
     Filter filter_;
-    // A box of radius 1/2 keeps each sample in its own pixel, so tiles never share pixels: its
-    // float sums (16 bytes a pixel) need no lock, and the fixed-point film of sums (64 bytes a
-    // pixel) is never built.
+    bool importance_sampled_;
+    // A box of radius 1/2 or filter importance sampling keeps each sample in its own pixel, so
+    // tiles never share pixels: its float sums (16 bytes a pixel) need no lock, and the
+    // fixed-point film of sums (64 bytes a pixel) is never built.
     bool one_pixel_;
     std::vector<PixelSum> sums_;
     std::vector<BoxSum> box_sums_;  // instead of sums_ for one_pixel_

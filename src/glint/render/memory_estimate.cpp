@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "glint/accel/primitive_refs.h"
+#include "glint/render/eye_sample.h"
 #include "glint/render/film.h"
 #include "glint/render/pixel_error.h"
 
@@ -77,7 +78,9 @@ MemoryEstimate estimate_render_memory(const Scene& scene, AccelKind accel,
     const RenderSettings& s = scene.settings;
     const std::uint64_t pixels = std::uint64_t(s.width) * std::uint64_t(s.height);
     const FilterSpec filter = filter_of(s);
-    const bool one_pixel = filter.kind == FilterKind::box && filter.radius == 0.5f;
+    // Films of a pixel's own samples: the one-pixel box's and adaptive sampling's.
+    const bool one_pixel =
+        (filter.kind == FilterKind::box && filter.radius == 0.5f) || importance_samples_filter(s);
     // The state: the sums, the samples taken, and the error under adaptive sampling.
     std::uint64_t state = (one_pixel ? sizeof(BoxSum) : sizeof(PixelSum)) + sizeof(std::uint32_t);
     if (s.adaptive) state += sizeof(PixelError);

@@ -109,7 +109,10 @@ struct RayTree {
     int x = 0, y = 0, sample = 0;
     std::uint64_t seed = 0;
     std::string integrator;
-    Point2 film;                    // where the sample lands, in pixels
+    Point2 film;  // where the sample lands, in pixels
+    // Under filter importance sampling (adaptive sampling): the sample's weight in its own pixel,
+    // which alone it counts for.
+    std::optional<float> filter_weight;
     std::vector<RandomDraw> draws;  // the camera's: pixel, lens, time
     std::vector<RayNode> nodes;     // nodes[0] is the eye ray, children after their parents
     Color sample_value;             // what the integrator returned for the sample

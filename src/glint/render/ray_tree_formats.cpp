@@ -72,7 +72,11 @@ public:
         for (const RandomDraw& d : t.draws)
             drawn +=
                 (drawn.empty() ? "" : ", ") + d.purpose + " " + (d.pair ? read(d.u) : read(d.u.x));
-        line(0, "lands on the film at " + read(t.film) + "; numbers drawn: " + drawn);
+        const std::string weight =
+            t.filter_weight ? ", counting for this pixel alone with the filter's weight " +
+                                  read(*t.filter_weight) + " (filter importance sampling)"
+                            : "";
+        line(0, "lands on the film at " + read(t.film) + weight + "; numbers drawn: " + drawn);
         const Color evaluated = evaluate(t);
         const bool exact = evaluated.r == t.sample_value.r && evaluated.g == t.sample_value.g &&
                            evaluated.b == t.sample_value.b;
@@ -330,6 +334,7 @@ std::string ray_tree_json(const RayTree& tree) {
     f.add("pixel", "[" + std::to_string(tree.x) + ", " + std::to_string(tree.y) + "]");
     f.add("sample", std::to_string(tree.sample)).add("seed", std::to_string(tree.seed));
     f.add("integrator", json_string(tree.integrator)).add("film", exact(tree.film));
+    if (tree.filter_weight) f.add("filter_weight", exact(*tree.filter_weight));
     f.add("draws", array(tree.draws, [](const RandomDraw& d) {
               Fields draw;
               draw.add("purpose", json_string(d.purpose))

@@ -42,7 +42,7 @@ struct Pass {
 // Compiled twice: with the output variables' code (kAovs) and without, the render's own loop.
 template <class Integrator, bool kAovs>
 void render_tile(const Tile& tile, Pass pass, const World& world, const Sampler& sampler,
-                 RenderState& state, TileTotals& totals) {
+                 const FilterSampling* filter, RenderState& state, TileTotals& totals) {
     const Camera& camera = world.camera();
     const RenderSettings& settings = world.settings();
     const int width = settings.width;
@@ -72,7 +72,7 @@ void render_tile(const Tile& tile, Pass pass, const World& world, const Sampler&
                     error.relative_error() < settings.adaptive->threshold)
                     break;
                 SampleStream stream(patterns, std::uint32_t(s));
-                const EyeSample eye = eye_sample(camera, stream, x, y);
+                const EyeSample eye = eye_sample(camera, stream, x, y, filter);
                 TraversalCounters before;
                 if constexpr (kAovs) {
                     recorder.start();
@@ -80,13 +80,16 @@ void render_tile(const Tile& tile, Pass pass, const World& world, const Sampler&
                 }
                 const Color c = integrator.trace_eye_ray(eye.ray, stream, totals.rays);
                 if (is_valid_sample(c)) {
-                    film_tile.add_sample(eye.film, c);
+                    if (filter)
+                        film_tile.add_to_pixel(x, y, eye.weight, c);
+                    else
+                        film_tile.add_sample(eye.film, c);
                     if (settings.adaptive) error.add(c);
                     if constexpr (kAovs) {
                         AovSample a = recorder.sample();
                         a.nodes = traversal_counters.nodes - before.nodes;
                         a.primitives = traversal_counters.primitives - before.primitives;
-                        aov_tile->add(eye.film, x, y, s, a);
+                        aov_tile->add(eye.film, x, y, s, eye.weight, a);
                     }
                 } else {
                     totals.bad.add({x, y, s});
@@ -107,6 +110,9 @@ bool render_passes(const World& world, const RenderOptions& options, const std::
     const int spp = settings.samples_per_pixel;
     const int size = state.pass_size, passes = pass_count(spp, size);
     const Sampler sampler(sampler_of(settings), spp, options.seed);
+    std::optional<FilterSampling> filter_sampling;
+    if (importance_samples_filter(settings)) filter_sampling.emplace(filter_of(settings));
+    const FilterSampling* filter = filter_sampling ? &*filter_sampling : nullptr;
     std::mutex totals_mutex;
     // An explicit thread count may exceed the cores (to check determinism, say): lift TBB's
     // default cap on workers for the duration of the render.
@@ -130,11 +136,11 @@ bool render_passes(const World& world, const RenderOptions& options, const std::
                         }
                         TileTotals totals;
                         if (state.aovs.empty())
-                            render_tile<Integrator, false>(tiles[i], pass, world, sampler, state,
-                                                           totals);
+                            render_tile<Integrator, false>(tiles[i], pass, world, sampler, filter,
+                                                           state, totals);
                         else
-                            render_tile<Integrator, true>(tiles[i], pass, world, sampler, state,
-                                                          totals);
+                            render_tile<Integrator, true>(tiles[i], pass, world, sampler, filter,
+                                                          state, totals);
                         {
                             const std::lock_guard lock(totals_mutex);
                             state.rays += totals.rays;

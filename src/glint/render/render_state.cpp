@@ -1,6 +1,7 @@
 // A render's state at its start: an empty film of the scene's filter, no samples.
 #include "glint/render/render_state.h"
 
+#include "glint/render/eye_sample.h"
 #include "glint/render/tiles.h"
 
 namespace glint {
@@ -10,8 +11,10 @@ RenderState::RenderState(const RenderSettings& settings, int tile_size, int pass
     : width(settings.width),
       height(settings.height),
       pass_size(pass_size_),
-      film(settings.width, settings.height, filter_of(settings)),
-      aovs(aov_set, settings.width, settings.height, filter_of(settings)),
+      film(settings.width, settings.height, filter_of(settings),
+           importance_samples_filter(settings)),
+      aovs(aov_set, settings.width, settings.height, filter_of(settings),
+           importance_samples_filter(settings)),
       samples(std::size_t(settings.width) * settings.height, 0),
       tiles_done(make_tiles(settings.width, settings.height, tile_size).size(), 0) {
     if (settings.adaptive) errors.resize(samples.size());

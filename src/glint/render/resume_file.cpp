@@ -22,7 +22,9 @@ namespace glint {
 namespace {
 
 constexpr char kMagic[8] = {'G', 'L', 'I', 'N', 'T', 'R', 'E', 'S'};
-constexpr std::uint32_t kFormatVersion = 2;
+// 3: an adaptive render's film holds each pixel's own weighted samples (filter importance
+// sampling).
+constexpr std::uint32_t kFormatVersion = 3;
 
 class ByteWriter {
 public:
@@ -364,7 +366,7 @@ void encode_state(const RenderState& s, ByteWriter& out) {
         out.f32(b.sum.r);
         out.f32(b.sum.g);
         out.f32(b.sum.b);
-        out.f32(b.count);
+        out.f32(b.weight);
     }
     for (const PixelSum& p : s.film.sums()) {
         out.i128(p.r);
@@ -406,7 +408,7 @@ void decode_state(ByteReader& in, RenderState& s, const std::string& corrupt) {
         b.sum.r = in.f32();
         b.sum.g = in.f32();
         b.sum.b = in.f32();
-        b.count = in.f32();
+        b.weight = in.f32();
     }
     for (PixelSum& p : s.film.sums()) {
         p.r = in.i128();

@@ -32,6 +32,11 @@ struct FilterSpec {
 // The radius a kind takes when a scene names only the kind.
 float default_filter_radius(FilterKind kind);
 
+// A box of radius 1/2: each sample counts for its own pixel alone, the average of its samples.
+inline bool is_one_pixel_box(const FilterSpec& spec) {
+    return spec.kind == FilterKind::box && spec.radius == 0.5f;
+}
+
 // Below half a pixel some pixels would get no sample at all; beyond 8 a sample touches hundreds.
 inline constexpr float kMinFilterRadius = 0.5f;
 inline constexpr float kMaxFilterRadius = 8;

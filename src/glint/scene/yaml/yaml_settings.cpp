@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "glint/math/constants.h"
+#include "glint/scene/settings_problem.h"
 
 namespace glint {
 
@@ -53,19 +54,24 @@ AdaptiveSampling read_adaptive(const YamlSource& source, const YAML::Node& node,
     a.threshold = map.number("threshold", kPositive, a.threshold);
     a.min_samples = map.integer("min_samples", {2, kMaxSamplesPerPixel},
                                 std::min(a.min_samples, s.samples_per_pixel));
-    if (a.min_samples > s.samples_per_pixel) {
-        throw source.error_at(map.require("min_samples").value,
-                              "adaptive min_samples (" + std::to_string(a.min_samples) +
-                                  ") exceeds the image's samples (" +
-                                  std::to_string(s.samples_per_pixel) + ")",
-                              {"samples is the most a pixel takes; min_samples the fewest"});
+    return a;  // checked with the other settings (settings_problem)
+}
+
+// The node a problem of the settings as a whole is about: its key where the file has it, else
+// the map it belongs in.
+YAML::Node blamed_node(const MapReader& image, const YAML::Node& image_node, std::string_view key) {
+    if (key.starts_with("adaptive.")) {
+        const YAML::Node adaptive = image.require("adaptive").value;
+        const std::string_view inner = key.substr(std::string_view("adaptive.").size());
+        // read_adaptive has checked it: a map with distinct scalar keys.
+        for (auto entry = adaptive.begin(); entry != adaptive.end(); ++entry)
+            if (entry->first.Scalar() == inner) return entry->second;
+        return adaptive;
     }
-    if (s.sampler == SamplerKind::regular) {
-        throw source.error_at(node, "adaptive sampling needs the jittered or sobol sampler",
-                              {"a pixel that stops early takes the first points of its pattern, "
-                               "which for the regular grid are its top rows"});
-    }
-    return a;
+    if (const MapEntry* entry = image.find(key)) return entry->value;
+    // An unset sampler is the integrator's, or adaptive sampling's, default.
+    if (key == "sampler" && image.find("adaptive")) return image.require("adaptive").value;
+    return image_node;
 }
 
 // The whole number at `key`, up to `ceiling`, refused above `limit` with the way to raise it. The
@@ -113,13 +119,9 @@ RenderSettings read_image(const YamlSource& source, const YAML::Node& node, cons
                         "--max-samples", s.samples_per_pixel);
     if (const MapEntry* adaptive = map.find("adaptive"))
         s.adaptive = read_adaptive(source, adaptive->value, map.field("adaptive"), s);
-    if (!is_valid_sample_count(sampler_of(s), s.samples_per_pixel)) {
-        throw source.error_at(map.require("samples").value,
-                              "samples must be a square number (1, 4, 9, 16, …) for the "
-                              "regular sampler, got " +
-                                  std::to_string(s.samples_per_pixel),
-                              {"the jittered and sobol samplers take any number"});
-    }
+    if (const std::optional<SettingsProblem> problem = settings_problem(s))
+        throw source.error_at(blamed_node(map, node, problem->key), problem->message,
+                              problem->notes);
     s.shadow_rays = map.integer("shadow_rays", {1, kMaxShadowRays}, s.shadow_rays);
     s.max_depth = limited_integer(source, map, "max_depth", kMaxDepth, limits.max_depth,
                                   "--max-ray-depth", s.max_depth);
