@@ -20,6 +20,7 @@
 #include "glint/image/file_io.h"
 #include "glint/image/image_format.h"
 #include "glint/image/image_io.h"
+#include "glint/image/srgb.h"
 #include "glint/render/aov_picture.h"
 #include "glint/render/memory_estimate.h"
 #include "glint/render/render.h"
@@ -128,12 +129,14 @@ void report_bad_samples(const BadSamples& bad, const RenderCommand& c) {
                  image_options_arguments(c.image).c_str());
 }
 
-// Float formats keep the counts; the others show them as grey, the most a pixel may take white.
+// Float formats keep the counts; the others show them as a linear ramp of grey, none black and
+// the most a pixel may take white: the 8-bit value is 255 count / most, so the value is
+// decoded from sRGB first for the encoding to give it back.
 void write_samples_image(const std::string& file, Image counts, int most) {
     const std::string ext = std::filesystem::path(file).extension().string();
     const bool keeps_floats = ext == ".exr" || ext == ".EXR" || ext == ".pfm" || ext == ".PFM";
     if (!keeps_floats)
-        for (Color& c : counts.pixels) c = c / float(most);
+        for (Color& c : counts.pixels) c = Color::gray(srgb_to_linear(c.r / float(most)));
     write_image(file, counts, WriteOptions{});
 }
 

@@ -20,6 +20,7 @@
 
 #include "common/under_sanitizer.h"
 #include "glint/image/image_io.h"
+#include "glint/image/srgb.h"
 #include "glint/math/sanitizer_build.h"
 
 namespace glint {
@@ -598,6 +599,30 @@ TEST_F(Cli, OptionsCannotGetRoundTheSceneFilesChecksOfAdaptiveSampling) {
     // At min_samples the render goes ahead.
     const Outcome ok = run_glint("render " + adaptive + " --spp 16 --width 24 -q -o ok.png");
     EXPECT_EQ(ok.exit_code, 0) << ok.err;
+}
+
+// The samples image: the counts themselves in a float format; in a PNG a linear ramp of grey,
+// the 8-bit value 255 count / most (not sRGB-encoded, which would show half the samples as 73%).
+TEST_F(Cli, TheSamplesImageIsALinearRampOfTheCounts) {
+    const Outcome r = run_glint("render " + scene("features/adaptive.yaml") +
+                                " --width 48 -q -o a.png --samples-image n.exr");
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    const Outcome png = run_glint("render " + scene("features/adaptive.yaml") +
+                                  " --width 48 -q -o a.png --samples-image n.png");
+    ASSERT_EQ(png.exit_code, 0) << png.err;
+    const Image counts = read_image(dir_ / "n.exr"), grey = read_image(dir_ / "n.png");
+    ASSERT_EQ(counts.pixels.size(), grey.pixels.size());
+    float fewest = 256, most = 0;
+    for (std::size_t i = 0; i < counts.pixels.size(); ++i) {
+        const float n = counts.pixels[i].r;
+        fewest = std::min(fewest, n);
+        most = std::max(most, n);
+        // Read back as linear light: encoded again it is the 8-bit value, within its rounding
+        // and dither.
+        EXPECT_NEAR(linear_to_srgb(grey.pixels[i].r), n / 256, 1.0 / 255) << i << ": " << n;
+    }
+    EXPECT_EQ(fewest, 16);  // the scene's min_samples: the flat sky
+    EXPECT_GT(most, 64);
 }
 
 // The output is checked before the scene is even read (here it does not exist), so a path that

@@ -5,10 +5,15 @@
 // streak of length L is L^2 / 12.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <string>
+#include <variant>
+#include <vector>
 
 #include "glint/math/constants.h"
 #include "glint/render/render.h"
+#include "glint/scene/load_scene.h"
 
 namespace glint {
 namespace {
@@ -94,6 +99,64 @@ TEST(DepthOfField, APointOffFocusBlursToTheCircleOfConfusion) {
     EXPECT_NEAR(blurred.var_y, expected, 0.03 * expected);
     // Blurring spreads the light; it does not lose or make any.
     EXPECT_NEAR(blurred.total, disk_area(0.1f, 8), 0.03 * blurred.total);
+}
+
+// How hexagonal the image's light is, and which way: the mean of cos(6 theta) about its centroid,
+// weighted by brightness times r^2. A disk gives 0; a uniform regular hexagon with a vertex
+// along x gives 0.1187 (a vertex along y, -0.1187), as integrating it over the hexagon gives;
+// sums over every pixel keep the noise of a sparsely hit blur small.
+double hexagonality(const Image& image) {
+    const Moments m = moments_of(image);
+    double cx = 0, cy = 0;
+    for (int y = 0; y < kSize; ++y)
+        for (int x = 0; x < kSize; ++x) {
+            cx += image.at(x, y).r * (x + 0.5), cy += image.at(x, y).r * (y + 0.5);
+        }
+    cx /= m.total, cy /= m.total;
+    double sum = 0, weights = 0;
+    for (int y = 0; y < kSize; ++y)
+        for (int x = 0; x < kSize; ++x) {
+            const double dx = x + 0.5 - cx, dy = y + 0.5 - cy, w = image.at(x, y).r;
+            sum += w * (dx * dx + dy * dy) * std::cos(6 * std::atan2(dy, dx));
+            weights += w * (dx * dx + dy * dy);
+        }
+    return sum / weights;
+}
+
+TEST(DepthOfField, ABladedApertureBlursAPointIntoItsPolygon) {
+    // At depth 40 with focus at 4, an aperture of radius 0.5 blurs a point into a disk of
+    // radius 0.5 * 36 / 4 = 4.5 units, 13 pixels, which the sphere's own disk (0.6 units)
+    // rounds a little. Six blades make it a hexagon with a vertex to the right; turned by 30
+    // degrees, a vertex points up.
+    Scene scene = glowing_sphere({0, 0, 40}, 0.6f);
+    scene.camera.lens.radius = 0.5f;
+    scene.camera.lens.focus_distance = 4;
+    EXPECT_NEAR(hexagonality(render(World(scene), {}).image), 0, 0.02);
+    scene.camera.lens.blades = 6;
+    EXPECT_NEAR(hexagonality(render(World(scene), {}).image), 0.1187, 0.025);
+    scene.camera.lens.blade_rotation = 30;
+    EXPECT_NEAR(hexagonality(render(World(scene), {}).image), -0.1187, 0.025);
+}
+
+// scenes/features/depth-of-field.yaml says its far lamps become hexagons: they do when each
+// lamp is small beside its circle of confusion, which it then takes the shape of.
+TEST(DepthOfField, TheFeatureScenesLampsAreSmallBesideTheirBlur) {
+    const Scene scene =
+        load_scene(std::string(GLINT_SOURCE_DIR) + "/scenes/features/depth-of-field.yaml");
+    const CameraSpec& c = scene.camera;
+    EXPECT_EQ(c.lens.blades, 6);
+    const Vector3 view = normalize(c.at - c.from);
+    int lamps = 0;
+    for (const SceneObject& object : scene.objects) {
+        if (scene.materials[object.material].name != "lamp") continue;
+        const Sphere& lamp = std::get<Sphere>(object.shape);
+        const float depth = dot(lamp.center - c.from, view);
+        // The circle of confusion's radius at the lamp's depth, in the scene.
+        const float blur = c.lens.radius * (depth - c.lens.focus_distance) / c.lens.focus_distance;
+        EXPECT_LT(lamp.radius, 0.35f * blur) << "a lamp at depth " << depth;
+        ++lamps;
+    }
+    EXPECT_EQ(lamps, 3);
 }
 
 TEST(MotionBlur, AMovingSphereDrawsAStreakAsLongAsItsPath) {

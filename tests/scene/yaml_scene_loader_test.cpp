@@ -415,5 +415,42 @@ TEST(YamlScene, EverySingleByteCorruptionParsesOrThrowsSceneError) {
     }
 }
 
+// Keys that load but do nothing are warned about at their place in the file.
+TEST(YamlScene, ALensShapeOnAPinholeCameraIsWarnedAbout) {
+    const Scene pinhole = parse(
+        "camera: {from: [0, 0, -5], at: [0, 0, 0], aperture_blades: 6,\n"
+        "         aperture_rotation: 30, focus_distance: 4}\n");
+    ASSERT_EQ(pinhole.warnings.size(), 3u);
+    EXPECT_EQ(pinhole.warnings[0],
+              "test.yaml:2:33: camera focus_distance does nothing without an aperture: a pinhole "
+              "camera has no lens (give aperture or f_number for depth of field)");
+    EXPECT_EQ(pinhole.warnings[1].substr(0, 43), "test.yaml:1:43: camera aperture_blades does");
+    EXPECT_EQ(pinhole.warnings[2].substr(0, 45), "test.yaml:2:10: camera aperture_rotation does");
+    // With an aperture they shape the lens; a zero aperture is a pinhole too.
+    EXPECT_TRUE(parse("camera: {from: [0, 0, -5], at: [0, 0, 0], aperture: 0.1, "
+                      "aperture_blades: 6}\n")
+                    .warnings.empty());
+    EXPECT_EQ(parse("camera: {from: [0, 0, -5], at: [0, 0, 0], aperture: 0, "
+                    "aperture_blades: 6}\n")
+                  .warnings.size(),
+              1u);
+}
+
+TEST(YamlScene, EmitsLightOnAMaterialWithoutEmissionIsWarnedAbout) {
+    const auto ball = [](const std::string& rest) {
+        return "  - {type: sphere, center: [0, 0, 0], radius: 1, " + rest + "}\n";
+    };
+    const Scene dark = parse(std::string(kCamera) +
+                             "materials: {grey: {kd: 0.5}, lamp: {emission: [1, 1, 1]}}\n"
+                             "objects:\n" +
+                             ball("material: grey, emits_light: true") +
+                             ball("material: lamp, emits_light: true") +
+                             ball("material: lamp, emits_light: false") + ball("material: grey"));
+    ASSERT_EQ(dark.warnings.size(), 1u);
+    EXPECT_EQ(dark.warnings[0],
+              "test.yaml:4:66: emits_light does nothing: the object's material has no emission "
+              "(give the material an emission for it to light the scene)");
+}
+
 }  // namespace
 }  // namespace glint

@@ -25,7 +25,7 @@ std::optional<Point2> lobe_draw(float roughness, Point2 u) {
 
 Color DistributedIntegrator::trace_eye_ray(const Ray& ray, SampleStream& stream, RayStats& stats) {
     stats.count(RayKind::primary);
-    return trace(ray, 1, 1, stream, stats);
+    return trace(ray, 1, 1, stream, stats, world_.eye_media());
 }
 
 // shade() and what it calls are compiled twice: with kRecord, telling the recorder every event;

@@ -9,7 +9,7 @@ namespace glint {
 
 Color WhittedIntegrator::trace_eye_ray(const Ray& ray, RayStats& stats) {
     stats.count(RayKind::primary);
-    return trace(ray, 1, 1, stats);
+    return trace(ray, 1, 1, stats, world_.eye_media());
 }
 
 // shade() and what it calls are compiled twice: with kRecord, telling the recorder every event;

@@ -6,6 +6,8 @@
 #include <cmath>
 #include <utility>
 
+#include "glint/render/eye_media.h"
+
 namespace glint {
 
 namespace {
@@ -41,6 +43,13 @@ World::World(Scene scene, AccelKind accel, ShadowAcceleration shadows)
         material_of_.push_back(object.material);
     }
     scene.objects = {};  // the moved-from shapes: freed before the structure is built
+    EyeMedia eye = find_eye_media(camera_, settings_.width, settings_.height, primitives_,
+                                  materials_, material_of_);
+    for (const std::uint32_t p : eye.primitives) {
+        const Material& m = materials_[material_of_[p]];
+        eye_media_ = eye_media_.entered(p, &m, m.ior);
+    }
+    warnings_.insert(warnings_.end(), eye.warnings.begin(), eye.warnings.end());
     aggregate_ = make_aggregate(accel, primitives_);
     scene_scale_ = scene_scale(aggregate_->bounds(), camera_.eye());
     shadows_ = shadows;

@@ -13,6 +13,7 @@
 #include "glint/accel/make_aggregate.h"
 #include "glint/camera/camera.h"
 #include "glint/math/huge_page_allocator.h"
+#include "glint/render/medium_stack.h"
 #include "glint/scene/scene.h"
 #include "glint/shading/object_light.h"
 
@@ -44,6 +45,9 @@ public:
     std::span<const ObjectLight> object_lights() const { return object_lights_; }
     // What the user should know about the world as built ("an emitting torus cannot light").
     const std::vector<std::string>& warnings() const { return warnings_; }
+    // The refracting objects eye rays start in (eye_media.h), at their own indices: vacuum for
+    // a camera outside them all.
+    const MediumStack& eye_media() const { return eye_media_; }
     // What the acceleration structure is built over, in scene order (to build others beside it).
     std::span<const Primitive> primitives() const { return primitives_; }
     // The acceleration structure over primitives() (for its statistics).
@@ -92,6 +96,7 @@ private:
     std::vector<Light> lights_;
     std::vector<ObjectLight> object_lights_;
     std::vector<std::string> warnings_;
+    MediumStack eye_media_;  // holds pointers into materials_, which never reallocates
     LargeVector<Primitive> primitives_;
     std::vector<std::uint32_t> material_of_;  // per primitive
     std::unique_ptr<Aggregate> aggregate_;    // over primitives_

@@ -35,9 +35,11 @@ std::string indexed(std::string_view key, std::size_t i) {
 }
 
 // An object: one SceneObject, or one per part of a mesh file. A mesh without a `material` key
-// keeps its file's materials.
+// keeps its file's materials. emits_light on an object whose materials emit nothing is warned
+// about: it does nothing.
 void read_object(ShapeReader& shapes, const YAML::Node& node, const Field& field,
-                 MaterialTable& materials, std::size_t index, LargeVector<SceneObject>& out) {
+                 MaterialTable& materials, std::size_t index, Scene& scene) {
+    LargeVector<SceneObject>& out = scene.objects;
     ShapeReader::ObjectResult r =
         shapes.read_object(node, field, {"material", "casts_shadow", "emits_light"});
     const MapEntry* material = r.map.find("material");
@@ -53,6 +55,17 @@ void read_object(ShapeReader& shapes, const YAML::Node& node, const Field& field
         const std::uint32_t m =
             file_materials.empty() ? shared : file_materials[r.model->parts[i].material];
         out.push_back({std::move(r.shapes[i]), m, casts_shadow, emits_light});
+    }
+    if (const MapEntry* key = r.map.find("emits_light")) {
+        const auto emits = [&](std::uint32_t m) { return !is_black(scene.materials[m].emission); };
+        const bool any = file_materials.empty()
+                             ? emits(shared)
+                             : std::any_of(file_materials.begin(), file_materials.end(), emits);
+        if (!any)
+            scene.warnings.push_back(shapes.source().warning_at(
+                key->key_node,
+                "emits_light does nothing: the object's material has no emission "
+                "(give the material an emission for it to light the scene)"));
     }
 }
 
@@ -77,7 +90,9 @@ Scene read_scene(const YamlSource& source, const ReadSandbox& sandbox, const YAM
     if (const MapEntry* image = section(scene, "image")) {
         result.settings = read_image(source, image->value, scene.field("image"), sandbox.limits);
     }
-    result.camera = read_camera(source, scene.require("camera").value, scene.field("camera"));
+    std::vector<std::string> warnings;
+    result.camera =
+        read_camera(source, scene.require("camera").value, scene.field("camera"), warnings);
     result.ambient = scene.color("ambient", result.ambient);
 
     result.sources.file = source.file_name();
@@ -104,13 +119,16 @@ Scene read_scene(const YamlSource& source, const ReadSandbox& sandbox, const YAM
         const auto items =
             read_sequence(source, objects->value, scene.field("objects"), "a list of objects");
         for (std::size_t i = 0; i < items.size(); ++i) {
-            read_object(shapes, items[i], {"", indexed("objects", i)}, materials, i,
-                        result.objects);
+            read_object(shapes, items[i], {"", indexed("objects", i)}, materials, i, result);
             // A mesh file's parts all at their object.
             result.sources.objects.resize(result.objects.size(), text_position(items[i].Mark()));
         }
     }
-    result.warnings = shapes.warnings();
+    // The loader's warnings in the order of the file's sections: camera, objects, then what the
+    // model files said.
+    warnings.insert(warnings.end(), result.warnings.begin(), result.warnings.end());
+    warnings.insert(warnings.end(), shapes.warnings().begin(), shapes.warnings().end());
+    result.warnings = std::move(warnings);
     return result;
 }
 

@@ -138,8 +138,8 @@ constexpr float kSensorHeight = 0.024f;
 constexpr int kMaxApertureBlades = 64;
 
 // The thin lens: an aperture radius, or an f-number for scenes in metres; the focus distance
-// and the aperture's shape.
-void read_lens(const MapReader& map, CameraSpec& camera) {
+// and the aperture's shape, which a pinhole has none of.
+void read_lens(const MapReader& map, CameraSpec& camera, std::vector<std::string>& warnings) {
     const YamlSource& source = map.source();
     if (map.has("aperture") && map.has("f_number")) {
         throw source.error_at(map.require("f_number").key_node,
@@ -172,6 +172,13 @@ void read_lens(const MapReader& map, CameraSpec& camera) {
         camera.lens.blades = int(n);
     }
     camera.lens.blade_rotation = map.number("aperture_rotation", kAnyNumber, 0.0f);
+    if (camera.lens.radius > 0) return;
+    for (const std::string_view key : {"focus_distance", "aperture_blades", "aperture_rotation"})
+        if (const MapEntry* entry = map.find(key))
+            warnings.push_back(source.warning_at(
+                entry->key_node, "camera " + std::string(key) +
+                                     " does nothing without an aperture: a pinhole camera has no "
+                                     "lens (give aperture or f_number for depth of field)"));
 }
 
 // The shutter interval and the camera's keyframes, each a map of time, from, at and up.
@@ -222,7 +229,8 @@ void read_shutter(const MapReader& map, CameraSpec& camera) {
 
 }  // namespace
 
-CameraSpec read_camera(const YamlSource& source, const YAML::Node& node, const Field& field) {
+CameraSpec read_camera(const YamlSource& source, const YAML::Node& node, const Field& field,
+                       std::vector<std::string>& warnings) {
     auto entries = read_map(source, node, field);
     const std::string type =
         read_type(source, node, entries, "camera", kCameraTypes, "perspective");
@@ -257,7 +265,7 @@ CameraSpec read_camera(const YamlSource& source, const YAML::Node& node, const F
     } else {
         camera.height = map.number("height", kPositive, camera.height);
     }
-    read_lens(map, camera);
+    read_lens(map, camera, warnings);
     read_shutter(map, camera);
     return camera;
 }

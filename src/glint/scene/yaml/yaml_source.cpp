@@ -61,6 +61,12 @@ std::string_view YamlSource::line(int index) const {
     return text_.substr(begin, end - begin);
 }
 
+std::string YamlSource::warning_at(const YAML::Node& node, const std::string& message) const {
+    const TextPosition at = text_position(node.Mark());
+    return file_name_ + ":" + std::to_string(at.line) + ":" + std::to_string(at.column) + ": " +
+           message;
+}
+
 int YamlSource::span_of(const YAML::Node& node) const {
     const YAML::Mark mark = node.Mark();
     const std::string_view text = line(mark.line);

@@ -35,6 +35,10 @@ public:
     SceneError error_at(const YAML::Node& node, std::string message,
                         std::vector<std::string> notes = {}) const;
 
+    // A warning about what loads but does nothing, as a scene's warnings hold it:
+    // "scene.yaml:12:5: message".
+    std::string warning_at(const YAML::Node& node, const std::string& message) const;
+
     // A line of the text, 0-based, without its line break; empty when out of range.
     std::string_view line(int index) const;
     int line_count() const { return int(line_starts_.size()); }
