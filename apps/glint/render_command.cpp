@@ -30,6 +30,7 @@
 #include "output_path.h"
 #include "progress.h"
 #include "stats_json.h"
+#include "test_hold.h"
 #include "usage_error.h"
 
 #ifndef GLINT_VERSION
@@ -261,6 +262,7 @@ int run_render(const RenderCommand& command) {
             };
         }
         RenderProgress progress;
+        options.after_tile = test_hold_from_environment(progress);
         RenderResult result;
         // Once the samples are in, a Ctrl-C or SIGTERM (a second one sent just as the render
         // ends) would only lose them halfway through writing the files, or turn a written

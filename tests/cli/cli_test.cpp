@@ -58,12 +58,18 @@ protected:
         return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, slurp(out), slurp(err)};
     }
 
-    // Starts glint without waiting, its stdout and stderr going to files in the test's folder.
-    pid_t spawn_glint(std::vector<std::string> args) const {
+    // Starts glint without waiting, its stdout and stderr going to files in the test's folder;
+    // `environment` holds NAME=value entries to add to this process's.
+    pid_t spawn_glint(std::vector<std::string> args,
+                      std::vector<std::string> environment = {}) const {
         args.insert(args.begin(), GLINT_BINARY);
         std::vector<char*> argv;
         for (std::string& arg : args) argv.push_back(arg.data());
         argv.push_back(nullptr);
+        std::vector<char*> envp;
+        for (char** e = environ; *e; ++e) envp.push_back(*e);
+        for (std::string& e : environment) envp.push_back(e.data());
+        envp.push_back(nullptr);
         const std::string out = (dir_ / "stdout.txt").string(),
                           err = (dir_ / "stderr.txt").string();
         posix_spawn_file_actions_t files;
@@ -73,9 +79,19 @@ protected:
         posix_spawn_file_actions_addopen(&files, STDERR_FILENO, err.c_str(),
                                          O_WRONLY | O_CREAT | O_TRUNC, 0644);
         pid_t pid = -1;
-        const int error = posix_spawn(&pid, GLINT_BINARY, &files, nullptr, argv.data(), environ);
+        const int error =
+            posix_spawn(&pid, GLINT_BINARY, &files, nullptr, argv.data(), envp.data());
         posix_spawn_file_actions_destroy(&files);
         return error == 0 ? pid : -1;
+    }
+
+    // The environment that holds a render after `tiles` tiles until it is stopped
+    // (apps/glint/test_hold.h), and whether glint has said it holds.
+    static std::vector<std::string> hold_after(int tiles) {
+        return {"GLINT_TEST_HOLD_AFTER_TILES=" + std::to_string(tiles)};
+    }
+    bool holding() const {
+        return slurp(dir_ / "stderr.txt").find("glint: holding after") != std::string::npos;
     }
 
     fs::path write_scene(const std::string& name, const std::string& text) const {
@@ -723,44 +739,26 @@ TEST_F(Cli, InterruptedRenderLeavesTheTargetAloneAndWritesAPartialImage) {
     const std::string good = slurp(dir_ / "out.png");
     ASSERT_FALSE(good.empty());
 
-    // Over ten seconds on one thread of a desktop machine: the first progress line (after a
-    // second, at 10% or later) comes long before the end.
+    // Held after 3 of the 80 tiles of the first of two passes: Ctrl-C always finds it running.
     const pid_t pid =
         spawn_glint({"render", std::string(GLINT_SOURCE_DIR) + "/scenes/showcase.yaml", "--width",
-                     "1600", "--spp", "25", "--threads", "1", "-o", (dir_ / "out.png").string()});
+                     "160", "--spp", "25", "--threads", "1", "-o", (dir_ / "out.png").string()},
+                    hold_after(3));
     ASSERT_GT(pid, 0);
-    // Polls until glint ends or `ready` holds; false if neither happens within `limit`.
     int status = 0;
-    bool ended = false;
-    const auto wait_until = [&](auto ready, std::chrono::seconds limit) {
-        const auto end = std::chrono::steady_clock::now() + limit;
-        while (std::chrono::steady_clock::now() < end) {
-            if (waitpid(pid, &status, WNOHANG) == pid) return ended = true;
-            if (ready()) return true;
-            std::this_thread::sleep_for(std::chrono::milliseconds(20));
-        }
-        kill(pid, SIGKILL);
-        waitpid(pid, &status, 0);
-        return false;
-    };
-    ASSERT_TRUE(
-        wait_until([&] { return slurp(dir_ / "stderr.txt").find("% done") != std::string::npos; },
-                   std::chrono::minutes(5)))
-        << "no progress from glint in five minutes";
-    if (!ended) {
-        // Twice: the first would finish the pass in flight, most of the render here. Apart: a
-        // signal sent while the same one is pending is lost.
-        ASSERT_EQ(kill(pid, SIGINT), 0);
-        std::this_thread::sleep_for(std::chrono::milliseconds(200));
-        ASSERT_EQ(kill(pid, SIGINT), 0);
-        ASSERT_TRUE(wait_until([] { return false; }, std::chrono::minutes(1)))
-            << "glint did not stop within a minute of Ctrl-C";
+    const auto deadline = std::chrono::steady_clock::now() + std::chrono::minutes(5);
+    while (!holding()) {
+        ASSERT_NE(waitpid(pid, &status, WNOHANG), pid)
+            << "glint ended before it held: " << slurp(dir_ / "stderr.txt");
+        ASSERT_LT(std::chrono::steady_clock::now(), deadline) << "glint did not hold";
+        std::this_thread::sleep_for(std::chrono::milliseconds(5));
     }
-    // Ending by SIGINT itself means the signal came after the render, once the default action
-    // was back: as good as finishing first.
-    const bool finished_first = (WIFEXITED(status) && WEXITSTATUS(status) == 0) ||
-                                (WIFSIGNALED(status) && WTERMSIG(status) == SIGINT);
-    if (finished_first) GTEST_SKIP() << "the render finished before Ctrl-C";
+    // Twice: the first would finish the pass in flight. Apart: a signal sent while the same one
+    // is pending is lost.
+    ASSERT_EQ(kill(pid, SIGINT), 0);
+    std::this_thread::sleep_for(std::chrono::milliseconds(200));
+    kill(pid, SIGINT);  // it may have ended by now
+    waitpid(pid, &status, 0);
 
     const std::string err = slurp(dir_ / "stderr.txt");
     ASSERT_TRUE(WIFEXITED(status)) << err;
@@ -768,8 +766,8 @@ TEST_F(Cli, InterruptedRenderLeavesTheTargetAloneAndWritesAPartialImage) {
     EXPECT_TRUE(slurp(dir_ / "out.png") == good) << "the earlier image was changed";
     EXPECT_NE(err.find("out.partial.png"), std::string::npos) << err;
     const Image partial = read_image(dir_ / "out.partial.png");
-    EXPECT_EQ(partial.width, 1600);
-    EXPECT_EQ(partial.height, 1200);
+    EXPECT_EQ(partial.width, 160);
+    EXPECT_EQ(partial.height, 120);
     for (const auto& entry : fs::directory_iterator(dir_))
         EXPECT_EQ(entry.path().filename().string().find(".tmp"), std::string::npos) << entry.path();
 }
@@ -885,9 +883,9 @@ TEST_F(Cli, BadAovListsAreUsageErrors) {
     EXPECT_FALSE(fs::exists(dir_ / "out.png"));
 }
 
-// Samples per pixel of the renders these tests stop: 16 passes, or 4 under a sanitizer, which
-// makes each pass slow enough to be stopped halfway.
-constexpr int kResumeSpp = testing::kUnderSanitizer ? 64 : 256;
+// Samples per pixel of the renders these tests stop: 3 passes of 16, each of 40 tiles.
+constexpr int kResumeSpp = 48;
+constexpr int kResumeTilesPerPass = 40;
 
 class Resume : public Cli {
 protected:
@@ -906,29 +904,27 @@ protected:
         for (const std::string& arg : a) line += "'" + arg + "' ";
         return line;
     }
-    // Starts the render, waits until `ready` holds, sends the signals; the exit status, or -1
-    // when the render ended before `ready` (a machine too fast for the test; a failure if it
-    // did not end well).
+    // Starts the render held after `hold` tiles (apps/glint/test_hold.h), waits until it
+    // holds, sends the signals; the exit status, or -1 (a failure) when the render ended before
+    // it held.
     int interrupt(const std::vector<int>& signals, const std::vector<std::string>& more,
-                  const std::function<bool()>& ready) const {
-        const pid_t pid = spawn_glint(args(more));
+                  int hold = kResumeTilesPerPass / 4) const {
+        const pid_t pid = spawn_glint(args(more), hold_after(hold));
         EXPECT_GT(pid, 0);
         int status = 0;
         const auto deadline = std::chrono::steady_clock::now() + std::chrono::minutes(5);
-        while (!ready()) {
+        while (!holding()) {
             if (waitpid(pid, &status, WNOHANG) == pid) {
-                // Finished: too fast to be stopped, which is no failure; anything else is.
-                EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0)
-                    << "glint failed before it could be stopped: " << slurp(dir_ / "stderr.txt");
+                ADD_FAILURE() << "glint ended before it held: " << slurp(dir_ / "stderr.txt");
                 return -1;
             }
             if (std::chrono::steady_clock::now() > deadline) {
                 kill(pid, SIGKILL);
                 waitpid(pid, &status, 0);
-                ADD_FAILURE() << "no progress from glint in five minutes";
+                ADD_FAILURE() << "glint did not hold in five minutes";
                 return -1;
             }
-            std::this_thread::sleep_for(std::chrono::milliseconds(10));
+            std::this_thread::sleep_for(std::chrono::milliseconds(5));
         }
         for (const int signal : signals) {
             kill(pid, signal);
@@ -938,9 +934,6 @@ protected:
         waitpid(pid, &status, 0);
         if (WIFSIGNALED(status) && WTERMSIG(status) == SIGKILL) return -SIGKILL;
         return WIFEXITED(status) ? WEXITSTATUS(status) : -2;
-    }
-    bool progress_shown() const {
-        return slurp(dir_ / "stderr.txt").find("% done") != std::string::npos;
     }
 
     fs::path scene_ = fs::path(GLINT_SOURCE_DIR) / "scenes/distributed-showcase.yaml";
@@ -953,13 +946,10 @@ TEST_F(Resume, InterruptedRenderResumesToTheUninterruptedImage) {
         const char* name;
         std::vector<int> signals;
     };
-    int checked = 0;
     for (const Stop& stop : {Stop{"Ctrl-C", {SIGINT}}, Stop{"Ctrl-C twice", {SIGINT, SIGINT}},
                              Stop{"SIGTERM", {SIGTERM}}}) {
         SCOPED_TRACE(stop.name);
-        const int status = interrupt(stop.signals, {}, [&] { return progress_shown(); });
-        if (status == -1 || status == 0) continue;  // finished first
-        ++checked;
+        const int status = interrupt(stop.signals, {});
         const std::string err = slurp(dir_ / "stderr.txt");
         ASSERT_EQ(status, 130) << err;
         EXPECT_NE(err.find("--resume"), std::string::npos) << err;
@@ -975,7 +965,6 @@ TEST_F(Resume, InterruptedRenderResumesToTheUninterruptedImage) {
         EXPECT_FALSE(fs::exists(dir_ / "out.partial.png"));
         fs::remove(dir_ / "out.png");
     }
-    if (checked == 0) GTEST_SKIP() << "every render finished before its signal";
 }
 
 TEST_F(Resume, ResumeFileOfOtherSettingsIsRefusedAndAMissingOneIsAnError) {
@@ -983,8 +972,7 @@ TEST_F(Resume, ResumeFileOfOtherSettingsIsRefusedAndAMissingOneIsAnError) {
     EXPECT_EQ(missing.exit_code, 2);
     EXPECT_NE(missing.err.find("out.png.resume\": there is no such file"), std::string::npos)
         << missing.err;
-    if (interrupt({SIGINT}, {}, [&] { return progress_shown(); }) != 130)
-        GTEST_SKIP() << "the render finished before Ctrl-C";
+    ASSERT_EQ(interrupt({SIGINT}, {}), 130) << slurp(dir_ / "stderr.txt");
     const std::string saved = slurp(dir_ / "out.png.resume");
     for (const auto& [option, message] :
          {std::pair<std::vector<std::string>, std::string>{{"--seed", "4"}, "for seed 3, not 4"},
@@ -1020,8 +1008,7 @@ TEST_F(Resume, ATextureChangedSinceTheInterruptionIsNamed) {
     text += "  - {type: sphere, center: [0, 3, 2], radius: 0.8, material: spot}\n";
     scene_ = dir_ / "textured.yaml";
     write_scene("textured.yaml", text);
-    if (interrupt({SIGINT}, {}, [&] { return progress_shown(); }) != 130)
-        GTEST_SKIP() << "the render finished before Ctrl-C";
+    ASSERT_EQ(interrupt({SIGINT}, {}), 130) << slurp(dir_ / "stderr.txt");
     const std::string texture = slurp(dir_ / "spot.png");
     std::ofstream(dir_ / "spot.png", std::ios::app) << "a changed texture";
     const Outcome refused = run_glint(joined(args({"--resume", "-q"})));
@@ -1036,10 +1023,11 @@ TEST_F(Resume, ATextureChangedSinceTheInterruptionIsNamed) {
 
 TEST_F(Resume, CheckpointsLetARenderKilledOutrightResume) {
     ASSERT_EQ(run_glint(joined(args({"-q"}, "reference.png"))).exit_code, 0);
-    // A checkpoint after every pass (0.001 minutes is 60 ms); SIGKILL as soon as there is one.
-    const int status = interrupt({SIGKILL}, {"--checkpoint", "0.001", "-q"},
-                                 [&] { return fs::exists(dir_ / "out.png.resume"); });
-    if (status != -SIGKILL) GTEST_SKIP() << "the render finished before its first checkpoint";
+    // A checkpoint after every pass (1e-9 minutes: any time at all); SIGKILL in the second pass,
+    // after the first pass's checkpoint.
+    ASSERT_EQ(interrupt({SIGKILL}, {"--checkpoint", "1e-9", "-q"}, kResumeTilesPerPass + 5),
+              -SIGKILL);
+    EXPECT_TRUE(fs::exists(dir_ / "out.png.resume"));
     EXPECT_FALSE(fs::exists(dir_ / "out.png"));
     EXPECT_TRUE(fs::exists(dir_ / "out.partial.png"));
     const Outcome resumed = run_glint(joined(args({"--resume", "-q"})));
@@ -1051,7 +1039,7 @@ TEST_F(Resume, OnePassRenderStopsAtTheFirstCtrlCAndResumesExactly) {
     // Whitted's single sample: one pass, which the first Ctrl-C does not wait for.
     const std::vector<std::string> whitted = {
         "render",    std::string(GLINT_SOURCE_DIR) + "/scenes/showcase.yaml",
-        "--width",   testing::kUnderSanitizer ? "400" : "1200",
+        "--width",   "320",
         "--threads", "1"};
     std::vector<std::string> reference = whitted, resume = whitted;
     reference.insert(reference.end(), {"-q", "-o", (dir_ / "reference.png").string()});
@@ -1059,16 +1047,17 @@ TEST_F(Resume, OnePassRenderStopsAtTheFirstCtrlCAndResumesExactly) {
     ASSERT_EQ(run_glint(joined(reference)).exit_code, 0);
     std::vector<std::string> run = whitted;
     run.insert(run.end(), {"-o", (dir_ / "out.png").string()});
-    const pid_t pid = spawn_glint(run);
+    // Held after 10 of its 300 tiles.
+    const pid_t pid = spawn_glint(run, hold_after(10));
     ASSERT_GT(pid, 0);
     int status = 0;
-    while (!progress_shown()) {
-        if (waitpid(pid, &status, WNOHANG) == pid) GTEST_SKIP() << "finished before Ctrl-C";
-        std::this_thread::sleep_for(std::chrono::milliseconds(10));
+    while (!holding()) {
+        ASSERT_NE(waitpid(pid, &status, WNOHANG), pid)
+            << "glint ended before it held: " << slurp(dir_ / "stderr.txt");
+        std::this_thread::sleep_for(std::chrono::milliseconds(5));
     }
     kill(pid, SIGINT);
     waitpid(pid, &status, 0);
-    if (WIFEXITED(status) && WEXITSTATUS(status) == 0) GTEST_SKIP() << "finished before Ctrl-C";
     ASSERT_TRUE(WIFEXITED(status));
     EXPECT_EQ(WEXITSTATUS(status), 130) << slurp(dir_ / "stderr.txt");
     EXPECT_NE(slurp(dir_ / "stderr.txt").find("interrupted in the first pass:"), std::string::npos)
@@ -1076,6 +1065,18 @@ TEST_F(Resume, OnePassRenderStopsAtTheFirstCtrlCAndResumesExactly) {
     const Outcome resumed = run_glint(joined(resume));
     ASSERT_EQ(resumed.exit_code, 0) << resumed.err;
     EXPECT_TRUE(slurp(dir_ / "out.png") == slurp(dir_ / "reference.png"));
+}
+
+TEST_F(Resume, TheTestHoldTakesAWholeNumberOfTiles) {
+    for (const char* bad : {"0", "-3", "many", "4x", ""}) {
+        const Outcome r =
+            run_glint(joined(args({"-q"})),
+                      std::string("export GLINT_TEST_HOLD_AFTER_TILES='") + bad + "' && ");
+        EXPECT_EQ(r.exit_code, 2) << bad;
+        EXPECT_NE(r.err.find("GLINT_TEST_HOLD_AFTER_TILES must be a whole number of tiles"),
+                  std::string::npos)
+            << r.err;
+    }
 }
 
 TEST_F(Resume, CheckpointMustBeAPositiveNumberOfMinutes) {

@@ -114,6 +114,7 @@ bool render_passes(const World& world, const RenderOptions& options, const std::
     if (importance_samples_filter(settings)) filter_sampling.emplace(filter_of(settings));
     const FilterSampling* filter = filter_sampling ? &*filter_sampling : nullptr;
     std::mutex totals_mutex;
+    std::atomic<int> tiles_finished{0};
     // An explicit thread count may exceed the cores (to check determinism, say): lift TBB's
     // default cap on workers for the duration of the render.
     std::optional<tbb::global_control> allow_threads;
@@ -148,6 +149,7 @@ bool render_passes(const World& world, const RenderOptions& options, const std::
                         }
                         state.tiles_done[i] = 1;  // tasks write distinct elements
                         if (progress) ++progress->tiles_done;
+                        if (options.after_tile) options.after_tile(++tiles_finished);
                     }
                 },
                 tbb::simple_partitioner());
@@ -163,6 +165,8 @@ bool render_passes(const World& world, const RenderOptions& options, const std::
         if (options.after_pass) {
             ++state.next_pass;  // the state as saved: this pass is done
             options.after_pass(state);
+            // A stop asked for while it ran (a slow checkpoint) need not wait for another pass.
+            if (progress && (progress->stop_after_pass || progress->cancel)) return false;
             --state.next_pass;
         }
     }

@@ -28,6 +28,9 @@ struct RenderOptions {
     // Called on render()'s thread after each pass but the last, with the state so far (to save a
     // checkpoint, say); the render waits for it.
     std::function<void(const RenderState&)> after_pass;
+    // Called on the render thread that finished a tile, with the tiles finished so far in this
+    // call of render(), counting each tile once a pass; that thread waits for it. Concurrent.
+    std::function<void(int tiles_finished)> after_tile;
 };
 
 // Shared with a watcher thread (a progress bar) while render() runs.
