@@ -147,14 +147,21 @@ std::string info_text(const InfoReport& r) {
                    .c_str());
     out += "\n";
     accel_text(out, r.accel, r.accel_stats);
-    if (r.warnings.empty()) {
-        out += "\nNo warnings\n";
-        return out;
+    std::size_t warnings = 0;
+    for (const LintWarning& w : r.warnings) warnings += !w.note;
+    if (warnings == 0) out += "\nNo warnings\n";
+    // Warnings first, then notes.
+    for (const bool notes : {false, true}) {
+        const std::size_t n = notes ? r.warnings.size() - warnings : warnings;
+        if (n == 0) continue;
+        append(
+            out, "\n%s\n",
+            notes ? plural(n, "note", "notes").c_str() : plural(n, "warning", "warnings").c_str());
+        for (const LintWarning& w : r.warnings)
+            if (w.note == notes)
+                out += wrapped("  " + where(w) + w.subject + ": " + w.message + " [" +
+                               std::string(w.rule) + "]");
     }
-    append(out, "\n%s\n", plural(r.warnings.size(), "warning", "warnings").c_str());
-    for (const LintWarning& w : r.warnings)
-        out += wrapped("  " + where(w) + w.subject + ": " + w.message + " [" + std::string(w.rule) +
-                       "]");
     return out;
 }
 
@@ -204,8 +211,9 @@ std::string info_json(const InfoReport& r) {
     out += "  \"warnings\": [";
     separator = "\n";
     for (const LintWarning& w : r.warnings) {
-        append(out, "%s    {\"rule\": %s, \"subject\": %s, ", separator,
-               json_string(w.rule).c_str(), json_string(w.subject).c_str());
+        append(out, "%s    {\"rule\": %s, \"severity\": \"%s\", \"subject\": %s, ", separator,
+               json_string(w.rule).c_str(), w.note ? "note" : "warning",
+               json_string(w.subject).c_str());
         out += "\"message\": " + json_string(w.message) + ", ";
         if (w.location)
             out += "\"file\": " + json_string(w.location->file) +

@@ -21,7 +21,7 @@
 #include "glint/image/image_format.h"
 #include "glint/image/image_io.h"
 #include "glint/image/srgb.h"
-#include "glint/render/aov_picture.h"
+#include "glint/render/film/aov_picture.h"
 #include "glint/render/memory_estimate.h"
 #include "glint/render/render.h"
 #include "glint/render/resume_file.h"
@@ -98,6 +98,8 @@ void print_summary(const std::string& output, const RenderSettings& s, const Ren
     }
     std::printf("  rays       %15s  %.2f Mrays/s\n", with_thousands(rays.total()).c_str(), mrays);
     for (std::size_t kind = 0; kind < kRayKindCount; ++kind) {
+        // The notes' four kinds always; the others when an integrator traced them.
+        if (kind > std::size_t(RayKind::refracted) && rays.traced[kind] == 0) continue;
         std::printf("  %-10s %15s", std::string(kRayKindNames[kind]).c_str(),
                     with_thousands(rays.traced[kind]).c_str());
         if (RayKind(kind) == RayKind::primary)

@@ -390,7 +390,8 @@ TEST_F(Cli, InfoDescribesTheShowcase) {
           "Objects      6: box 1, plane 1, sphere 4\n", "Triangles    0\n", "Materials    5\n",
           "Lights       2: 2 point; 0 emitting objects\n",
           "Bounds       (-4.2, 0, -3.05) to (2.9, 2.6, 4.9); 1 unbounded object (a plane) beside\n",
-          "Acceleration structure: bvh\n", "  references   5 in leaves\n", "5 warnings\n",
+          "Acceleration structure: bvh\n", "  references   5 in leaves\n", "No warnings\n",
+          "5 notes\n",
           "/scenes/showcase.yaml:20:3: material \"glass\": kd + ks + reflect + transmit",
           "1.88 > 1"})
         EXPECT_NE(r.out.find(line), std::string::npos) << line << " missing from\n" << r.out;
@@ -437,7 +438,8 @@ TEST_F(Cli, InfoJsonHasTheDocumentedKeys) {
           "\"sah_traversal_cost\": 1,",
           "\"sah_intersection_cost\": 1,",
           "\"memory_bytes\": ",
-          "{\"rule\": \"energy\", \"subject\": \"material \\\"floor\\\"\", \"message\": ",
+          "{\"rule\": \"energy\", \"severity\": \"note\", \"subject\": \"material "
+          "\\\"floor\\\"\", \"message\": ",
           "/scenes/showcase.yaml\", \"line\": 13, \"column\": 3}"})
         EXPECT_NE(r.out.find(key), std::string::npos) << key << " missing from\n" << r.out;
 }

@@ -1,7 +1,7 @@
 // Output variables: the image's parts add up to it; what the eye ray hit is recorded with the
 // notes' numbers and averaged over the samples that hit; ids, tree depth, samples and traversal
 // counts; asking for them leaves the image as it was, bit for bit.
-#include "glint/render/aov.h"
+#include "glint/render/film/aov.h"
 
 #include <gtest/gtest.h>
 
@@ -11,7 +11,7 @@
 #include <string>
 
 #include "glint/image/colour_map.h"
-#include "glint/render/aov_picture.h"
+#include "glint/render/film/aov_picture.h"
 #include "glint/render/memory_estimate.h"
 #include "glint/render/render.h"
 #include "glint/scene/load_scene.h"
@@ -46,7 +46,7 @@ TEST(AovList, NamesAndGroups) {
     EXPECT_EQ(set.list(), (std::vector<Aov>{Aov::depth, Aov::normal}));
     EXPECT_EQ(parse_aov_list("contributions").list(),
               (std::vector<Aov>{Aov::emission, Aov::ambient, Aov::diffuse, Aov::specular,
-                                Aov::reflected, Aov::refracted}));
+                                Aov::reflected, Aov::refracted, Aov::direct, Aov::indirect}));
     EXPECT_EQ(parse_aov_list("ids").list(), (std::vector<Aov>{Aov::object, Aov::material}));
     EXPECT_EQ(parse_aov_list("surface,uv").list().size(), 5u);
     EXPECT_EQ(parse_aov_list("all").list().size(), counts_traversal() ? kAovCount : kAovCount - 2);
@@ -87,8 +87,9 @@ TEST_P(AovScenes, ContributionsAddUpToTheImageWhichStaysAsItWas) {
     const RenderResult plain = render_with(scene, {});
     const RenderResult r = render_with(scene, all_but_counts());
     EXPECT_TRUE(same_bits(r.image, plain.image)) << "the recorder changed the image";
-    const Aov parts[] = {Aov::emission, Aov::ambient,   Aov::diffuse,
-                         Aov::specular, Aov::reflected, Aov::refracted};
+    // Whitted's parts, and the path tracer's.
+    const Aov parts[] = {Aov::emission,  Aov::ambient,   Aov::diffuse, Aov::specular,
+                         Aov::reflected, Aov::refracted, Aov::direct,  Aov::indirect};
     float largest_part = 0;
     for (std::size_t i = 0; i < r.image.pixels.size(); ++i) {
         Color sum;
@@ -99,7 +100,7 @@ TEST_P(AovScenes, ContributionsAddUpToTheImageWhichStaysAsItWas) {
         ASSERT_NEAR(sum.r, pixel.r, tolerance(pixel.r)) << GetParam() << " pixel " << i;
         ASSERT_NEAR(sum.g, pixel.g, tolerance(pixel.g)) << GetParam() << " pixel " << i;
         ASSERT_NEAR(sum.b, pixel.b, tolerance(pixel.b)) << GetParam() << " pixel " << i;
-        for (const Aov a : {Aov::diffuse, Aov::reflected, Aov::refracted})
+        for (const Aov a : {Aov::diffuse, Aov::reflected, Aov::refracted, Aov::direct})
             largest_part = std::max(largest_part, layer(r, a).pixels[i].g);
     }
     EXPECT_GT(largest_part, 0) << "nothing but emission and ambient";

@@ -7,7 +7,7 @@
 #include <cmath>
 #include <string>
 
-#include "glint/render/explain.h"
+#include "glint/render/explain/explain.h"
 #include "glint/render/ray_stats.h"
 #include "glint/render/render.h"
 #include "glint/render/world.h"

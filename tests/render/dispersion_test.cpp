@@ -6,9 +6,9 @@
 #include <cmath>
 
 #include "glint/math/constants.h"
-#include "glint/render/distributed.h"
+#include "glint/render/integrators/distributed.h"
+#include "glint/render/integrators/surface_context.h"
 #include "glint/render/render.h"
-#include "glint/render/surface_context.h"
 #include "glint/scene/load_scene.h"
 
 namespace glint {

@@ -1,14 +1,14 @@
 // The distributed integrator against values computed another way: the penumbra of a disk light
 // behind an occluding disk by numerical integration over the light, an emitting sphere's light
 // by its solid angle, and an area light that shrinks to a point light.
-#include "glint/render/distributed.h"
+#include "glint/render/integrators/distributed.h"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 
 #include "glint/math/constants.h"
-#include "glint/render/whitted.h"
+#include "glint/render/integrators/whitted.h"
 
 namespace glint {
 namespace {

@@ -1,7 +1,7 @@
 // glint explain: the recorded ray tree gives back the rendered sample to the last bit, for every
 // pixel of scenes of both integrators; the notes' worked ray-sphere example appears in it with
 // its numbers; each reason a branch stops is recorded; the formats carry the numbers.
-#include "glint/render/explain.h"
+#include "glint/render/explain/explain.h"
 
 #include <gtest/gtest.h>
 
@@ -10,7 +10,7 @@
 #include <cstring>
 #include <string>
 
-#include "glint/render/ray_tree_formats.h"
+#include "glint/render/explain/ray_tree_formats.h"
 #include "glint/render/render.h"
 #include "glint/scene/load_scene.h"
 #include "recorder_test_scenes.h"

@@ -1,14 +1,14 @@
 // The media eye rays start in: a camera under water enters glass from water's index, nested
 // solids stack outermost first, a plane's inside is behind it, and what cannot be decided is
 // warned about.
-#include "glint/render/eye_media.h"
+#include "glint/render/integrators/eye_media.h"
 
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <string>
 
-#include "glint/render/explain.h"
+#include "glint/render/explain/explain.h"
 #include "glint/render/world.h"
 
 namespace glint {

@@ -1,6 +1,6 @@
 // The film: filter-weighted averages with worked numbers, splats across pixel and tile borders,
 // and sums that do not depend on the order or grouping samples arrive in.
-#include "glint/render/film.h"
+#include "glint/render/film/film.h"
 
 #include <gtest/gtest.h>
 

@@ -5,9 +5,9 @@
 
 #include <cmath>
 
-#include "glint/render/distributed.h"
-#include "glint/render/glossy_lobe.h"
-#include "glint/render/whitted.h"
+#include "glint/render/integrators/distributed.h"
+#include "glint/render/integrators/glossy_lobe.h"
+#include "glint/render/integrators/whitted.h"
 #include "glint/sampling/random.h"
 
 namespace glint {

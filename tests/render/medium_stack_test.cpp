@@ -1,12 +1,12 @@
 // Refraction between media: the stack of media a ray travels through, and Snell's law at a
 // glass-water boundary in a rendered ray tree.
-#include "glint/render/medium_stack.h"
+#include "glint/render/integrators/medium_stack.h"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 
-#include "glint/render/whitted.h"
+#include "glint/render/integrators/whitted.h"
 
 namespace glint {
 namespace {

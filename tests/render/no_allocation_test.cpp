@@ -7,7 +7,7 @@
 #include <cstdlib>
 #include <new>
 
-#include "glint/render/whitted.h"
+#include "glint/render/integrators/whitted.h"
 #include "glint/scene/yaml/yaml_scene_loader.h"
 
 namespace {

@@ -1,5 +1,5 @@
 // The example scenes the integrators' recorders (glint explain, the output variables) are tested
-// on, between them every feature of both integrators, and a test name for each:
+// on, between them every feature of the integrators, and a test name for each:
 // "scenes/features/soft-shadows.yaml" is soft_shadows.
 #pragma once
 
@@ -24,6 +24,7 @@ inline constexpr const char* kRecorderTestScenes[] = {
     "scenes/features/textures.yaml",
     "scenes/features/csg.yaml",
     "scenes/features/meshes.yaml",
+    "scenes/features/cornell-box.yaml",
 };
 
 inline std::string scene_test_name(const ::testing::TestParamInfo<const char*>& param) {

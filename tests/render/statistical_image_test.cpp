@@ -95,7 +95,8 @@ INSTANTIATE_TEST_SUITE_P(Scenes, StatisticalImage,
                                            "features/translucency.yaml",
                                            "features/depth-of-field.yaml",
                                            "features/motion-blur.yaml", "features/dispersion.yaml",
-                                           "distributed-showcase.yaml"),
+                                           "distributed-showcase.yaml",
+                                           "features/cornell-box.yaml"),
                          [](const ::testing::TestParamInfo<std::string>& param) {
                              std::string id = fs::path(param.param).stem().string();
                              for (char& c : id)

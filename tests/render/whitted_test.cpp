@@ -1,6 +1,6 @@
 // The Whitted integrator against worked numbers: each term of the recursion, shadow feelers,
 // the ray-tree cut-offs and the ray counts.
-#include "glint/render/whitted.h"
+#include "glint/render/integrators/whitted.h"
 
 #include <gtest/gtest.h>
 

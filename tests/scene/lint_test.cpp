@@ -14,12 +14,17 @@ namespace {
 
 // A camera at (0, 1, -5) looking at the origin, a point light above, and the given sections.
 Scene scene_with(const std::string& rest,
-                 const std::string& lights = "lights: [{type: point, position: [0, 5, -3]}]\n") {
-    return parse_yaml_scene(
-        "image: {width: 40, height: 30}\n"
-        "camera: {from: [0, 1, -5], at: [0, 0, 0], fov: 40}\n" +
-            lights + rest,
-        "lint.yaml");
+                 const std::string& lights = "lights: [{type: point, position: [0, 5, -3]}]\n",
+                 const std::string& integrator = "whitted") {
+    return parse_yaml_scene("image: {width: 40, height: 30, integrator: " + integrator +
+                                "}\n"
+                                "camera: {from: [0, 1, -5], at: [0, 0, 0], fov: 40}\n" +
+                                lights + rest,
+                            "lint.yaml");
+}
+
+Scene path_scene_with(const std::string& rest) {
+    return scene_with(rest, "lights: [{type: point, position: [0, 5, -3]}]\n", "path");
 }
 
 std::vector<LintWarning> of_rule(const Scene& scene, std::string_view rule) {
@@ -111,6 +116,33 @@ TEST(Lint, CoefficientsAboveOneMakeEnergy) {
     EXPECT_EQ(warnings[0].subject, "material \"shiny\"");
     EXPECT_NE(warnings[0].message.find("0.7 + 0.2 + 0.3 + 0 = 1.2"), std::string::npos)
         << warnings[0].message;
+}
+
+// For Whitted's tracer the rule is a guide (a note); the path tracer scales such a material
+// down (a warning, saying by how much).
+TEST(Lint, EnergyIsANoteForWhittedAndAWarningForThePathTracer) {
+    const std::string shiny =
+        "materials: {shiny: {kd: 0.7, ks: 0.2, reflect: 0.3}}\n"
+        "objects: [{type: sphere, center: [0, 0, 0], radius: 1, material: shiny}]\n";
+    EXPECT_TRUE(of_rule(scene_with(shiny), "energy").at(0).note);
+    const auto path = of_rule(path_scene_with(shiny), "energy");
+    ASSERT_EQ(path.size(), 1u);
+    EXPECT_FALSE(path[0].note);
+    EXPECT_NE(path[0].message.find("the path integrator scales the four down by 1/1.2"),
+              std::string::npos)
+        << path[0].message;
+}
+
+TEST(Lint, ThePathTracerNotesThatItLeavesTheAmbientTermOut) {
+    const std::string lit =
+        "ambient: [0.2, 0.2, 0.2]\nmaterials: {dull: {ka: 0.3}}\n"
+        "objects: [{type: sphere, center: [0, 0, 0], radius: 1, "
+        "material: dull}]\n";
+    EXPECT_TRUE(of_rule(scene_with(lit), "ambient").empty());  // whitted uses it
+    const auto notes = of_rule(path_scene_with(lit), "ambient");
+    ASSERT_EQ(notes.size(), 1u);
+    EXPECT_TRUE(notes[0].note);
+    EXPECT_EQ(notes[0].subject, "material \"dull\"");
 }
 
 TEST(Lint, CoefficientsSummingToExactlyOneAreFine) {

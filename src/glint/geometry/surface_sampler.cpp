@@ -164,6 +164,18 @@ std::optional<SurfaceSampler> SurfaceSampler::of(const Shape& shape) {
     return sampler;
 }
 
+namespace {
+
+// |det M| of the transform's linear part.
+float determinant(const Transform& m) {
+    const auto& a = m.matrix().m;
+    return a[0][0] * (a[1][1] * a[2][2] - a[1][2] * a[2][1]) -
+           a[0][1] * (a[1][0] * a[2][2] - a[1][2] * a[2][0]) +
+           a[0][2] * (a[1][0] * a[2][1] - a[1][1] * a[2][0]);
+}
+
+}  // namespace
+
 SurfaceSample SurfaceSampler::sample(Point2 u) const {
     std::size_t piece = 0;
     if (by_area_) piece = by_area_->sample(u.x, &u.x);
@@ -173,11 +185,7 @@ SurfaceSample SurfaceSampler::sample(Point2 u) const {
         // Areas scale by |det M| |M^-T n| at a point whose unit normal is n.
         const Transform& m = *transform_;
         const Normal3 n = m(s.normal);  // M^-T n, not normalised
-        const auto& a = m.matrix().m;
-        const float det = a[0][0] * (a[1][1] * a[2][2] - a[1][2] * a[2][1]) -
-                          a[0][1] * (a[1][0] * a[2][2] - a[1][2] * a[2][0]) +
-                          a[0][2] * (a[1][0] * a[2][1] - a[1][1] * a[2][0]);
-        const float stretch = std::abs(det) * length(to_vector(n));
+        const float stretch = std::abs(determinant(m)) * length(to_vector(n));
         s.p = m(s.p);
         s.normal = normalize(n);
         s.pdf /= stretch;
@@ -205,6 +213,44 @@ SurfaceSample SurfaceSampler::sample_seen_from(Point3 from, Point2 u) const {
     const float cos_at_point = std::abs(dot(normal, w));
     s.pdf = cos_at_point / (2 * kPi * one_minus_cos_max * t * t);
     return s;
+}
+
+float SurfaceSampler::area() const {
+    if (!transform_) return area_;
+    // 1 / pdf is the area where a transform stretches the object's surface evenly; unevenly
+    // (an ellipsoid, whose area has no closed form) its mean over points spread evenly on the
+    // object is.
+    constexpr int n = 16;
+    double sum = 0;
+    for (int i = 0; i < n; ++i)
+        for (int j = 0; j < n; ++j)
+            sum += 1 / double(sample({(float(i) + 0.5f) / n, (float(j) + 0.5f) / n}).pdf);
+    return float(sum / (n * n));
+}
+
+float SurfaceSampler::pdf_seen_from(Point3 from, Point3 q, Normal3 n) const {
+    const auto* sphere = std::get_if<Sphere>(&pieces_.front());
+    if (pieces_.size() == 1 && !transform_ && sphere) {
+        const Vector3 to_center = sphere->center - from;
+        const float d2 = length_squared(to_center), r2 = sphere->radius * sphere->radius;
+        if (d2 > r2 * 1.0001f) {
+            // As sample_seen_from draws it: uniform over the cone the sphere fills.
+            const float sin2_max = r2 / d2, cos_max = std::sqrt(1 - sin2_max);
+            const float one_minus_cos_max = sin2_max / (1 + cos_max);
+            const Vector3 w = q - from;
+            const float t2 = length_squared(w);
+            if (!(t2 > 0)) return 0;
+            const float cos_at_point =
+                std::abs(dot(normalize(q - sphere->center), w)) / std::sqrt(t2);
+            return cos_at_point / (2 * kPi * one_minus_cos_max * t2);
+        }
+    }
+    if (!transform_) return 1 / area_;
+    // The object's normal there is M^T n up to length, and areas stretch by |det M| |M^-T n_o|
+    // for the unit object normal n_o: |det M| / |M^T n|.
+    const Normal3 object_normal = transform_->inverse()(n);  // (M^-1)^-T n = M^T n
+    const float stretch = std::abs(determinant(*transform_)) / length(to_vector(object_normal));
+    return 1 / (area_ * stretch);
 }
 
 }  // namespace glint

@@ -37,6 +37,13 @@ public:
     // the points near it from flickering; on any other shape sample(u). The pdf is per unit area
     // either way.
     SurfaceSample sample_seen_from(Point3 from, Point2 u) const;
+    // The density per unit area with which sample_seen_from(from, u) draws the point q of the
+    // surface, whose unit normal there is n: for multiple importance sampling, which weighs a
+    // point drawn another way by it.
+    float pdf_seen_from(Point3 from, Point3 q, Normal3 n) const;
+    // The surface's area in world space: exact, but for a transform that stretches some parts
+    // more than others, where it is the mean over 256 points spread evenly on the object.
+    float area() const;
 
     // The pieces a shape is drawn from: flat or round patches, chosen by area.
     struct Sphere {

@@ -9,8 +9,8 @@
 
 #include "glint/accel/primitive_refs.h"
 #include "glint/render/eye_sample.h"
-#include "glint/render/film.h"
-#include "glint/render/pixel_error.h"
+#include "glint/render/film/film.h"
+#include "glint/render/film/pixel_error.h"
 
 namespace glint {
 

@@ -9,7 +9,7 @@
 #include <string>
 
 #include "glint/accel/make_aggregate.h"
-#include "glint/render/aov.h"
+#include "glint/render/film/aov.h"
 #include "glint/scene/scene.h"
 
 namespace glint {

@@ -16,11 +16,12 @@ enum class RayKind : std::uint8_t {
                 // transparent objects counts)
     reflected,  // mirror or glossy reflection
     refracted,  // refraction or translucency
+    diffuse,    // scattered by the diffuse part of a material, or its highlight (path tracing)
 };
-inline constexpr std::size_t kRayKindCount = 4;
+inline constexpr std::size_t kRayKindCount = 5;
 // Names by RayKind, as the summary and the JSON statistics show them.
 inline constexpr std::array<std::string_view, kRayKindCount> kRayKindNames = {
-    "primary", "shadow", "reflected", "refracted"};
+    "primary", "shadow", "reflected", "refracted", "diffuse"};
 
 struct RayStats {
     std::array<std::uint64_t, kRayKindCount> traced{};  // by RayKind

@@ -18,11 +18,10 @@
 #include <stdexcept>
 
 #include "glint/geometry/traversal_counters.h"
-#include "glint/render/aov_recorder.h"
-#include "glint/render/distributed.h"
 #include "glint/render/eye_sample.h"
+#include "glint/render/film/aov_recorder.h"
+#include "glint/render/integrators/integrator_family.h"
 #include "glint/render/tiles.h"
-#include "glint/render/whitted.h"
 #include "glint/sampling/sampler.h"
 
 namespace glint {
@@ -39,14 +38,25 @@ struct Pass {
     int begin, end;
 };
 
+// What every tile of a render reads.
+template <class Integrator>
+struct RenderInputs {
+    const World& world;
+    const Sampler& sampler;
+    const FilterSampling* filter;  // under adaptive sampling (eye_sample.h); else null
+    const typename Integrator::Shared& shared;
+};
+
 // Compiled twice: with the output variables' code (kAovs) and without, the render's own loop.
 template <class Integrator, bool kAovs>
-void render_tile(const Tile& tile, Pass pass, const World& world, const Sampler& sampler,
-                 const FilterSampling* filter, RenderState& state, TileTotals& totals) {
+void render_tile(const Tile& tile, Pass pass, const RenderInputs<Integrator>& in,
+                 RenderState& state, TileTotals& totals) {
+    const World& world = in.world;
+    const FilterSampling* filter = in.filter;
     const Camera& camera = world.camera();
     const RenderSettings& settings = world.settings();
     const int width = settings.width;
-    Integrator integrator(world);  // one per tile: it holds per-thread caches
+    Integrator integrator(world, in.shared);  // one per tile: it holds per-thread caches
     FilmTile film_tile = state.film.make_tile(tile);
     // Output variables come from a recorder on the integrator, which then runs its recording
     // code; without them the integrator runs the renderer's own.
@@ -63,7 +73,7 @@ void render_tile(const Tile& tile, Pass pass, const World& world, const Sampler&
             if (int(taken) < pass.begin) continue;  // stopped by adaptive sampling
             PixelError unused;
             PixelError& error = settings.adaptive ? state.errors[pixel] : unused;
-            PixelPatterns patterns(sampler, pixel);
+            PixelPatterns patterns(in.sampler, pixel);
             int s = pass.begin;
             for (; s < pass.end; ++s) {
                 // Adaptive sampling stops a pixel once its error is small enough; its samples
@@ -112,7 +122,9 @@ bool render_passes(const World& world, const RenderOptions& options, const std::
     const Sampler sampler(sampler_of(settings), spp, options.seed);
     std::optional<FilterSampling> filter_sampling;
     if (importance_samples_filter(settings)) filter_sampling.emplace(filter_of(settings));
-    const FilterSampling* filter = filter_sampling ? &*filter_sampling : nullptr;
+    const typename Integrator::Shared shared = Integrator::prepare(world);
+    const RenderInputs<Integrator> inputs{world, sampler,
+                                          filter_sampling ? &*filter_sampling : nullptr, shared};
     std::mutex totals_mutex;
     std::atomic<int> tiles_finished{0};
     // An explicit thread count may exceed the cores (to check determinism, say): lift TBB's
@@ -137,11 +149,9 @@ bool render_passes(const World& world, const RenderOptions& options, const std::
                         }
                         TileTotals totals;
                         if (state.aovs.empty())
-                            render_tile<Integrator, false>(tiles[i], pass, world, sampler, filter,
-                                                           state, totals);
+                            render_tile<Integrator, false>(tiles[i], pass, inputs, state, totals);
                         else
-                            render_tile<Integrator, true>(tiles[i], pass, world, sampler, filter,
-                                                          state, totals);
+                            render_tile<Integrator, true>(tiles[i], pass, inputs, state, totals);
                         {
                             const std::lock_guard lock(totals_mutex);
                             state.rays += totals.rays;
@@ -215,16 +225,9 @@ RenderResult render(const World& world, const RenderOptions& options, RenderProg
     }
 
     RenderResult result;
-    switch (settings.integrator) {
-        case IntegratorKind::whitted:
-            result.complete =
-                render_passes<WhittedIntegrator>(world, options, tiles, progress, *state);
-            break;
-        case IntegratorKind::distributed:
-            result.complete =
-                render_passes<DistributedIntegrator>(world, options, tiles, progress, *state);
-            break;
-    }
+    result.complete = with_integrator(settings.integrator, [&]<class Integrator>() {
+        return render_passes<Integrator>(world, options, tiles, progress, *state);
+    });
     result.image = state->film.resolve();
     if (options.record_samples_taken) result.samples_taken = samples_image(*state);
     result.aovs = state->aovs.resolve();

@@ -10,8 +10,8 @@
 #include <vector>
 
 #include "glint/image/image.h"
-#include "glint/render/aov_films.h"
-#include "glint/render/film.h"
+#include "glint/render/film/aov_films.h"
+#include "glint/render/film/film.h"
 #include "glint/render/ray_stats.h"
 #include "glint/render/render_state.h"
 #include "glint/render/world.h"

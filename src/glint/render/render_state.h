@@ -7,9 +7,9 @@
 #include <cstdint>
 #include <vector>
 
-#include "glint/render/aov_films.h"
-#include "glint/render/film.h"
-#include "glint/render/pixel_error.h"
+#include "glint/render/film/aov_films.h"
+#include "glint/render/film/film.h"
+#include "glint/render/film/pixel_error.h"
 #include "glint/render/ray_stats.h"
 #include "glint/scene/scene.h"
 

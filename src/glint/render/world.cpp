@@ -6,7 +6,7 @@
 #include <cmath>
 #include <utility>
 
-#include "glint/render/eye_media.h"
+#include "glint/render/integrators/eye_media.h"
 
 namespace glint {
 
@@ -43,6 +43,10 @@ World::World(Scene scene, AccelKind accel, ShadowAcceleration shadows)
         material_of_.push_back(object.material);
     }
     scene.objects = {};  // the moved-from shapes: freed before the structure is built
+    if (!lights_scene_.empty()) {
+        lights_scene_.resize(primitives_.size(), 0);
+        object_light_of_.resize(primitives_.size(), -1);
+    }
     EyeMedia eye = find_eye_media(camera_, settings_.width, settings_.height, primitives_,
                                   materials_, material_of_);
     for (const std::uint32_t p : eye.primitives) {
@@ -52,6 +56,9 @@ World::World(Scene scene, AccelKind accel, ShadowAcceleration shadows)
     warnings_.insert(warnings_.end(), eye.warnings.begin(), eye.warnings.end());
     aggregate_ = make_aggregate(accel, primitives_);
     scene_scale_ = scene_scale(aggregate_->bounds(), camera_.eye());
+    const Bounds3 bounded = aggregate_->bounds();
+    if (!bounded.is_empty() && bounded.is_finite())
+        scene_radius_ = std::max(length(bounded.diagonal()) / 2, 1e-6f);
     shadows_ = shadows;
     bool any_buffer = false;
     for (const Light& light : lights_) {
@@ -70,9 +77,21 @@ World::World(Scene scene, AccelKind accel, ShadowAcceleration shadows)
 void World::add_object_light(const SceneObject& object, std::uint32_t primitive) {
     const Color emission = materials_[object.material].emission;
     if (!object.emits_light || is_black(emission)) return;
+    if (lights_scene_.empty()) {
+        lights_scene_.assign(primitive, 0);
+        object_light_of_.assign(primitive, -1);
+    }
+    // Primitives before this one that did not emit.
+    lights_scene_.resize(primitive, 0);
+    object_light_of_.resize(primitive, -1);
+    lights_scene_.push_back(1);
+    object_light_of_.push_back(-1);
     if (auto surface = SurfaceSampler::of(object.shape)) {
-        object_lights_.push_back({std::move(*surface), emission, primitive});
-    } else if (settings_.integrator != IntegratorKind::whitted) {
+        object_light_of_.back() = std::int32_t(object_lights_.size());
+        object_lights_.push_back({std::move(*surface), emission,
+                                  materials_[object.material].emits_both_sides, primitive});
+    } else if (!integrator_info(settings_.integrator).physically_based &&
+               settings_.integrator != IntegratorKind::whitted) {
         warnings_.push_back("object " + std::to_string(primitive) + " (" +
                             std::string(shape_name(object.shape)) +
                             ") emits light but cannot light the scene: only spheres, disks, "

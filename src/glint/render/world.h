@@ -13,7 +13,7 @@
 #include "glint/accel/make_aggregate.h"
 #include "glint/camera/camera.h"
 #include "glint/math/huge_page_allocator.h"
-#include "glint/render/medium_stack.h"
+#include "glint/render/integrators/medium_stack.h"
 #include "glint/scene/scene.h"
 #include "glint/shading/object_light.h"
 
@@ -43,6 +43,15 @@ public:
     std::span<const Light> lights() const { return lights_; }
     // The objects whose material emits light and whose surface can be drawn on, in scene order.
     std::span<const ObjectLight> object_lights() const { return object_lights_; }
+    // Whether a primitive lights the scene (it emits and its object's emits_light is on), and
+    // its index among object_lights(), -1 when it has none (it emits nothing, only glows, or
+    // cannot be drawn on).
+    bool lights_scene(std::uint32_t primitive) const {
+        return !lights_scene_.empty() && lights_scene_[primitive];
+    }
+    std::int32_t object_light_index(std::uint32_t primitive) const {
+        return object_light_of_.empty() ? -1 : object_light_of_[primitive];
+    }
     // What the user should know about the world as built ("an emitting torus cannot light").
     const std::vector<std::string>& warnings() const { return warnings_; }
     // The refracting objects eye rays start in (eye_media.h), at their own indices: vacuum for
@@ -77,6 +86,10 @@ public:
         return material_of_[primitive];
     }
 
+    // The radius of a sphere around the bounded geometry (1 when there is none): the scale of
+    // the scene, for weighing lights whose intensity does not fall off with distance.
+    float scene_radius() const { return scene_radius_; }
+
     // How far a secondary ray's origin is moved off the surface at p: a fixed fraction of the
     // larger of the scene's extent and p's own magnitude, since float rounding error grows with
     // the magnitude of the coordinates involved.
@@ -103,6 +116,10 @@ private:
     ShadowAcceleration shadows_;
     std::vector<std::unique_ptr<LightBuffer>> light_buffers_;  // per light; null for none
     float scene_scale_ = 1;  // largest coordinate magnitude of bounded geometry
+    float scene_radius_ = 1;
+    // Per primitive, filled only when some object emits light.
+    std::vector<std::uint8_t> lights_scene_;
+    std::vector<std::int32_t> object_light_of_;
 };
 
 // Relative size of the secondary-ray offset: about 80 float ulps of the coordinates involved.

@@ -94,19 +94,47 @@ void light_inside(const Scene& scene, Warnings& out) {
     }
 }
 
+// For Whitted's and Cook's tracers a note (the notes' k_local + k_refl + k_trans = 1 is a
+// guide there, and scenes break it for effect); for the physically based integrators, which
+// scale the parts down so that no surface makes light, a warning.
 void energy(const Scene& scene, Warnings& out) {
+    const IntegratorInfo& integrator = integrator_info(scene.settings.integrator);
     for (std::size_t i = 0; i < scene.materials.size(); ++i) {
         const Material& m = scene.materials[i];
         const double sum = double(m.kd) + m.ks + m.reflect + m.transmit;
         // Float sums of tenths are off by an ulp or so; a real excess is larger.
         if (!(sum > 1 + 1e-5)) continue;
-        out.push_back({"energy", material_subject(m),
-                       "kd + ks + reflect + transmit = " + number(m.kd) + " + " + number(m.ks) +
-                           " + " + number(m.reflect) + " + " + number(m.transmit) + " = " +
-                           number(sum) +
-                           " > 1: the surface can give back more light than it receives "
-                           "(k_local + k_refl + k_trans should be at most 1)",
-                       located(scene, scene.sources.materials, i)});
+        const std::string parts = "kd + ks + reflect + transmit = " + number(m.kd) + " + " +
+                                  number(m.ks) + " + " + number(m.reflect) + " + " +
+                                  number(m.transmit) + " = " + number(sum) + " > 1";
+        if (integrator.physically_based)
+            out.push_back({"energy", material_subject(m),
+                           parts + ": the " + std::string(integrator.name) +
+                               " integrator scales the four down by 1/" + number(sum) +
+                               ", so that the surface gives back no more light than it receives",
+                           located(scene, scene.sources.materials, i)});
+        else
+            out.push_back({"energy", material_subject(m),
+                           parts + ": the surface can give back more light than it receives "
+                                   "(k_local + k_refl + k_trans should be at most 1)",
+                           located(scene, scene.sources.materials, i), /*note=*/true});
+    }
+}
+
+// The ambient term is Whitted's stand-in for the light that surfaces reflect onto one another,
+// which the physically based integrators compute: they leave it out.
+void ambient(const Scene& scene, Warnings& out) {
+    const IntegratorInfo& integrator = integrator_info(scene.settings.integrator);
+    if (!integrator.physically_based || is_black(scene.ambient)) return;
+    for (std::size_t i = 0; i < scene.materials.size(); ++i) {
+        const Material& m = scene.materials[i];
+        if (!(m.ka > 0)) continue;
+        out.push_back({"ambient", material_subject(m),
+                       "ka " + number(m.ka) + " with the scene's ambient light: the " +
+                           std::string(integrator.name) +
+                           " integrator leaves the ambient term out, since it computes the "
+                           "light it stands in for",
+                       located(scene, scene.sources.materials, i), /*note=*/true});
     }
 }
 
@@ -207,6 +235,7 @@ std::vector<LintWarning> lint_scene(const Scene& scene) {
     camera_inside(scene, out);
     light_inside(scene, out);
     energy(scene, out);
+    ambient(scene, out);
     ior(scene, out);
     unused_material(scene, out);
     out_of_view(scene, out);

@@ -21,12 +21,14 @@ struct LintWarning {
     std::string message;  // what is wrong and why it matters
     // Where the subject was read, when the loader kept it (SceneSources): the YAML loader does.
     std::optional<SourceLocation> location;
+    // A note tells what the integrator makes of the scene; a warning, what is probably not meant.
+    bool note = false;
 };
 
 // The rules' names, in the order lint_scene() applies them.
-inline constexpr std::string_view kLintRules[] = {"no-lights",  "camera-inside", "light-inside",
-                                                  "energy",     "ior",           "unused-material",
-                                                  "out-of-view"};
+inline constexpr std::string_view kLintRules[] = {
+    "no-lights", "camera-inside", "light-inside",    "energy",
+    "ambient",   "ior",           "unused-material", "out-of-view"};
 
 // Every warning, rule by rule in kLintRules' order, then in scene order.
 std::vector<LintWarning> lint_scene(const Scene& scene);

@@ -16,20 +16,12 @@
 #include "glint/math/huge_page_allocator.h"
 #include "glint/sampling/filter.h"
 #include "glint/sampling/sampler.h"
+#include "glint/scene/integrators.h"
 #include "glint/scene/scene_limits.h"
 #include "glint/shading/light.h"
 #include "glint/shading/material.h"
 
 namespace glint {
-
-// The algorithms of the slides that turn an eye ray into a colour: Whitted's recursive ray
-// tracing (1980) and Cook, Porter and Carpenter's distributed ray tracing (1984).
-enum class IntegratorKind { whitted, distributed };
-
-// The integrators' names, sorted, as scene files and the command line write them.
-std::span<const std::string_view> integrator_names();
-std::optional<IntegratorKind> integrator_from_name(std::string_view name);
-std::string_view integrator_name(IntegratorKind kind);
 
 // What the scene asks of the image and of the ray tree.
 // Adaptive sampling: a pixel takes samples until its error estimate falls below the threshold,

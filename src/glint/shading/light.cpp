@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "glint/math/constants.h"
 #include "glint/math/interval.h"
 #include "glint/sampling/warp.h"
 
@@ -87,5 +88,45 @@ LightSample sample_light(const Light& light, Point3 p, Point2 u) {
 }
 
 bool is_area_light(const Light& light) { return std::holds_alternative<AreaLight>(light); }
+
+namespace {
+
+Color power_of(Color color, const Attenuation& a, float r) {
+    return color * (4 * kPi * kPi * r * r / (a.constant + r * (a.linear + r * a.quadratic)));
+}
+
+struct PowerOf {
+    float r;
+    Color operator()(const PointLight& l) const { return power_of(l.color, l.attenuation, r); }
+    Color operator()(const SpotLight& l) const {
+        // The solid angle of the cone, the falloff counted half (pbrt-v4's estimate).
+        const float share = (1 - 0.5f * (l.cos_cone + l.cos_falloff)) / 2;
+        return power_of(l.color, l.attenuation, r) * share;
+    }
+    Color operator()(const DirectionalLight& l) const { return l.color * (kPi * kPi * r * r); }
+    Color operator()(const AreaLight& l) const { return power_of(l.color, l.attenuation, r); }
+};
+
+bool falls_off_as_inverse_square(const Attenuation& a) {
+    return a.constant == 0 && a.linear == 0 && a.quadratic > 0;
+}
+
+}  // namespace
+
+Color light_power(const Light& light, float scene_radius) {
+    return std::visit(PowerOf{scene_radius}, light);
+}
+
+bool emits_finite_power(const Light& light) {
+    if (std::holds_alternative<DirectionalLight>(light)) return true;
+    return std::visit(
+        [](const auto& l) {
+            if constexpr (requires { l.attenuation; })
+                return falls_off_as_inverse_square(l.attenuation);
+            else
+                return true;
+        },
+        light);
+}
 
 }  // namespace glint

@@ -104,4 +104,16 @@ LightSample sample_light(const Light& light, Point3 p, Point2 u);
 // Whether the light has an extent, so that shadow rays towards it differ from sample to sample.
 bool is_area_light(const Light& light);
 
+// The power the light sends into the scene, for picking lights in proportion to it. A light
+// whose intensity I_L lights a surface facing it with irradiance pi I_L (so that Phong's
+// diffuse term is Lambert's), which falls off as 1 / (c + l d + q d^2): the power through a
+// sphere of radius `scene_radius` around it, 4 pi^2 R^2 I_L / (c + l R + q R^2), the whole
+// power for a light that falls off as 1 / d^2; a spot light's share of it within its cone; a
+// directional light's through the scene's disk, pi I_L pi R^2.
+Color light_power(const Light& light, float scene_radius);
+
+// Whether the light has a power of its own, which particles leaving it can carry: a directional
+// light, or one whose intensity falls off as 1 / d^2 alone (attenuation constant and linear 0).
+bool emits_finite_power(const Light& light);
+
 }  // namespace glint

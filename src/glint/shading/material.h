@@ -32,7 +32,9 @@ struct Material {
     Highlight highlight = Highlight::blinn;
     float reflect = 0;   // kr, weight of the mirror-reflected ray
     float transmit = 0;  // kt, weight of the refracted ray
-    float ior = 1;       // index of refraction inside (outside: the enclosing object's, or 1)
+    // Whether kt splits by Fresnel's equations into reflected (kt F) and refracted (kt (1 - F)).
+    bool fresnel = false;
+    float ior = 1;  // index of refraction inside (outside: the enclosing object's, or 1)
     // How the index varies with wavelength; with a model, ior is its value at the d line
     // (kReferenceWavelength), which rays that carry no wavelength use.
     Dispersion dispersion;
@@ -41,6 +43,9 @@ struct Material {
     float roughness = 0;
     float transmit_roughness = 0;
     Color emission;  // added to the surface's own light, unaffected by lights and shadows
+    // Whether both sides of the surface emit, or only its front (the side its normal points
+    // to), as an area light set into a ceiling does.
+    bool emits_both_sides = true;
     // What varies over the surface, when anything does; null for most materials, so that a hit
     // on them asks one question.
     std::shared_ptr<const MaterialMaps> maps;

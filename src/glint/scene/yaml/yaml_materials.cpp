@@ -27,6 +27,7 @@ constexpr std::string_view kWraps[] = {"clamp", "repeat"};
 constexpr std::string_view kFilters[] = {"bilinear", "nearest"};
 constexpr std::string_view kCheckerSpaces[] = {"solid", "uv"};
 constexpr std::string_view kHighlights[] = {"blinn", "phong"};
+constexpr std::string_view kEmissionSides[] = {"both", "front"};
 
 // Glasses by name: Sellmeier coefficients B1..B3, C1..C3 (um^2) from the makers' data sheets.
 struct NamedGlass {
@@ -254,10 +255,10 @@ void read_dispersion(const MapReader& map, Material& m) {
 
 Material read_material(const YamlSource& source, const ReadSandbox& sandbox, const YAML::Node& node,
                        const Field& field, std::string what, std::string name) {
-    const MapReader map(
-        source, node, field, std::move(what),
-        {"color", "ka", "kd", "ks", "shininess", "highlight", "reflect", "transmit", "ior",
-         "dispersion", "roughness", "transmit_roughness", "emission", "bump"});
+    const MapReader map(source, node, field, std::move(what),
+                        {"color", "ka", "kd", "ks", "shininess", "highlight", "reflect", "transmit",
+                         "ior", "fresnel", "dispersion", "roughness", "transmit_roughness",
+                         "emission", "emission_sides", "bump"});
     Material m;
     m.name = std::move(name);
     if (const MapEntry* color = map.find("color")) {
@@ -276,6 +277,7 @@ Material read_material(const YamlSource& source, const ReadSandbox& sandbox, con
     maps.reflect = read_scalar_map(map, "reflect", kUnitInterval, m.reflect);
     m.transmit = map.number("transmit", kUnitInterval, m.transmit);
     m.ior = map.number("ior", kPositive, m.ior);
+    m.fresnel = map.boolean("fresnel", m.fresnel);
     read_dispersion(map, m);
     maps.roughness = read_scalar_map(map, "roughness", kUnitInterval, m.roughness);
     // transmit_roughness defaults to roughness, map and all.
@@ -288,6 +290,8 @@ Material read_material(const YamlSource& source, const ReadSandbox& sandbox, con
     if (maps.reflect || maps.roughness || maps.transmit_roughness || maps.bump)
         m.maps = std::make_shared<const MaterialMaps>(std::move(maps));
     m.emission = map.color("emission", m.emission);
+    m.emits_both_sides = map.choice("emission_sides", kEmissionSides, "emission side",
+                                    "emission sides", "both") == "both";
     return m;
 }
 

@@ -1,0 +1,48 @@
+// One sample traced as render_tile traces it, with a recorder attached to the integrator.
+#include "glint/render/explain/explain.h"
+
+#include <optional>
+
+#include "glint/render/explain/ray_tree_recorder.h"
+#include "glint/render/eye_sample.h"
+#include "glint/render/integrators/integrator_family.h"
+#include "glint/sampling/sampler.h"
+
+namespace glint {
+
+RayTree explain(const World& world, const PixelSample& which) {
+    const RenderSettings& settings = world.settings();
+    const Camera& camera = world.camera();
+    const Sampler sampler(sampler_of(settings), settings.samples_per_pixel, which.seed);
+    const std::uint64_t pixel =
+        std::uint64_t(which.y) * std::uint64_t(settings.width) + std::uint64_t(which.x);
+    PixelPatterns patterns(sampler, pixel);
+    SampleStream stream(patterns, std::uint32_t(which.sample));
+    std::optional<FilterSampling> filter;
+    if (importance_samples_filter(settings)) filter.emplace(filter_of(settings));
+    const EyeSample eye = eye_sample(camera, stream, which.x, which.y, filter ? &*filter : nullptr);
+
+    RayTree tree;
+    tree.x = which.x;
+    tree.y = which.y;
+    tree.sample = which.sample;
+    tree.seed = which.seed;
+    tree.integrator = integrator_name(settings.integrator);
+    tree.film = eye.film;
+    if (filter) tree.filter_weight = eye.weight;
+    tree.draws.push_back({"pixel", kPixelDimension, eye.offset});
+    if (camera.has_lens()) tree.draws.push_back({"lens", kLensDimension, eye.lens});
+    if (camera.has_shutter())
+        tree.draws.push_back({"time", kTimeDimension, {eye.time_u, 0}, false});
+    RayTreeRecorder recorder(world, tree);
+    tree.sample_value = with_integrator(settings.integrator, [&]<class Integrator>() {
+        const typename Integrator::Shared shared = Integrator::prepare(world);
+        Integrator integrator(world, shared);
+        integrator.record_into(&recorder);
+        RayStats stats;
+        return integrator.trace_eye_ray(eye.ray, stream, stats);
+    });
+    return tree;
+}
+
+}  // namespace glint

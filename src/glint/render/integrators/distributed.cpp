@@ -1,0 +1,180 @@
+// Distributed ray tracing: Whitted's recursion with every light sampled over its area.
+#include "glint/render/integrators/distributed.h"
+
+#include "glint/render/integrators/glossy_lobe.h"
+#include "glint/render/integrators/local_lighting.h"
+#include "glint/render/integrators/surface_context.h"
+#include "glint/sampling/warp.h"
+
+namespace glint {
+
+namespace {
+
+// A lobe's numbers: a dimension of its own when the surface is rough, none for a mirror.
+Point2 lobe_sample(float roughness, SampleStream& stream) {
+    return roughness < kMirrorRoughness ? Point2{0, 0} : stream.next_2d();
+}
+
+// The lobe's numbers as drawn: none for a mirror.
+std::optional<Point2> lobe_draw(float roughness, Point2 u) {
+    if (roughness < kMirrorRoughness) return std::nullopt;
+    return u;
+}
+
+}  // namespace
+
+Color DistributedIntegrator::trace_eye_ray(const Ray& ray, SampleStream& stream, RayStats& stats) {
+    stats.count(RayKind::primary);
+    return trace(ray, 1, 1, stream, stats, world_.eye_media());
+}
+
+// shade() and what it calls are compiled twice: with kRecord, telling the recorder every event;
+// without, the renderer's own code, with no trace of the recorder in it.
+
+Color DistributedIntegrator::trace(const Ray& ray, int depth, float weight, SampleStream& stream,
+                                   RayStats& stats, const MediumStack& media) {
+    if (recorder_) [[unlikely]]
+        return trace_recorded(ray, depth, weight, stream, stats, media);
+    return shade<false>(ray, depth, weight, stream, stats, media);
+}
+
+template <bool kRecord>
+Color DistributedIntegrator::trace_ray(const Ray& ray, int depth, float weight,
+                                       SampleStream& stream, RayStats& stats,
+                                       const MediumStack& media) {
+    if constexpr (kRecord)
+        return trace_recorded(ray, depth, weight, stream, stats, media);
+    else
+        return shade<false>(ray, depth, weight, stream, stats, media);
+}
+
+// Out of line: the renderer's code stays as small as it was without a recorder.
+[[gnu::noinline]] Color DistributedIntegrator::trace_recorded(const Ray& ray, int depth,
+                                                              float weight, SampleStream& stream,
+                                                              RayStats& stats,
+                                                              const MediumStack& media) {
+    recorder_->begin_ray(ray, depth, weight);
+    const Color color = shade<true>(ray, depth, weight, stream, stats, media);
+    recorder_->end_ray(color);
+    return color;
+}
+
+template <bool kRecord>
+Color DistributedIntegrator::shade(const Ray& ray, int depth, float weight, SampleStream& stream,
+                                   RayStats& stats, const MediumStack& media) {
+    const RenderSettings& settings = world_.settings();
+    const auto hit = world_.intersect(ray, {0, kInfinity}, kVisibleToCameraRays);
+    if (!hit) {
+        if constexpr (kRecord) recorder_->missed(settings.background);
+        return settings.background;
+    }
+    if (depth == 1) ++stats.primary_hits;
+
+    const SurfaceContext c = surface_context(world_, ray, *hit);
+    if constexpr (kRecord) recorder_->hit(c, *hit);
+    const Material& m = *c.material;
+    Color color = c.emission + ambient_term(m, c.color, world_.ambient());
+    color = plus_direct_light<kRecord>(c, ray, stream, stats, color);
+
+    if (depth >= settings.max_depth) {
+        if constexpr (kRecord) recorder_->stop(StopReason::max_depth);
+        return color;
+    }
+    // A dispersive surface splits a ray that carries every wavelength: the refracted ray takes
+    // the sample's wavelength, and what it brings back counts by that wavelength's colour.
+    Ray parent = ray;
+    Color spectral_weight{1, 1, 1};
+    if (m.dispersion.model != DispersionModel::none && m.transmit > 0 && ray.wavelength == 0) {
+        const float u = stream.get_1d(kWavelengthDimension);
+        parent.wavelength = sample_visible_wavelength(u);
+        spectral_weight =
+            wavelength_to_rgb_weight(parent.wavelength) / visible_wavelength_pdf(parent.wavelength);
+        if constexpr (kRecord) recorder_->wavelength(u, parent.wavelength);
+    }
+    const Branches b = branches_at(c, ray.direction, media, parent.wavelength);
+    if constexpr (kRecord)
+        recorder_->branches(c, b, media, parent.wavelength, ray.direction, weight);
+    if (b.kr > 0 && weight * b.kr >= settings.min_weight) {
+        const Vector3 mirror = normalize(reflect(ray.direction, c.n));
+        const Point2 u = lobe_sample(c.roughness, stream);
+        const Vector3 d = spread_over_lobe(mirror, c.roughness, u, to_vector(c.ng), true);
+        if (d != kBlockedByTheSurface) {
+            stats.count(RayKind::reflected);
+            const Ray r = spawn_from(world_, c, ray, d);
+            if constexpr (kRecord)
+                recorder_->branch(RayKind::reflected, Color::gray(b.kr), lobe_draw(c.roughness, u));
+            color += b.kr * trace_ray<kRecord>(r, depth + 1, weight * b.kr, stream, stats, media);
+        } else if constexpr (kRecord) {
+            recorder_->blocked(RayKind::reflected, u);
+        }
+    }
+    if (b.kt > 0 && weight * b.kt >= settings.min_weight) {
+        const Point2 u = lobe_sample(c.transmit_roughness, stream);
+        const Vector3 d =
+            spread_over_lobe(b.refracted, c.transmit_roughness, u, to_vector(c.ng), false);
+        if (d != kBlockedByTheSurface) {
+            stats.count(RayKind::refracted);
+            const Ray t = spawn_from(world_, c, parent, d);
+            const Color factor = b.kt * spectral_weight;
+            if constexpr (kRecord)
+                recorder_->branch(RayKind::refracted, factor, lobe_draw(c.transmit_roughness, u));
+            color += factor * trace_ray<kRecord>(t, depth + 1, weight * b.kt, stream, stats,
+                                                 media_beyond(c, b, media, parent.wavelength));
+        } else if constexpr (kRecord) {
+            recorder_->blocked(RayKind::refracted, u);
+        }
+    }
+    return color;
+}
+
+template <bool kRecord>
+Color DistributedIntegrator::plus_direct_light(const SurfaceContext& c, const Ray& ray,
+                                               SampleStream& stream, RayStats& stats, Color color) {
+    const auto lights = world_.lights();
+    for (std::size_t light = 0; light < lights.size(); ++light) {
+        if (!is_area_light(lights[light])) {
+            const LightSample ls = sample_light(lights[light], c.sp.p);
+            const Color term = light_sample_term(feelers_, light, c, ls, ray.time, stats);
+            if constexpr (kRecord) recorder_->light(light, c, ls, ray.time, term);
+            color += term;
+            continue;
+        }
+        // n shadow rays, stratified together with those of the pixel's other samples.
+        const int own = std::get<AreaLight>(lights[light]).shadow_rays;
+        const auto n = std::uint32_t(own > 0 ? own : world_.settings().shadow_rays);
+        const std::uint32_t dimension = stream.next_dimension();
+        if constexpr (kRecord) recorder_->begin_light(light, false);
+        Color light_sum;
+        for (std::uint32_t j = 0; j < n; ++j) {
+            const Point2 u = stream.get_2d(dimension, j, n);
+            const LightSample ls = sample_light(lights[light], c.sp.p, u);
+            const Color term = light_sample_term(feelers_, light, c, ls, ray.time, stats);
+            if constexpr (kRecord) recorder_->light_sample(c, ls, u, ray.time, term);
+            light_sum += term;
+        }
+        const Color mean = light_sum / float(n);
+        if constexpr (kRecord) recorder_->end_light(mean);
+        color += mean;
+    }
+    const auto n = std::uint32_t(world_.settings().shadow_rays);
+    const auto object_lights = world_.object_lights();
+    for (std::size_t index = 0; index < object_lights.size(); ++index) {
+        const std::uint32_t dimension = stream.next_dimension();
+        if constexpr (kRecord) recorder_->begin_light(index, true);
+        Color light_sum;
+        for (std::uint32_t j = 0; j < n; ++j) {
+            const Point2 u = stream.get_2d(dimension, j, n);
+            const LightSample ls = sample_light(object_lights[index], c.sp.p, u);
+            const Color term =
+                light_sample_term(feelers_, ShadowFeelers::kNoLight, c, ls, ray.time, stats);
+            if constexpr (kRecord) recorder_->light_sample(c, ls, u, ray.time, term);
+            light_sum += term;
+        }
+        const Color mean = light_sum / float(n);
+        if constexpr (kRecord) recorder_->end_light(mean);
+        color += mean;
+    }
+    return color;
+}
+
+}  // namespace glint

@@ -1,0 +1,35 @@
+// The one place that turns an integrator's kind (scene/integrators.h, its table) into its class:
+// the render loop, `glint explain` and the output variables all go through with_integrator,
+// which hands the class to a generic lambda as a template argument, so that a render calls its
+// integrator without a virtual call per ray.
+//
+// An integrator is a class with
+//   using Shared = ...;                                // what its tiles share, built once
+//   static Shared prepare(const World&);               // before the first pass
+//   Integrator(const World&, const Shared&);           // one per tile: per-thread caches
+//   Color trace_eye_ray(const Ray&, SampleStream&, RayStats&);
+//   void record_into(RayRecorder*);                    // explain, the output variables
+#pragma once
+
+#include "glint/render/integrators/distributed.h"
+#include "glint/render/integrators/path.h"
+#include "glint/render/integrators/whitted.h"
+#include "glint/scene/integrators.h"
+
+namespace glint {
+
+// f.template operator()<Integrator>() for the class of `kind`.
+template <class F>
+decltype(auto) with_integrator(IntegratorKind kind, F&& f) {
+    switch (kind) {
+        case IntegratorKind::whitted:
+            return f.template operator()<WhittedIntegrator>();
+        case IntegratorKind::distributed:
+            return f.template operator()<DistributedIntegrator>();
+        case IntegratorKind::path:
+            return f.template operator()<PathIntegrator>();
+    }
+    __builtin_unreachable();  // every kind has a case: -Wswitch names one that has not
+}
+
+}  // namespace glint

@@ -1,0 +1,47 @@
+// One feeler, or with transparent shadows a chain of them from surface to surface.
+#include "glint/render/integrators/shadow_feelers.h"
+
+namespace glint {
+
+float ShadowFeelers::transmittance(std::size_t light, const SurfacePoint& sp, Normal3 n,
+                                   Vector3 to_light, float light_distance, float time,
+                                   RayStats& stats) {
+    Ray feeler = world_.spawn_ray(sp.p, n, to_light, sp.error, time);
+    // The offset origin is slightly nearer to or farther from the light; stop just short of it.
+    float remaining = light_distance - distance(sp.p, feeler.origin);
+    if (light == kNoLight) {
+        // A point drawn on an emitting object lies on a surface that casts shadows. Aim the
+        // feeler from its offset origin at that very point, or near the object's outline it
+        // would pierce the surface early; and stop short of the point by the offset a ray
+        // leaving it would take, so that the light does not shadow itself.
+        const Point3 target = sp.p + to_light * light_distance;
+        const Vector3 aim = target - feeler.origin;
+        remaining = length(aim);
+        feeler.direction = aim / remaining;
+        remaining -= world_.ray_epsilon(target);
+    }
+    if (!transparent_) {
+        stats.count(RayKind::shadow);
+        if (light == kNoLight)
+            return world_.occluded(feeler, {0, remaining}, kVisibleToShadowRays) ? 0.0f : 1.0f;
+        return world_.occluded_towards(light, feeler, {0, remaining}, last_occluder_[light]) ? 0.0f
+                                                                                             : 1.0f;
+    }
+    float factor = 1;
+    for (int crossing = 0; crossing < kMaxShadowCrossings; ++crossing) {
+        stats.count(RayKind::shadow);
+        const auto hit = world_.intersect(feeler, {0, remaining}, kVisibleToShadowRays);
+        if (!hit) return factor;
+        factor *= world_.material_of(hit->primitive).transmit;
+        if (factor == 0) return 0;
+        // Continue from just beyond the surface crossed.
+        const SurfacePoint crossed = world_.surface_at(feeler, *hit, Uv::skip);
+        const Ray next =
+            world_.spawn_ray(crossed.p, crossed.normal, feeler.direction, crossed.error, time);
+        remaining -= distance(feeler.origin, next.origin);
+        feeler = next;
+    }
+    return 0;
+}
+
+}  // namespace glint

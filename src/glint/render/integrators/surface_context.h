@@ -1,0 +1,127 @@
+// What every integrator needs to know where a ray meets a surface: the point, its material and
+// colour there, which side the ray came from, and both normals turned towards the ray. Built
+// once per hit, the same way for every integrator.
+#pragma once
+
+#include "glint/accel/aggregate.h"
+#include "glint/geometry/surface_point.h"
+#include "glint/math/color.h"
+#include "glint/math/ray.h"
+#include "glint/render/integrators/medium_stack.h"
+#include "glint/render/world.h"
+#include "glint/shading/material.h"
+#include "glint/shading/optics.h"
+#include "glint/shading/texture.h"
+
+namespace glint {
+
+struct SurfaceContext {
+    SurfacePoint sp;
+    std::uint32_t primitive;  // the object hit
+    const Material* material;
+    Color color;        // the material's colour (texture) at the point, C of the formulas
+    Color emission;     // what it emits towards the ray: none from the back of a one-sided one
+    bool entering;      // the ray meets the front (outward) side
+    Normal3 ng;         // geometric normal on the ray's side: where secondary rays start
+    Normal3 n;          // shading normal on the ray's side: what the formulas use
+    Vector3 to_viewer;  // -direction of the ray, V
+    // The material's reflect, roughness and transmit_roughness at the point (maps evaluated).
+    float reflect, roughness, transmit_roughness;
+};
+
+// The ray enters the surface when it meets the front side. Both normals are turned to face the
+// incoming ray: the geometric one places secondary rays on the right side of the surface, the
+// shading one (smooth for meshes) enters the formulas.
+inline SurfaceContext surface_context(const World& world, const Ray& ray, const Hit& hit) {
+    SurfaceContext c;
+    c.primitive = hit.primitive;
+    c.material = &world.material_of(hit.primitive);
+    const Material& m = *c.material;
+    c.sp = world.surface_at(ray, hit, uv_needed(m.color));
+    c.color = evaluate(m.color, c.sp);
+    c.reflect = m.reflect;
+    c.roughness = m.roughness;
+    c.transmit_roughness = m.transmit_roughness;
+    if (m.maps) [[unlikely]] {
+        const MaterialMaps& maps = *m.maps;
+        if (maps.reflect) c.reflect = evaluate(*maps.reflect, c.sp.p);
+        if (maps.roughness) c.roughness = evaluate(*maps.roughness, c.sp.p);
+        if (maps.transmit_roughness)
+            c.transmit_roughness = evaluate(*maps.transmit_roughness, c.sp.p);
+        if (maps.bump) c.sp.shading_normal = bumped(*maps.bump, c.sp.shading_normal, c.sp.p);
+    }
+    c.entering = dot(c.sp.normal, ray.direction) < 0;
+    c.emission = m.emits_both_sides || c.entering ? m.emission : Color{};
+    c.ng = c.entering ? c.sp.normal : -c.sp.normal;
+    c.n = c.entering ? c.sp.shading_normal : -c.sp.shading_normal;
+    c.to_viewer = -ray.direction;
+    return c;
+}
+
+// A secondary ray from the surface point in the unit direction d, at its parent's time and
+// wavelength.
+inline Ray spawn_from(const World& world, const SurfaceContext& c, const Ray& parent, Vector3 d) {
+    Ray r = world.spawn_ray(c.sp.p, c.ng, d, c.sp.error, parent.time);
+    r.wavelength = parent.wavelength;
+    return r;
+}
+
+// The weights of the reflected and refracted rays at the surface and the refracted direction:
+// kr and kt of the material, Snell's law with the indices of the media on both sides, and on
+// total internal reflection the transmitted weight moved to the reflected ray (Whitted 1980);
+// with fresnel, the share kt F of Fresnel's reflectance moved likewise.
+// The material's index of refraction for a ray of the given wavelength (0: one that carries
+// every wavelength, which sees the index at the d line).
+inline float ior_at(const Material& m, float wavelength) {
+    if (m.dispersion.model == DispersionModel::none || wavelength == 0) return m.ior;
+    return refractive_index(m.dispersion, m.ior, wavelength);
+}
+
+struct Branches {
+    float kr = 0, kt = 0;
+    Vector3 refracted;  // unit; when kt > 0
+    bool entering;      // the refracted ray enters the object (else it leaves it)
+};
+
+// Snell's law's indices at c: n1 on the ray's side, n2 beyond.
+struct SnellIndices {
+    float n1, n2;
+};
+inline SnellIndices snell_indices(const SurfaceContext& c, const MediumStack& media,
+                                  float wavelength) {
+    const float ior = ior_at(*c.material, wavelength);
+    return c.entering ? SnellIndices{media.ior(), ior}
+                      : SnellIndices{ior, media.ior_after_leaving(c.primitive, c.material)};
+}
+
+inline Branches branches_at(const SurfaceContext& c, Vector3 direction, const MediumStack& media,
+                            float wavelength = 0) {
+    const Material& m = *c.material;
+    Branches b{c.reflect, m.transmit, {}, c.entering};
+    if (b.kt > 0) {
+        const auto [n1, n2] = snell_indices(c, media, wavelength);
+        if (const auto t = refract(direction, c.n, n1 / n2)) {
+            b.refracted = normalize(*t);
+            if (m.fresnel) {  // kt F of it reflects
+                const float reflected =
+                    b.kt * fresnel_dielectric(-dot(direction, to_vector(c.n)), n1 / n2);
+                b.kr += reflected;
+                b.kt -= reflected;
+            }
+        } else {  // total internal reflection
+            b.kr += b.kt;
+            b.kt = 0;
+        }
+    }
+    return b;
+}
+
+// The media the refracted ray of b travels through, for a ray in `media` at c.
+inline MediumStack media_beyond(const SurfaceContext& c, const Branches& b,
+                                const MediumStack& media, float wavelength = 0) {
+    const Material& m = *c.material;
+    return b.entering ? media.entered(c.primitive, &m, ior_at(m, wavelength))
+                      : media.left(c.primitive, &m);
+}
+
+}  // namespace glint

@@ -1,0 +1,89 @@
+// The lecture notes' TraceRay: closest hit, the Phong terms with one shadow feeler per light,
+// then the reflected and refracted rays, cut by depth and by weight.
+#include "glint/render/integrators/whitted.h"
+
+#include "glint/render/integrators/local_lighting.h"
+#include "glint/render/integrators/surface_context.h"
+
+namespace glint {
+
+Color WhittedIntegrator::trace_eye_ray(const Ray& ray, RayStats& stats) {
+    stats.count(RayKind::primary);
+    return trace(ray, 1, 1, stats, world_.eye_media());
+}
+
+// shade() and what it calls are compiled twice: with kRecord, telling the recorder every event;
+// without, the renderer's own code, with no trace of the recorder in it.
+
+Color WhittedIntegrator::trace(const Ray& ray, int depth, float weight, RayStats& stats,
+                               const MediumStack& media) {
+    if (recorder_) [[unlikely]]
+        return trace_recorded(ray, depth, weight, stats, media);
+    return shade<false>(ray, depth, weight, stats, media);
+}
+
+template <bool kRecord>
+Color WhittedIntegrator::trace_ray(const Ray& ray, int depth, float weight, RayStats& stats,
+                                   const MediumStack& media) {
+    if constexpr (kRecord)
+        return trace_recorded(ray, depth, weight, stats, media);
+    else
+        return shade<false>(ray, depth, weight, stats, media);
+}
+
+// Out of line: the renderer's code stays as small as it was without a recorder.
+[[gnu::noinline]] Color WhittedIntegrator::trace_recorded(const Ray& ray, int depth, float weight,
+                                                          RayStats& stats,
+                                                          const MediumStack& media) {
+    recorder_->begin_ray(ray, depth, weight);
+    const Color color = shade<true>(ray, depth, weight, stats, media);
+    recorder_->end_ray(color);
+    return color;
+}
+
+template <bool kRecord>
+Color WhittedIntegrator::shade(const Ray& ray, int depth, float weight, RayStats& stats,
+                               const MediumStack& media) {
+    const RenderSettings& settings = world_.settings();
+    const auto hit = world_.intersect(ray, {0, kInfinity}, kVisibleToCameraRays);
+    if (!hit) {
+        if constexpr (kRecord) recorder_->missed(settings.background);
+        return settings.background;
+    }
+    if (depth == 1) ++stats.primary_hits;
+
+    const SurfaceContext c = surface_context(world_, ray, *hit);
+    if constexpr (kRecord) recorder_->hit(c, *hit);
+    const Material& m = *c.material;
+    Color color = c.emission + ambient_term(m, c.color, world_.ambient());
+    const auto lights = world_.lights();
+    for (std::size_t light = 0; light < lights.size(); ++light) {
+        const LightSample ls = sample_light(lights[light], c.sp.p);
+        const Color term = light_sample_term(feelers_, light, c, ls, ray.time, stats);
+        if constexpr (kRecord) recorder_->light(light, c, ls, ray.time, term);
+        color += term;
+    }
+
+    if (depth >= settings.max_depth) {
+        if constexpr (kRecord) recorder_->stop(StopReason::max_depth);
+        return color;
+    }
+    const Branches b = branches_at(c, ray.direction, media, ray.wavelength);
+    if constexpr (kRecord) recorder_->branches(c, b, media, ray.wavelength, ray.direction, weight);
+    if (b.kr > 0 && weight * b.kr >= settings.min_weight) {
+        stats.count(RayKind::reflected);
+        const Ray r = spawn_from(world_, c, ray, normalize(reflect(ray.direction, c.n)));
+        if constexpr (kRecord) recorder_->branch(RayKind::reflected, Color::gray(b.kr));
+        color += b.kr * trace_ray<kRecord>(r, depth + 1, weight * b.kr, stats, media);
+    }
+    if (b.kt > 0 && weight * b.kt >= settings.min_weight) {
+        stats.count(RayKind::refracted);
+        const Ray t = spawn_from(world_, c, ray, b.refracted);
+        if constexpr (kRecord) recorder_->branch(RayKind::refracted, Color::gray(b.kt));
+        color += b.kt *
+                 trace_ray<kRecord>(t, depth + 1, weight * b.kt, stats, media_beyond(c, b, media));
+    }
+    return color;
+}
+
+}  // namespace glint

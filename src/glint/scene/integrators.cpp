@@ -1,0 +1,53 @@
+// The integrators' table.
+#include "glint/scene/integrators.h"
+
+#include <array>
+
+namespace glint {
+
+namespace {
+
+// Sorted by name, for the messages that list them.
+constexpr IntegratorInfo kIntegrators[] = {
+    {IntegratorKind::distributed, "distributed", SamplerKind::jittered,
+     // The notes' "stochastic sampling with Gaussian weighting".
+     FilterSpec{FilterKind::gaussian, 1.5f}, false,
+     "Cook, Porter and Carpenter's distributed ray tracing (1984): Whitted's ray tree with each "
+     "ray spread over what it integrates (soft shadows, glossy reflection, depth of field, "
+     "motion blur, dispersion)"},
+    {IntegratorKind::path, "path", SamplerKind::sobol, FilterSpec{FilterKind::gaussian, 1.5f}, true,
+     "Kajiya's path tracing (1986) with next-event estimation and multiple importance sampling: "
+     "global illumination, light reflected from surface to surface (colour bleeding)"},
+    {IntegratorKind::whitted, "whitted", SamplerKind::regular, FilterSpec{}, false,
+     "Whitted's recursive ray tracing (1980): Phong's local term with shadow feelers, and the "
+     "mirror-reflected and refracted rays"},
+};
+
+constexpr std::array<std::string_view, std::size(kIntegrators)> names_of() {
+    std::array<std::string_view, std::size(kIntegrators)> names{};
+    for (std::size_t i = 0; i < names.size(); ++i) names[i] = kIntegrators[i].name;
+    return names;
+}
+constexpr auto kNames = names_of();
+
+}  // namespace
+
+std::span<const IntegratorInfo> integrator_infos() { return kIntegrators; }
+
+const IntegratorInfo& integrator_info(IntegratorKind kind) {
+    for (const IntegratorInfo& info : kIntegrators)
+        if (info.kind == kind) return info;
+    return kIntegrators[0];  // every kind has a row (integrators_test.cpp)
+}
+
+std::span<const std::string_view> integrator_names() { return kNames; }
+
+std::optional<IntegratorKind> integrator_from_name(std::string_view name) {
+    for (const IntegratorInfo& info : kIntegrators)
+        if (info.name == name) return info.kind;
+    return std::nullopt;
+}
+
+std::string_view integrator_name(IntegratorKind kind) { return integrator_info(kind).name; }
+
+}  // namespace glint

@@ -1,0 +1,209 @@
+// The path tracer against answers known exactly: a furnace whose walls emit and reflect, direct
+// lighting that is the distributed integrator's, light that one wall reflects onto another, and
+// images that do not depend on the thread count.
+#include "glint/render/integrators/path.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <utility>
+
+#include "common/under_sanitizer.h"
+#include "glint/render/render.h"
+
+namespace glint {
+namespace {
+
+// Inside a closed sphere whose walls reflect albedo rho diffusely and emit Le: every ray sees
+// Le + rho Le + rho^2 Le + ... = Le / (1 - rho), the sum cut after max_depth bounces.
+Scene furnace(float albedo, Color le) {
+    Scene scene;
+    scene.settings.width = scene.settings.height = 8;
+    scene.settings.integrator = IntegratorKind::path;
+    scene.settings.samples_per_pixel = testing::kUnderSanitizer ? 64 : 256;
+    scene.settings.max_depth = 200;
+    scene.camera.from = {0.2f, -0.1f, 0.3f};
+    scene.camera.at = {1, 0, 0};
+    scene.camera.fov = 90;
+    Material wall;
+    wall.ka = 0;
+    wall.kd = albedo;
+    wall.emission = le;
+    scene.materials.push_back(wall);
+    scene.objects.push_back({Sphere{{0, 0, 0}, 2}, 0});
+    return scene;
+}
+
+TEST(PathTracing, AFurnaceOfEmittingWallsGivesLeOverOneMinusAlbedo) {
+    for (const float albedo : {0.5f, 0.8f}) {
+        const Color le{0.2f, 0.1f, 0.05f};
+        const RenderResult r = render(World(furnace(albedo, le)), {});
+        const Color expected = le / (1 - albedo);
+        Color mean;
+        for (const Color& c : r.image.pixels) mean += c / float(r.image.pixels.size());
+        // Russian roulette and the light's weighting leave noise; its mean is exact.
+        EXPECT_NEAR(mean.r, expected.r, 0.01 * expected.r) << albedo;
+        EXPECT_NEAR(mean.g, expected.g, 0.01 * expected.g) << albedo;
+        EXPECT_NEAR(mean.b, expected.b, 0.01 * expected.b) << albedo;
+        for (const Color& c : r.image.pixels) EXPECT_NEAR(c.r, expected.r, 0.1 * expected.r);
+        // The walls light themselves: shadow rays and scattered rays both.
+        EXPECT_GT(r.rays[RayKind::shadow], 0u);
+        EXPECT_GT(r.rays[RayKind::diffuse], 0u);
+    }
+}
+
+TEST(PathTracing, MaxDepthCutsTheSumOfBounces) {
+    // max_depth 2: what the eye sees, and two bounces' worth: Le (1 + rho + rho^2).
+    Scene scene = furnace(0.5f, Color::gray(1));
+    scene.settings.max_depth = 2;
+    const RenderResult r = render(World(scene), {});
+    Color mean;
+    for (const Color& c : r.image.pixels) mean += c / float(r.image.pixels.size());
+    EXPECT_NEAR(mean.r, 1.75, 0.01 * 1.75);
+}
+
+// A floor lit by a point light falling off as 1 / d^2, a rectangle area light and an emitting
+// disk, and nothing else: one bounce of the path tracer is the distributed integrator's direct
+// lighting, Phong's diffuse term being Lambert's.
+Scene directly_lit(IntegratorKind integrator) {
+    Scene scene;
+    scene.settings.width = 24;
+    scene.settings.height = 16;
+    scene.settings.integrator = integrator;
+    scene.settings.samples_per_pixel = testing::kUnderSanitizer ? 64 : 256;
+    scene.settings.max_depth = 1;
+    scene.settings.filter = FilterSpec{FilterKind::box, 0.5f};
+    scene.camera.from = {0, 4, -6};
+    scene.camera.at = {0, 0, 0};
+    scene.camera.fov = 50;
+    Material floor;
+    floor.ka = 0;
+    floor.kd = 0.7f;
+    floor.color = Color{0.9f, 0.8f, 0.6f};
+    Material lamp;
+    lamp.ka = lamp.kd = 0;
+    lamp.emission = Color::gray(3);
+    scene.materials = {floor, lamp};
+    scene.objects.push_back({Plane{{0, 0, 0}, {0, 1, 0}}, 0});
+    scene.objects.push_back({Disk{{1.5f, 1.5f, 0}, {0, -1, 0}, 0.5f}, 1});
+    PointLight point;
+    point.position = {-2, 2, -1};
+    point.color = Color::gray(2);
+    point.attenuation = {0, 0, 1};
+    AreaLight area;
+    area.shape = RectangleLight{{0, 3, 2}, {1, 0, 0}, {0, 0, 1}};
+    area.color = Color::gray(4);
+    area.attenuation = {0, 0, 1};
+    scene.lights = {point, area};
+    return scene;
+}
+
+TEST(PathTracing, OneBounceIsTheDistributedIntegratorsDirectLighting) {
+    // Two renders of each with different seeds; the squared difference of a pixel's two values
+    // over 2 estimates its variance. Over 4 x 4 blocks the means of the two integrators must
+    // agree within 5 standard errors of their difference.
+    const auto renders = [](IntegratorKind kind) {
+        const World world(directly_lit(kind));
+        RenderOptions a, b;
+        a.seed = 1;
+        b.seed = 2;
+        return std::pair{render(world, a).image, render(world, b).image};
+    };
+    const auto [p1, p2] = renders(IntegratorKind::path);
+    const auto [d1, d2] = renders(IntegratorKind::distributed);
+    int failures = 0;
+    for (int by = 0; by < p1.height; by += 4)
+        for (int bx = 0; bx < p1.width; bx += 4) {
+            double path = 0, distributed = 0, variance = 0;
+            for (int y = by; y < by + 4; ++y)
+                for (int x = bx; x < bx + 4; ++x) {
+                    const double a = p1.at(x, y).r, b = p2.at(x, y).r;
+                    const double c = d1.at(x, y).r, d = d2.at(x, y).r;
+                    path += (a + b) / 2;
+                    distributed += (c + d) / 2;
+                    // Each pixel's mean of two: half the variance of one render.
+                    variance += ((a - b) * (a - b) + (c - d) * (c - d)) / 4;
+                }
+            const double error = std::sqrt(variance) / 16;
+            if (std::abs(path - distributed) / 16 > 5 * error + 0.002) {
+                ++failures;
+                ADD_FAILURE() << "block (" << bx << ", " << by << "): path " << path / 16
+                              << ", distributed " << distributed / 16 << ", standard error "
+                              << error;
+            }
+        }
+    EXPECT_EQ(failures, 0);
+}
+
+// Colour bleeding: a white floor beside a red wall, lit from above. The path tracer sees the
+// floor near the wall turn red, light the wall reflects; the distributed integrator does not.
+Scene red_wall(IntegratorKind integrator) {
+    Scene scene;
+    scene.settings.width = scene.settings.height = 8;
+    scene.settings.integrator = integrator;
+    scene.settings.samples_per_pixel = testing::kUnderSanitizer ? 32 : 128;
+    scene.camera.from = {-1.5f, 0.3f, 0};
+    scene.camera.at = {0, 0, 0};
+    scene.camera.fov = 20;
+    Material white, red;
+    white.ka = red.ka = 0;
+    white.kd = red.kd = 0.8f;
+    red.color = Color{0.9f, 0.1f, 0.1f};
+    scene.materials = {white, red};
+    scene.objects.push_back({Plane{{0, 0, 0}, {0, 1, 0}}, 0});
+    scene.objects.push_back({Box{{0.1f, 0, -3}, {0.3f, 2, 3}}, 1});
+    PointLight light;
+    light.position = {-1, 3, 0};
+    light.attenuation = {0, 0, 1};
+    light.color = Color::gray(10);
+    scene.lights.push_back(light);
+    return scene;
+}
+
+TEST(PathTracing, AWhiteFloorBesideARedWallTurnsRed) {
+    const auto redness = [](const Image& image) {
+        Color sum;
+        for (int x = 0; x < image.width; ++x) sum += image.at(x, image.height - 1);  // floor
+        return sum.r / sum.g;
+    };
+    EXPECT_GT(redness(render(World(red_wall(IntegratorKind::path)), {}).image), 1.1);
+    EXPECT_NEAR(redness(render(World(red_wall(IntegratorKind::distributed)), {}).image), 1, 1e-4);
+}
+
+// A light set into a ceiling emits downwards only: a surface above it gets nothing from it, in
+// the distributed integrator and the path tracer alike, and its back is dark to the eye.
+TEST(PathTracing, AOneSidedEmitterLightsOnlyItsFront) {
+    for (const IntegratorKind kind : {IntegratorKind::distributed, IntegratorKind::path}) {
+        Scene scene = directly_lit(kind);
+        scene.lights.clear();
+        scene.materials[1].emits_both_sides = false;
+        // The disk faces down; the camera looks at it from below, then from above.
+        scene.settings.max_depth = 1;
+        scene.camera.from = {1.5f, 0.5f, -1};
+        scene.camera.at = {1.5f, 1.5f, 0};
+        const Image below = render(World(scene), {}).image;
+        EXPECT_GT(below.at(12, 8).r, 1) << "its front glows";
+        scene.camera.from = {1.5f, 2.5f, -1};
+        const Image above = render(World(scene), {}).image;
+        EXPECT_EQ(above.at(12, 8).r, 0) << "its back is dark";
+        // The floor below is lit by it.
+        scene.camera.from = {0, 4, -6};
+        scene.camera.at = {1.5f, 0, 0};
+        EXPECT_GT(render(World(scene), {}).image.at(12, 8).r, 0);
+    }
+}
+
+TEST(PathTracing, TheImageDoesNotDependOnThreadsOrTiles) {
+    const World world(red_wall(IntegratorKind::path));
+    RenderOptions one, two;
+    one.threads = 1;
+    two.threads = 2;
+    two.tile_size = 3;
+    EXPECT_EQ(render(world, one).image.pixels, render(world, two).image.pixels);
+    RenderOptions other_seed = one;
+    other_seed.seed = 1;
+    EXPECT_NE(render(world, one).image.pixels, render(world, other_seed).image.pixels);
+}
+
+}  // namespace
+}  // namespace glint
