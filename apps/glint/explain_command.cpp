@@ -11,6 +11,7 @@
 #include "glint/render/explain/explain.h"
 #include "glint/render/explain/ray_tree_formats.h"
 #include "glint/render/world.h"
+#include "glint/scene/integrator_fit.h"
 #include "glint/scene/load_scene.h"
 #include "output_path.h"
 #include "usage_error.h"
@@ -80,6 +81,7 @@ int run_explain(const ExplainCommand& command) {
         for (const std::string& warning : scene.warnings)
             std::fprintf(stderr, "glint: warning: %s\n", warning.c_str());
         apply_image_options(command.image, scene.settings);
+        check_integrator_fits(scene);
         const RenderSettings& s = scene.settings;
         if (x >= s.width || y >= s.height)
             throw UsageError{"pixel (" + std::to_string(x) + ", " + std::to_string(y) +

@@ -26,6 +26,7 @@
 #include "glint/render/render.h"
 #include "glint/render/resume_file.h"
 #include "glint/render/world.h"
+#include "glint/scene/integrator_fit.h"
 #include "glint/scene/load_scene.h"
 #include "output_path.h"
 #include "progress.h"
@@ -106,6 +107,11 @@ void print_summary(const std::string& output, const RenderSettings& s, const Ren
             std::printf("  (%s hit)", with_thousands(rays.primary_hits).c_str());
         std::printf("\n");
     }
+    if (rays.particles > 0)
+        std::printf("  particles  %15s  (%s, %.2g%%, reached the eye)\n",
+                    with_thousands(rays.particles).c_str(),
+                    with_thousands(rays.particles_seen).c_str(),
+                    100.0 * double(rays.particles_seen) / double(rays.particles));
 }
 
 std::string shell_quoted(const std::string& s) {
@@ -228,6 +234,7 @@ int run_render(const RenderCommand& command) {
         for (const std::string& warning : scene.warnings)
             std::fprintf(stderr, "glint: warning: %s\n", warning.c_str());
         apply_image_options(command.image, scene.settings);
+        check_integrator_fits(scene);
         const auto accel = accel_from_name(command.accel);
         if (!accel) throw UsageError{"unknown acceleration structure \"" + command.accel + "\""};
         check_memory(scene, *accel, command, aovs);
@@ -258,7 +265,7 @@ int run_render(const RenderCommand& command) {
             // The interval by value: it goes out of scope before the render calls this.
             options.after_pass = [&, interval](const RenderState& so_far) {
                 if (Clock::now() - last_checkpoint < interval) return;
-                save_progress(partial, resume, identity, so_far, so_far.film.resolve(),
+                save_progress(partial, resume, identity, so_far, resolve_image(so_far),
                               command.ppm_ascii);
                 last_checkpoint = Clock::now();
             };

@@ -27,6 +27,8 @@ std::string stats_json(const RenderReport& report) {
         if (RayKind(kind) == RayKind::primary)
             json << "    \"primary_hits\": " << r.rays.primary_hits << ",\n";
     }
+    json << "    \"particles\": " << r.rays.particles << ",\n"
+         << "    \"particles_seen\": " << r.rays.particles_seen << ",\n";
     json << "    \"total\": " << r.rays.total() << "\n"
          << "  },\n"
          << "  \"mrays_per_second\": " << mrays << ",\n"

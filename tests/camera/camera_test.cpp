@@ -166,5 +166,57 @@ TEST(Camera, AMovingCameraIsEachKeyframesCameraAtItsTime) {
                 1e-5f);
 }
 
+// connect() inverts generate_ray(): a point on the ray of a film position and lens point lands
+// back on that film position through that lens point, for a pinhole, a thin lens and a moving
+// camera.
+TEST(Camera, ConnectingAPointFindsTheFilmPositionAndLensPointOfItsRay) {
+    CameraSpec spec;
+    spec.from = {1, 2, -3}, spec.at = {0, 1, 0}, spec.up = {0, 1, 0}, spec.fov = 50;
+    for (const float aperture : {0.0f, 0.3f}) {
+        spec.lens.radius = aperture;
+        spec.lens.focus_distance = 2.5f;
+        const Camera camera(spec, 160, 90);
+        for (const Point2 film : {Point2{80, 45}, Point2{10.5f, 80.25f}, Point2{150, 3}}) {
+            const Point2 lens{0.3f, 0.8f};
+            const Ray ray = camera.generate_ray(film, lens);
+            const auto c = camera.connect(ray.at(4), lens, 0);
+            ASSERT_TRUE(c);
+            EXPECT_NEAR(c->film.x, film.x, 1e-3f) << aperture;
+            EXPECT_NEAR(c->film.y, film.y, 1e-3f) << aperture;
+            expect_near(to_vector(c->lens), to_vector(ray.origin), 1e-5f);
+            expect_near(c->to_camera, -ray.direction, 1e-5f);
+            EXPECT_NEAR(c->distance, 4, 1e-4f);
+        }
+        // Behind the camera: nothing.
+        EXPECT_FALSE(camera.connect({2, 3, -6}, {0.5f, 0.5f}, 0));
+    }
+    CameraSpec moving = spec;
+    moving.lens = {};
+    moving.shutter_close = 1;
+    moving.motion = {{0, {1, 2, -3}, {0, 1, 0}, {0, 1, 0}}, {1, {-1, 2, -3}, {0, 1, 0}, {0, 1, 0}}};
+    const Camera camera(moving, 160, 90);
+    const Ray ray = camera.generate_ray({40, 20}, {0.5f, 0.5f}, 0.7f);
+    const auto c = camera.connect(ray.at(3), {0.5f, 0.5f}, 0.7f);
+    ASSERT_TRUE(c);
+    EXPECT_NEAR(c->film.x, 40, 1e-3f);
+    EXPECT_NEAR(c->film.y, 20, 1e-3f);
+}
+
+// We / pdf = 1 / (A cos^3(theta) d^2): at the centre of a 90-degree square view (A = 4), a
+// point 2 away gives 1/16; the lens's area cancels.
+TEST(Camera, ConnectionImportanceIsOneOverAreaCosineCubedAndDistanceSquared) {
+    CameraSpec spec;
+    spec.from = {0, 0, 0}, spec.at = {0, 0, 1}, spec.fov = 90;
+    const Camera pinhole(spec, 100, 100);
+    EXPECT_NEAR(pinhole.connect({0, 0, 2}, {0.5f, 0.5f}, 0)->importance, 1 / 16.0f, 1e-6f);
+    // 45 degrees off the axis, at distance sqrt(2): 1 / (4 (1/sqrt 2)^3 2) = 0.35355.
+    EXPECT_NEAR(pinhole.connect({0, 1, 1}, {0.5f, 0.5f}, 0)->importance, 0.35355f, 1e-5f);
+    spec.lens.radius = 0.1f;
+    const Camera lens(spec, 100, 100);
+    EXPECT_NEAR(lens.connect({0, 0, 2}, {0.5f, 0.5f}, 0)->importance, 1 / 16.0f, 1e-6f);
+    spec.projection = Projection::orthographic;
+    EXPECT_FALSE(Camera(spec, 100, 100).connect({0, 0, 2}, {0.5f, 0.5f}, 0));
+}
+
 }  // namespace
 }  // namespace glint

@@ -10,42 +10,22 @@
 
 #include "common/under_sanitizer.h"
 #include "glint/render/render.h"
+#include "global_illumination_scenes.h"
 
 namespace glint {
 namespace {
 
-// Inside a closed sphere whose walls reflect albedo rho diffusely and emit Le: every ray sees
-// Le + rho Le + rho^2 Le + ... = Le / (1 - rho), the sum cut after max_depth bounces.
-Scene furnace(float albedo, Color le) {
-    Scene scene;
-    scene.settings.width = scene.settings.height = 8;
-    scene.settings.integrator = IntegratorKind::path;
-    scene.settings.samples_per_pixel = testing::kUnderSanitizer ? 64 : 256;
-    scene.settings.max_depth = 200;
-    scene.camera.from = {0.2f, -0.1f, 0.3f};
-    scene.camera.at = {1, 0, 0};
-    scene.camera.fov = 90;
-    Material wall;
-    wall.ka = 0;
-    wall.kd = albedo;
-    wall.emission = le;
-    scene.materials.push_back(wall);
-    scene.objects.push_back({Sphere{{0, 0, 0}, 2}, 0});
-    return scene;
-}
+using testing::directly_lit;
+using testing::furnace;
+using testing::red_wall;
 
 TEST(PathTracing, AFurnaceOfEmittingWallsGivesLeOverOneMinusAlbedo) {
     for (const float albedo : {0.5f, 0.8f}) {
         const Color le{0.2f, 0.1f, 0.05f};
         const RenderResult r = render(World(furnace(albedo, le)), {});
-        const Color expected = le / (1 - albedo);
-        Color mean;
-        for (const Color& c : r.image.pixels) mean += c / float(r.image.pixels.size());
         // Russian roulette and the light's weighting leave noise; its mean is exact.
-        EXPECT_NEAR(mean.r, expected.r, 0.01 * expected.r) << albedo;
-        EXPECT_NEAR(mean.g, expected.g, 0.01 * expected.g) << albedo;
-        EXPECT_NEAR(mean.b, expected.b, 0.01 * expected.b) << albedo;
-        for (const Color& c : r.image.pixels) EXPECT_NEAR(c.r, expected.r, 0.1 * expected.r);
+        SCOPED_TRACE(albedo);
+        testing::expect_furnace_answer(r.image, le / (1 - albedo));
         // The walls light themselves: shadow rays and scattered rays both.
         EXPECT_GT(r.rays[RayKind::shadow], 0u);
         EXPECT_GT(r.rays[RayKind::diffuse], 0u);
@@ -60,42 +40,6 @@ TEST(PathTracing, MaxDepthCutsTheSumOfBounces) {
     Color mean;
     for (const Color& c : r.image.pixels) mean += c / float(r.image.pixels.size());
     EXPECT_NEAR(mean.r, 1.75, 0.01 * 1.75);
-}
-
-// A floor lit by a point light falling off as 1 / d^2, a rectangle area light and an emitting
-// disk, and nothing else: one bounce of the path tracer is the distributed integrator's direct
-// lighting, Phong's diffuse term being Lambert's.
-Scene directly_lit(IntegratorKind integrator) {
-    Scene scene;
-    scene.settings.width = 24;
-    scene.settings.height = 16;
-    scene.settings.integrator = integrator;
-    scene.settings.samples_per_pixel = testing::kUnderSanitizer ? 64 : 256;
-    scene.settings.max_depth = 1;
-    scene.settings.filter = FilterSpec{FilterKind::box, 0.5f};
-    scene.camera.from = {0, 4, -6};
-    scene.camera.at = {0, 0, 0};
-    scene.camera.fov = 50;
-    Material floor;
-    floor.ka = 0;
-    floor.kd = 0.7f;
-    floor.color = Color{0.9f, 0.8f, 0.6f};
-    Material lamp;
-    lamp.ka = lamp.kd = 0;
-    lamp.emission = Color::gray(3);
-    scene.materials = {floor, lamp};
-    scene.objects.push_back({Plane{{0, 0, 0}, {0, 1, 0}}, 0});
-    scene.objects.push_back({Disk{{1.5f, 1.5f, 0}, {0, -1, 0}, 0.5f}, 1});
-    PointLight point;
-    point.position = {-2, 2, -1};
-    point.color = Color::gray(2);
-    point.attenuation = {0, 0, 1};
-    AreaLight area;
-    area.shape = RectangleLight{{0, 3, 2}, {1, 0, 0}, {0, 0, 1}};
-    area.color = Color::gray(4);
-    area.attenuation = {0, 0, 1};
-    scene.lights = {point, area};
-    return scene;
 }
 
 TEST(PathTracing, OneBounceIsTheDistributedIntegratorsDirectLighting) {
@@ -133,31 +77,6 @@ TEST(PathTracing, OneBounceIsTheDistributedIntegratorsDirectLighting) {
             }
         }
     EXPECT_EQ(failures, 0);
-}
-
-// Colour bleeding: a white floor beside a red wall, lit from above. The path tracer sees the
-// floor near the wall turn red, light the wall reflects; the distributed integrator does not.
-Scene red_wall(IntegratorKind integrator) {
-    Scene scene;
-    scene.settings.width = scene.settings.height = 8;
-    scene.settings.integrator = integrator;
-    scene.settings.samples_per_pixel = testing::kUnderSanitizer ? 32 : 128;
-    scene.camera.from = {-1.5f, 0.3f, 0};
-    scene.camera.at = {0, 0, 0};
-    scene.camera.fov = 20;
-    Material white, red;
-    white.ka = red.ka = 0;
-    white.kd = red.kd = 0.8f;
-    red.color = Color{0.9f, 0.1f, 0.1f};
-    scene.materials = {white, red};
-    scene.objects.push_back({Plane{{0, 0, 0}, {0, 1, 0}}, 0});
-    scene.objects.push_back({Box{{0.1f, 0, -3}, {0.3f, 2, 3}}, 1});
-    PointLight light;
-    light.position = {-1, 3, 0};
-    light.attenuation = {0, 0, 1};
-    light.color = Color::gray(10);
-    scene.lights.push_back(light);
-    return scene;
 }
 
 TEST(PathTracing, AWhiteFloorBesideARedWallTurnsRed) {

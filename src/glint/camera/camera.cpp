@@ -102,4 +102,37 @@ Ray Camera::generate_ray(Point2 film, Point2 lens, float time) const {
     return ray;
 }
 
+std::optional<Camera::Connection> Camera::connect(Point3 p, Point2 lens, float time) const {
+    if (projection_ != Projection::perspective) return std::nullopt;
+    // In the camera's frame: the eye at the origin, u right, v up, n forward.
+    Point3 q = p;
+    if (motion_) q = motion_->at(time).inverse()(p);
+    const Vector3 e = q - eye_;
+    const Vector3 local{dot(e, u_), dot(e, v_), dot(e, n_)};
+    Vector3 lens_point{0, 0, 0};
+    if (lens_radius_ > 0) {
+        const Point2 a = aperture_point(lens);
+        lens_point = {a.x * lens_radius_, a.y * lens_radius_, 0};
+    }
+    const Vector3 d = local - lens_point;
+    if (!(d.z > 0)) return std::nullopt;
+    // Where the ray from the lens point through p meets the plane of focus (for a pinhole, any
+    // plane): the pinhole ray through there gives the film position.
+    const float focus = lens_radius_ > 0 ? focus_distance_ : 1;
+    const Vector3 f = lens_point + d * (focus / d.z);
+    const float x = f.x / focus, y = f.y / focus;  // on the window at distance 1
+    Connection c;
+    c.film = {(x / half_width_ + 1) * width_ / 2, (1 - y / half_height_) * height_ / 2};
+    const Point3 lens_camera = eye_ + lens_point.x * u_ + lens_point.y * v_;
+    c.lens = motion_ ? motion_->at(time)(lens_camera) : lens_camera;
+    const Vector3 to_camera = c.lens - p;
+    c.distance = length(to_camera);
+    if (!(c.distance > 0)) return std::nullopt;
+    c.to_camera = to_camera / c.distance;
+    const float cos_theta = d.z / length(d);
+    const float area = 4 * half_width_ * half_height_;
+    c.importance = 1 / (area * cos_theta * cos_theta * cos_theta * c.distance * c.distance);
+    return c;
+}
+
 }  // namespace glint

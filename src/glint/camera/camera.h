@@ -3,6 +3,7 @@
 #pragma once
 
 #include <memory>
+#include <optional>
 
 #include "glint/camera/camera_spec.h"
 #include "glint/math/animated_transform.h"
@@ -35,6 +36,25 @@ public:
     Point2 aperture_point(Point2 u) const;
 
     Point3 eye() const { return eye_; }
+
+    // What a point seen by the camera needs to be splatted onto the film (light tracing): the
+    // film position the ray from a point of the lens through it lands on, that lens point, and
+    // We / pdf, the camera's importance for the direction over the density of the lens point as
+    // seen from the point: 1 / (A cos^3(theta) d^2) for a window of area A at distance 1, theta
+    // the angle to the view axis and d the distance (the lens's area cancels). Nothing when
+    // the point is behind the camera, or for an orthographic camera, which sees each point
+    // along one direction only and so can never be connected to. The film position may lie
+    // outside the image.
+    struct Connection {
+        Point2 film;        // in pixels
+        Point3 lens;        // world space
+        Vector3 to_camera;  // unit, from the point to the lens point
+        float distance;
+        float importance;  // We / pdf
+    };
+    std::optional<Connection> connect(Point3 p, Point2 lens, float time) const;
+    // Whether connect() can ever answer: a perspective camera.
+    bool is_connectable() const { return projection_ == Projection::perspective; }
 
 private:
     Projection projection_;

@@ -17,15 +17,19 @@ enum class RayKind : std::uint8_t {
     reflected,  // mirror or glossy reflection
     refracted,  // refraction or translucency
     diffuse,    // scattered by the diffuse part of a material, or its highlight (path tracing)
+    particle,   // a particle's path from a light (light tracing), its every segment
 };
-inline constexpr std::size_t kRayKindCount = 5;
+inline constexpr std::size_t kRayKindCount = 6;
 // Names by RayKind, as the summary and the JSON statistics show them.
 inline constexpr std::array<std::string_view, kRayKindCount> kRayKindNames = {
-    "primary", "shadow", "reflected", "refracted", "diffuse"};
+    "primary", "shadow", "reflected", "refracted", "diffuse", "particle"};
 
 struct RayStats {
     std::array<std::uint64_t, kRayKindCount> traced{};  // by RayKind
     std::uint64_t primary_hits = 0;                     // eye rays that hit something
+    // Particles that left the lights, and how many of them were seen by the eye (the notes'
+    // "most rays will never even get close to the eye", counted).
+    std::uint64_t particles = 0, particles_seen = 0;
 
     void count(RayKind kind) { ++traced[std::size_t(kind)]; }
     std::uint64_t operator[](RayKind kind) const { return traced[std::size_t(kind)]; }
@@ -39,6 +43,8 @@ struct RayStats {
     RayStats& operator+=(const RayStats& o) {
         for (std::size_t i = 0; i < kRayKindCount; ++i) traced[i] += o.traced[i];
         primary_hits += o.primary_hits;
+        particles += o.particles;
+        particles_seen += o.particles_seen;
         return *this;
     }
     bool operator==(const RayStats&) const = default;

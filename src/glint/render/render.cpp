@@ -104,6 +104,11 @@ void render_tile(const Tile& tile, Pass pass, const RenderInputs<Integrator>& in
                 } else {
                     totals.bad.add({x, y, s});
                 }
+                // The integrators that trace light forwards send a particle with each sample.
+                if constexpr (requires {
+                                  integrator.trace_particle(stream, *state.splats, totals.rays);
+                              })
+                    integrator.trace_particle(stream, *state.splats, totals.rays);
             }
             taken = std::uint32_t(s);
         }
@@ -201,6 +206,16 @@ RenderState initial_state(const RenderSettings& settings, const RenderOptions& o
     return RenderState(settings, options.tile_size, pass_size_of(settings, options), options.aovs);
 }
 
+Image resolve_image(const RenderState& state) {
+    Image image = state.film.resolve();
+    if (!state.splats || state.rays.particles == 0) return image;
+    // Each particle stands for the whole film: over the particles per pixel.
+    const Image particles = state.splats->resolve(
+        float(double(state.width) * double(state.height) / double(state.rays.particles)));
+    for (std::size_t i = 0; i < image.pixels.size(); ++i) image.pixels[i] += particles.pixels[i];
+    return image;
+}
+
 RenderResult render(const World& world, const RenderOptions& options, RenderProgress* progress,
                     RenderState* state) {
     const auto start = std::chrono::steady_clock::now();
@@ -228,7 +243,7 @@ RenderResult render(const World& world, const RenderOptions& options, RenderProg
     result.complete = with_integrator(settings.integrator, [&]<class Integrator>() {
         return render_passes<Integrator>(world, options, tiles, progress, *state);
     });
-    result.image = state->film.resolve();
+    result.image = resolve_image(*state);
     if (options.record_samples_taken) result.samples_taken = samples_image(*state);
     result.aovs = state->aovs.resolve();
     if (options.aovs.has(Aov::samples)) {

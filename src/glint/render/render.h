@@ -63,6 +63,9 @@ struct RenderResult {
 int pass_size_of(const RenderSettings& settings, const RenderOptions& options);
 RenderState initial_state(const RenderSettings& settings, const RenderOptions& options);
 
+// The image a state holds: its film resolved, and the light integrator's particles' film added.
+Image resolve_image(const RenderState& state);
+
 // Renders from `state` (which must be of this world's settings and options' tile and pass sizes,
 // as initial_state makes it), or from
 // the start without one, and leaves in it the state reached. The result's counts are the

@@ -18,6 +18,8 @@ RenderState::RenderState(const RenderSettings& settings, int tile_size, int pass
       samples(std::size_t(settings.width) * settings.height, 0),
       tiles_done(make_tiles(settings.width, settings.height, tile_size).size(), 0) {
     if (settings.adaptive) errors.resize(samples.size());
+    if (integrator_info(settings.integrator).traces_particles)
+        splats.emplace(settings.width, settings.height, filter_of(settings));
 }
 
 }  // namespace glint

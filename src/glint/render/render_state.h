@@ -5,11 +5,13 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 #include "glint/render/film/aov_films.h"
 #include "glint/render/film/film.h"
 #include "glint/render/film/pixel_error.h"
+#include "glint/render/film/splat_film.h"
 #include "glint/render/ray_stats.h"
 #include "glint/scene/scene.h"
 
@@ -34,6 +36,8 @@ struct RenderState {
     int width, height;
     int pass_size;
     Film film;
+    // The particles' film, for the integrators that trace particles from the lights.
+    std::optional<SplatFilm> splats;
     AovFilms aovs;  // none unless asked for; a resume file does not hold them
     // Samples each pixel has taken, row by row. Under adaptive sampling a pixel that took fewer
     // than the passes before offered has stopped.

@@ -23,8 +23,9 @@ namespace {
 
 constexpr char kMagic[8] = {'G', 'L', 'I', 'N', 'T', 'R', 'E', 'S'};
 // 3: an adaptive render's film holds each pixel's own weighted samples (filter importance
-// sampling).
-constexpr std::uint32_t kFormatVersion = 3;
+// sampling); 4: rays of five kinds (diffuse); 5: of six (particles), the particles' counts, and
+// the light integrator's film of particles.
+constexpr std::uint32_t kFormatVersion = 5;
 
 class ByteWriter {
 public:
@@ -349,6 +350,8 @@ void encode_state(const RenderState& s, ByteWriter& out) {
     out.raw(s.tiles_done.data(), s.tiles_done.size());
     for (const std::uint64_t n : s.rays.traced) out.u64(n);
     out.u64(s.rays.primary_hits);
+    out.u64(s.rays.particles);
+    out.u64(s.rays.particles_seen);
     out.u64(s.bad_samples.count);
     const SampleLocation first = s.bad_samples.first.value_or(SampleLocation{});
     out.u8(s.bad_samples.first ? 1 : 0);
@@ -374,13 +377,15 @@ void encode_state(const RenderState& s, ByteWriter& out) {
         out.i128(p.b);
         out.i128(p.weight);
     }
+    if (s.splats)
+        for (const std::int64_t v : s.splats->sums()) out.u64(std::uint64_t(v));
 }
 
 // The bytes encode_state writes for s, worked out without writing them.
 std::uint64_t encoded_size(const RenderState& s) {
-    return 4 + 4 + s.tiles_done.size() + kRayKindCount * 8 + 8 + 8 + 1 + 3 * 4 + 8 +
+    return 4 + 4 + s.tiles_done.size() + kRayKindCount * 8 + 3 * 8 + 8 + 1 + 3 * 4 + 8 +
            s.samples.size() * 4 + s.errors.size() * (4 + 8 + 8) + s.film.box_sums().size() * 4 * 4 +
-           s.film.sums().size() * 4 * 16;
+           s.film.sums().size() * 4 * 16 + (s.splats ? s.splats->size() * 8 : 0);
 }
 
 // Decodes into `s`, a fresh state of the expected image, whose sizes the data must have.
@@ -390,6 +395,8 @@ void decode_state(ByteReader& in, RenderState& s, const std::string& corrupt) {
     std::memcpy(s.tiles_done.data(), in.take(s.tiles_done.size()), s.tiles_done.size());
     for (std::uint64_t& n : s.rays.traced) n = in.u64();
     s.rays.primary_hits = in.u64();
+    s.rays.particles = in.u64();
+    s.rays.particles_seen = in.u64();
     s.bad_samples.count = in.u64();
     const bool has_first = in.u8() != 0;
     SampleLocation first;
@@ -415,6 +422,11 @@ void decode_state(ByteReader& in, RenderState& s, const std::string& corrupt) {
         p.g = in.i128();
         p.b = in.i128();
         p.weight = in.i128();
+    }
+    if (s.splats) {
+        std::vector<std::int64_t> sums(s.splats->size());
+        for (std::int64_t& v : sums) v = std::int64_t(in.u64());
+        s.splats->set_sums(sums);
     }
     if (in.left() != 0) throw ResumeError(corrupt);
 }

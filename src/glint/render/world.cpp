@@ -57,8 +57,10 @@ World::World(Scene scene, AccelKind accel, ShadowAcceleration shadows)
     aggregate_ = make_aggregate(accel, primitives_);
     scene_scale_ = scene_scale(aggregate_->bounds(), camera_.eye());
     const Bounds3 bounded = aggregate_->bounds();
-    if (!bounded.is_empty() && bounded.is_finite())
+    if (!bounded.is_empty() && bounded.is_finite()) {
         scene_radius_ = std::max(length(bounded.diagonal()) / 2, 1e-6f);
+        scene_center_ = bounded.min + bounded.diagonal() / 2;
+    }
     shadows_ = shadows;
     bool any_buffer = false;
     for (const Light& light : lights_) {

@@ -89,6 +89,7 @@ public:
     // The radius of a sphere around the bounded geometry (1 when there is none): the scale of
     // the scene, for weighing lights whose intensity does not fall off with distance.
     float scene_radius() const { return scene_radius_; }
+    Point3 scene_center() const { return scene_center_; }
 
     // How far a secondary ray's origin is moved off the surface at p: a fixed fraction of the
     // larger of the scene's extent and p's own magnitude, since float rounding error grows with
@@ -117,6 +118,7 @@ private:
     std::vector<std::unique_ptr<LightBuffer>> light_buffers_;  // per light; null for none
     float scene_scale_ = 1;  // largest coordinate magnitude of bounded geometry
     float scene_radius_ = 1;
+    Point3 scene_center_;
     // Per primitive, filled only when some object emits light.
     std::vector<std::uint8_t> lights_scene_;
     std::vector<std::int32_t> object_light_of_;

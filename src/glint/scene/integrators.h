@@ -14,7 +14,7 @@
 
 namespace glint {
 
-enum class IntegratorKind { whitted, distributed, path };
+enum class IntegratorKind { whitted, distributed, path, light };
 
 struct IntegratorInfo {
     IntegratorKind kind;
@@ -24,6 +24,8 @@ struct IntegratorInfo {
     // Reads materials as scattering functions and lights as radiometric sources, and so
     // ignores the ambient term (Whitted's stand-in for the light it computes).
     bool physically_based;
+    // Traces particles from the lights too, whose light lands anywhere on the film.
+    bool traces_particles;
     std::string_view summary;  // one line: who, when, what
 };
 

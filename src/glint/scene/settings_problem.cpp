@@ -12,6 +12,12 @@ std::optional<SettingsProblem> settings_problem(const RenderSettings& s) {
                                    std::to_string(s.samples_per_pixel),
                                {"the jittered and sobol samplers take any number"}};
     if (!s.adaptive) return std::nullopt;
+    if (integrator_info(s.integrator).traces_particles)
+        return SettingsProblem{"adaptive",
+                               "adaptive sampling does not apply to the " +
+                                   std::string(integrator_name(s.integrator)) + " integrator",
+                               {"its particles land on any pixel, so no pixel's samples tell "
+                                "when it has enough"}};
     if (sampler == SamplerKind::regular)
         return SettingsProblem{"sampler",
                                "adaptive sampling needs the jittered or sobol sampler",

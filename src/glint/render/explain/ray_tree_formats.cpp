@@ -43,6 +43,8 @@ std::string_view kind_name(RayKind kind) {
             return "refracted";
         case RayKind::diffuse:
             return "diffuse";
+        case RayKind::particle:
+            return "particle";
     }
     return "?";
 }

@@ -12,6 +12,7 @@
 #pragma once
 
 #include "glint/render/integrators/distributed.h"
+#include "glint/render/integrators/light_tracer.h"
 #include "glint/render/integrators/path.h"
 #include "glint/render/integrators/whitted.h"
 #include "glint/scene/integrators.h"
@@ -28,6 +29,8 @@ decltype(auto) with_integrator(IntegratorKind kind, F&& f) {
             return f.template operator()<DistributedIntegrator>();
         case IntegratorKind::path:
             return f.template operator()<PathIntegrator>();
+        case IntegratorKind::light:
+            return f.template operator()<LightIntegrator>();
     }
     __builtin_unreachable();  // every kind has a case: -Wswitch names one that has not
 }

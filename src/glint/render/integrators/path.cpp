@@ -8,6 +8,7 @@
 
 #include "glint/render/integrators/surface_context.h"
 #include "glint/shading/cie_1931.h"
+#include "glint/shading/emission.h"
 #include "glint/shading/object_light.h"
 #include "glint/shading/spectrum.h"
 
@@ -111,9 +112,10 @@ Color PathIntegrator::direct_light(const SurfaceContext& c, const Bsdf& bsdf, fl
     std::size_t feeler_light = ShadowFeelers::kNoLight;
     float light_pdf = 0;
     if (index < lights.size()) {
-        // Point, spot, directional and area lights: no scattered ray ever hits them.
-        ls = is_area_light(lights[index]) ? sample_light(lights[index], c.sp.p, u)
-                                          : sample_light(lights[index], c.sp.p);
+        // Point, spot, directional and area lights: no scattered ray ever hits them. An area
+        // light's point is drawn over all its shape, as the particles of the light integrator
+        // leave it, so that the two agree.
+        ls = sample_light_by_area(lights[index], c.sp.p, u);
         feeler_light = index;
     } else {
         const ObjectLightSample s =

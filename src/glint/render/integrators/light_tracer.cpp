@@ -1,0 +1,243 @@
+// Light tracing: particles from the lights, each surface they reach joined to the eye; and the
+// eye rays' share, the emitters seen straight or through delta surfaces.
+#include "glint/render/integrators/light_tracer.h"
+
+#include <algorithm>
+#include <vector>
+
+#include "glint/render/film/film.h"
+#include "glint/render/integrators/path.h"
+#include "glint/render/integrators/surface_context.h"
+#include "glint/shading/bsdf.h"
+#include "glint/shading/cie_1931.h"
+#include "glint/shading/spectrum.h"
+
+namespace glint {
+
+namespace {
+
+// As in the path tracer: after the third surface a particle whose throughput has fallen may end.
+constexpr int kRouletteDepth = 3;
+constexpr float kLeastSurvival = 0.05f;
+
+float mean(Color c) { return (c.r + c.g + c.b) / 3; }
+
+BsdfInputs bsdf_inputs(const SurfaceContext& c, SnellIndices eta) {
+    const Material& m = *c.material;
+    BsdfInputs in;
+    in.wo = c.to_viewer;
+    in.n = c.n;
+    in.ng = c.ng;
+    in.kd = m.kd;
+    in.color = c.color;
+    in.ks = m.ks;
+    in.shininess = m.shininess;
+    in.reflect = c.reflect;
+    in.roughness = c.roughness;
+    in.transmit = m.transmit;
+    in.transmit_roughness = c.transmit_roughness;
+    in.n1 = eta.n1;
+    in.n2 = eta.n2;
+    in.fresnel = m.fresnel;
+    return in;
+}
+
+}  // namespace
+
+LightIntegrator::Shared LightIntegrator::prepare(const World& world) {
+    Shared shared;
+    shared.scene = {world.scene_center(), world.scene_radius()};
+    std::vector<float> power;
+    for (const Light& light : world.lights())
+        power.push_back(emits_finite_power(light)
+                            ? mean(light_power(light, shared.scene.radius))
+                            : 0);  // refused before a render (check_particle_lights)
+    for (const ObjectLight& light : world.object_lights())
+        power.push_back(mean(object_light_power(light)));
+    power.push_back(mean(sky_power(world.settings().background, shared.scene)));
+    float total = 0;
+    for (float& p : power) {
+        if (!std::isfinite(p) || p < 0) p = 0;
+        total += p;
+    }
+    if (total > 0) shared.pick = std::make_shared<const DiscreteDistribution>(power);
+    return shared;
+}
+
+EmittedParticle LightIntegrator::emit(std::size_t index, Point2 u_position,
+                                      Point2 u_direction) const {
+    const auto lights = world_.lights();
+    const auto objects = world_.object_lights();
+    if (index < lights.size())
+        return emit_particle(lights[index], u_position, u_direction, shared_.scene);
+    if (index < lights.size() + objects.size())
+        return emit_particle(objects[index - lights.size()], u_position, u_direction);
+    return emit_sky_particle(world_.settings().background, u_position, u_direction, shared_.scene);
+}
+
+Color LightIntegrator::trace_eye_ray(const Ray& ray, SampleStream& stream, RayStats& stats) {
+    stats.count(RayKind::primary);
+    if (recorder_) [[unlikely]]
+        return eye_ray<true>(ray, 1, world_.eye_media(), stream, stats);
+    return eye_ray<false>(ray, 1, world_.eye_media(), stream, stats);
+}
+
+template <bool kRecord>
+Color LightIntegrator::eye_ray(const Ray& ray, int depth, const MediumStack& media,
+                               SampleStream& stream, RayStats& stats) {
+    const RenderSettings& settings = world_.settings();
+    if constexpr (kRecord) recorder_->begin_ray(ray, depth, 1);
+    const auto hit = world_.intersect(ray, {0, kInfinity}, kVisibleToCameraRays);
+    if (!hit) {
+        if constexpr (kRecord) {
+            recorder_->missed(settings.background);
+            recorder_->end_ray(settings.background);
+        }
+        return settings.background;
+    }
+    if (depth == 1) ++stats.primary_hits;
+    const SurfaceContext c = surface_context(world_, ray, *hit);
+    if constexpr (kRecord) recorder_->hit(c, *hit);
+    PathVertexRecord record;
+    record.le = c.emission;
+    Color color = c.emission;
+    const auto end = [&](StopReason reason) {
+        if constexpr (kRecord) {
+            recorder_->path_vertex(c, record);
+            if (reason != StopReason::none) recorder_->stop(reason);
+            recorder_->end_ray(color);
+        }
+        return color;
+    };
+    if (depth > settings.max_depth) return end(StopReason::max_depth);
+    // Only a delta part is followed: the light a smooth part reflects towards the eye comes by
+    // the particles. Picking it with its probability keeps the estimate of the delta part's
+    // share exact on average.
+    // A dispersive surface splits the ray as in the path tracer.
+    const Material& m = *c.material;
+    float wavelength = ray.wavelength;
+    Color spectral_weight{1, 1, 1};
+    if (m.dispersion.model != DispersionModel::none && m.transmit > 0 && wavelength == 0) {
+        const float u = stream.get_1d(kWavelengthDimension);
+        wavelength = sample_visible_wavelength(u);
+        spectral_weight = wavelength_to_rgb_weight(wavelength) / visible_wavelength_pdf(wavelength);
+        if constexpr (kRecord) recorder_->wavelength(u, wavelength);
+    }
+    const Bsdf bsdf(bsdf_inputs(c, snell_indices(c, media, wavelength)));
+    const float u_lobe = stream.next_1d();
+    const Point2 u = stream.next_2d();
+    const std::optional<BsdfSample> s = bsdf.sample(u_lobe, u);
+    if (!s || !s->delta) return end(StopReason::none);
+    if constexpr (kRecord) {
+        record.scattered = true;
+        record.lobe = s->transmitted ? "transmit" : "reflect";
+        record.wi = s->wi;
+        record.scatter_pdf = s->pdf;
+        record.delta = true;
+        record.weight = s->weight;
+    }
+    const RayKind kind = s->transmitted ? RayKind::refracted : RayKind::reflected;
+    stats.count(kind);
+    Ray next = world_.spawn_ray(c.sp.p, c.ng, s->wi, c.sp.error, ray.time);
+    next.wavelength = s->transmitted ? wavelength : ray.wavelength;
+    const Color factor = s->transmitted ? s->weight * spectral_weight : s->weight;
+    MediumStack beyond = media;
+    if (s->transmitted)
+        beyond = c.entering ? media.entered(c.primitive, &m, ior_at(m, wavelength))
+                            : media.left(c.primitive, &m);
+    if constexpr (kRecord) {
+        recorder_->path_vertex(c, record);
+        recorder_->branch(kind, factor, std::nullopt);
+    }
+    color += factor * eye_ray<kRecord>(next, depth + 1, beyond, stream, stats);
+    if constexpr (kRecord) recorder_->end_ray(color);
+    return color;
+}
+
+void LightIntegrator::trace_particle(SampleStream& stream, SplatFilm& film, RayStats& stats) {
+    if (!shared_.pick) return;
+    const RenderSettings& settings = world_.settings();
+    const Camera& camera = world_.camera();
+    ++stats.particles;
+    const float u_pick = stream.next_1d();
+    const Point2 u_position = stream.next_2d(), u_direction = stream.next_2d();
+    const std::size_t index = shared_.pick->sample(u_pick);
+    const EmittedParticle e = emit(index, u_position, u_direction);
+    Color beta = e.power / shared_.pick->probability(index);
+    if (is_black(beta)) return;
+    // At the moment its sample's eye ray was traced, so that what moves blurs alike.
+    const float time = camera.has_shutter() ? camera.shutter_time(stream.get_1d(kTimeDimension))
+                                            : camera.shutter_open();
+    Ray ray = world_.spawn_ray(e.origin, Normal3(e.direction), e.direction, 0, time);
+    MediumStack media;
+    float wavelength = 0;
+    Color throughput{1, 1, 1};  // the product of the weights, for Russian roulette
+    bool seen = false;
+    for (int depth = 1; depth <= settings.max_depth; ++depth) {
+        const auto hit = world_.intersect(ray, {0, kInfinity}, kVisibleToCameraRays);
+        stats.count(RayKind::particle);
+        if (!hit) break;
+        const SurfaceContext c = surface_context(world_, ray, *hit);
+        const Material& m = *c.material;
+        Color spectral_weight{1, 1, 1};
+        if (m.dispersion.model != DispersionModel::none && m.transmit > 0 && wavelength == 0) {
+            wavelength = sample_visible_wavelength(stream.next_1d());
+            spectral_weight =
+                wavelength_to_rgb_weight(wavelength) / visible_wavelength_pdf(wavelength);
+        }
+        const Bsdf bsdf(bsdf_inputs(c, snell_indices(c, media, wavelength)),
+                        TransportMode::importance);
+        // Joined to the eye through a point of its lens.
+        const Point2 u_lens = stream.next_2d();
+        if (bsdf.has_smooth_part()) {
+            const auto to_eye = camera.connect(c.sp.p, u_lens, ray.time);
+            if (to_eye && to_eye->film.x >= 0 && to_eye->film.x < float(settings.width) &&
+                to_eye->film.y >= 0 && to_eye->film.y < float(settings.height)) {
+                const Color f = bsdf.eval(to_eye->to_camera);
+                if (!is_black(f)) {
+                    const Normal3 side = dot(to_eye->to_camera, c.ng) >= 0 ? c.ng : -c.ng;
+                    const Ray feeler =
+                        world_.spawn_ray(c.sp.p, side, to_eye->to_camera, c.sp.error, ray.time);
+                    const float reach =
+                        distance(feeler.origin, to_eye->lens) * (1 - kRelativeRayEpsilon);
+                    stats.count(RayKind::shadow);
+                    if (!world_.occluded(feeler, {0, reach}, kVisibleToCameraRays)) {
+                        const float cosine = std::abs(dot(to_vector(c.n), to_eye->to_camera));
+                        const Color value = beta * f * (cosine * to_eye->importance);
+                        if (is_valid_sample(value)) {
+                            film.splat(to_eye->film, value);
+                            seen = true;
+                        }
+                    }
+                }
+            }
+        }
+        if (depth == settings.max_depth) break;
+        const float u_lobe = stream.next_1d();
+        const Point2 u = stream.next_2d();
+        const std::optional<BsdfSample> s = bsdf.sample(u_lobe, u);
+        if (!s) break;
+        Color factor = s->weight;
+        if (s->transmitted) factor *= spectral_weight;
+        throughput *= factor;
+        if (depth >= kRouletteDepth) {
+            const float survival = std::min(1.0f, max_channel(throughput));
+            if (survival < 1) {
+                const float p = std::max(kLeastSurvival, survival);
+                if (stream.next_1d() >= p) break;
+                factor = factor / p;
+                throughput = throughput / p;
+            }
+        }
+        beta *= factor;
+        if (s->transmitted) {
+            const float ior = ior_at(m, wavelength);
+            media = c.entering ? media.entered(c.primitive, &m, ior) : media.left(c.primitive, &m);
+        }
+        ray = world_.spawn_ray(c.sp.p, c.ng, s->wi, c.sp.error, ray.time);
+        ray.wavelength = wavelength;
+    }
+    if (seen) ++stats.particles_seen;
+}
+
+}  // namespace glint
