@@ -107,7 +107,10 @@ void print_summary(const std::string& output, const RenderSettings& s, const Ren
             std::printf("  (%s hit)", with_thousands(rays.primary_hits).c_str());
         std::printf("\n");
     }
-    if (rays.particles > 0)
+    if (rays.photons_stored > 0)
+        std::printf("  photons    %15s  (%s stored)\n", with_thousands(rays.particles).c_str(),
+                    with_thousands(rays.photons_stored).c_str());
+    else if (rays.particles > 0)
         std::printf("  particles  %15s  (%s, %.2g%%, reached the eye)\n",
                     with_thousands(rays.particles).c_str(),
                     with_thousands(rays.particles_seen).c_str(),

@@ -28,7 +28,8 @@ std::string stats_json(const RenderReport& report) {
             json << "    \"primary_hits\": " << r.rays.primary_hits << ",\n";
     }
     json << "    \"particles\": " << r.rays.particles << ",\n"
-         << "    \"particles_seen\": " << r.rays.particles_seen << ",\n";
+         << "    \"particles_seen\": " << r.rays.particles_seen << ",\n"
+         << "    \"photons_stored\": " << r.rays.photons_stored << ",\n";
     json << "    \"total\": " << r.rays.total() << "\n"
          << "  },\n"
          << "  \"mrays_per_second\": " << mrays << ",\n"

@@ -11,6 +11,7 @@
 #include "glint/render/eye_sample.h"
 #include "glint/render/film/film.h"
 #include "glint/render/film/pixel_error.h"
+#include "glint/render/integrators/photon_map.h"
 
 namespace glint {
 
@@ -100,7 +101,13 @@ MemoryEstimate estimate_render_memory(const Scene& scene, AccelKind accel,
                                          : (one_pixel ? sizeof(BoxSum) : sizeof(PixelSum));
         aovs += 2 * sizeof(Color);
     }
+    // The light integrator's film of particles: three 64-bit sums a pixel.
+    if (integrator_info(s.integrator).traces_particles) state += 3 * sizeof(std::int64_t);
     e.film = pixels * (state + images + resume + aovs) + kFileBufferBytes;
+    // The photon integrator's map of a pass: each photon traced into its block, joined, and
+    // sorted into the grid (three copies at most), and two buckets a photon.
+    if (s.integrator == IntegratorKind::photon)
+        e.film += std::uint64_t(s.photons.per_pass) * (3 * sizeof(Photon) + 2 * 4 + 8);
     return e;
 }
 

@@ -30,6 +30,9 @@ struct RayStats {
     // Particles that left the lights, and how many of them were seen by the eye (the notes'
     // "most rays will never even get close to the eye", counted).
     std::uint64_t particles = 0, particles_seen = 0;
+    // The photon integrator's photons that came to rest in its maps (it counts those it
+    // emitted as particles).
+    std::uint64_t photons_stored = 0;
 
     void count(RayKind kind) { ++traced[std::size_t(kind)]; }
     std::uint64_t operator[](RayKind kind) const { return traced[std::size_t(kind)]; }
@@ -45,6 +48,7 @@ struct RayStats {
         primary_hits += o.primary_hits;
         particles += o.particles;
         particles_seen += o.particles_seen;
+        photons_stored += o.photons_stored;
         return *this;
     }
     bool operator==(const RayStats&) const = default;

@@ -127,7 +127,7 @@ bool render_passes(const World& world, const RenderOptions& options, const std::
     const Sampler sampler(sampler_of(settings), spp, options.seed);
     std::optional<FilterSampling> filter_sampling;
     if (importance_samples_filter(settings)) filter_sampling.emplace(filter_of(settings));
-    const typename Integrator::Shared shared = Integrator::prepare(world);
+    typename Integrator::Shared shared = Integrator::prepare(world);
     const RenderInputs<Integrator> inputs{world, sampler,
                                           filter_sampling ? &*filter_sampling : nullptr, shared};
     std::mutex totals_mutex;
@@ -142,6 +142,16 @@ bool render_passes(const World& world, const RenderOptions& options, const std::
         const Pass pass{state.next_pass * size, std::min(spp, (state.next_pass + 1) * size)};
         std::atomic<bool> skipped{false};
         arena.execute([&] {
+            if constexpr (requires(RayStats & r) {
+                              Integrator::begin_pass(shared, world, 0, std::uint64_t(0), r);
+                          }) {
+                // Counted once, though a pass continued after a stop prepares again.
+                RayStats prepared;
+                Integrator::begin_pass(shared, world, pass.begin, options.seed, prepared);
+                if (std::none_of(state.tiles_done.begin(), state.tiles_done.end(),
+                                 [](std::uint8_t d) { return d != 0; }))
+                    state.rays += prepared;
+            }
             // One tile per task: tiles are large enough to amortise scheduling.
             tbb::parallel_for(
                 tbb::blocked_range<std::size_t>(0, tiles.size(), 1),
@@ -199,6 +209,7 @@ Image samples_image(const RenderState& state) {
 }  // namespace
 
 int pass_size_of(const RenderSettings& settings, const RenderOptions& options) {
+    if (const int fixed = integrator_info(settings.integrator).pass_size; fixed > 0) return fixed;
     return options.pass_size > 0 ? options.pass_size : samples_per_pass(settings.samples_per_pixel);
 }
 

@@ -24,8 +24,8 @@ namespace {
 constexpr char kMagic[8] = {'G', 'L', 'I', 'N', 'T', 'R', 'E', 'S'};
 // 3: an adaptive render's film holds each pixel's own weighted samples (filter importance
 // sampling); 4: rays of five kinds (diffuse); 5: of six (particles), the particles' counts, and
-// the light integrator's film of particles.
-constexpr std::uint32_t kFormatVersion = 5;
+// the light integrator's film of particles; 6: the photons stored.
+constexpr std::uint32_t kFormatVersion = 6;
 
 class ByteWriter {
 public:
@@ -352,6 +352,7 @@ void encode_state(const RenderState& s, ByteWriter& out) {
     out.u64(s.rays.primary_hits);
     out.u64(s.rays.particles);
     out.u64(s.rays.particles_seen);
+    out.u64(s.rays.photons_stored);
     out.u64(s.bad_samples.count);
     const SampleLocation first = s.bad_samples.first.value_or(SampleLocation{});
     out.u8(s.bad_samples.first ? 1 : 0);
@@ -383,7 +384,7 @@ void encode_state(const RenderState& s, ByteWriter& out) {
 
 // The bytes encode_state writes for s, worked out without writing them.
 std::uint64_t encoded_size(const RenderState& s) {
-    return 4 + 4 + s.tiles_done.size() + kRayKindCount * 8 + 3 * 8 + 8 + 1 + 3 * 4 + 8 +
+    return 4 + 4 + s.tiles_done.size() + kRayKindCount * 8 + 4 * 8 + 8 + 1 + 3 * 4 + 8 +
            s.samples.size() * 4 + s.errors.size() * (4 + 8 + 8) + s.film.box_sums().size() * 4 * 4 +
            s.film.sums().size() * 4 * 16 + (s.splats ? s.splats->size() * 8 : 0);
 }
@@ -397,6 +398,7 @@ void decode_state(ByteReader& in, RenderState& s, const std::string& corrupt) {
     s.rays.primary_hits = in.u64();
     s.rays.particles = in.u64();
     s.rays.particles_seen = in.u64();
+    s.rays.photons_stored = in.u64();
     s.bad_samples.count = in.u64();
     const bool has_first = in.u8() != 0;
     SampleLocation first;

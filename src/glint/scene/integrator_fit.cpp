@@ -2,6 +2,7 @@
 #include "glint/scene/integrator_fit.h"
 
 #include <cstdio>
+#include <fstream>
 #include <string>
 
 namespace glint {
@@ -26,6 +27,17 @@ const Attenuation* attenuation_of(const Light& light) {
     if (const auto* s = std::get_if<SpotLight>(&light)) return &s->attenuation;
     if (const auto* a = std::get_if<AreaLight>(&light)) return &a->attenuation;
     return nullptr;
+}
+
+// The text of the location's line in its file, for the error's excerpt; empty when unknown.
+std::string line_of(const SourceLocation& where) {
+    if (where.line <= 0) return {};
+    std::ifstream in(where.file, std::ios::binary);
+    std::string line;
+    for (int i = 0; i < where.line && std::getline(in, line); ++i) {
+    }
+    if (!line.empty() && line.back() == '\r') line.pop_back();
+    return in ? line : std::string();
 }
 
 }  // namespace
@@ -58,7 +70,8 @@ void check_integrator_fits(const Scene& scene) {
                              "the " +
                              name + " integrator's particles to carry",
                          {"give it attenuation: {constant: 0, linear: 0, quadratic: 1} (and a "
-                          "colour to match), or render with the path integrator"});
+                          "colour to match), or render with the path integrator"},
+                         line_of(where));
     }
 }
 

@@ -11,19 +11,23 @@ namespace {
 constexpr IntegratorInfo kIntegrators[] = {
     {IntegratorKind::distributed, "distributed", SamplerKind::jittered,
      // The notes' "stochastic sampling with Gaussian weighting".
-     FilterSpec{FilterKind::gaussian, 1.5f}, false, false,
+     FilterSpec{FilterKind::gaussian, 1.5f}, false, false, 0,
      "Cook, Porter and Carpenter's distributed ray tracing (1984): Whitted's ray tree with each "
      "ray spread over what it integrates (soft shadows, glossy reflection, depth of field, "
      "motion blur, dispersion)"},
     {IntegratorKind::light, "light", SamplerKind::sobol, FilterSpec{FilterKind::gaussian, 1.5f},
-     true, true,
+     true, true, 0,
      "the notes' backward ray tracing (light tracing, Arvo 1986; Dutre et al. 1993): particles "
      "leave the lights, scatter, and each surface they reach is connected to the eye"},
     {IntegratorKind::path, "path", SamplerKind::sobol, FilterSpec{FilterKind::gaussian, 1.5f}, true,
-     false,
+     false, 0,
      "Kajiya's path tracing (1986) with next-event estimation and multiple importance sampling: "
      "global illumination, light reflected from surface to surface (colour bleeding)"},
-    {IntegratorKind::whitted, "whitted", SamplerKind::regular, FilterSpec{}, false, false,
+    {IntegratorKind::photon, "photon", SamplerKind::sobol, FilterSpec{FilterKind::gaussian, 1.5f},
+     true, false, 1,
+     "progressive photon mapping (Jensen 1996; Knaus and Zwicker 2011): a photon map a pass, "
+     "its gathering radius shrinking pass by pass, for caustics and colour bleeding"},
+    {IntegratorKind::whitted, "whitted", SamplerKind::regular, FilterSpec{}, false, false, 0,
      "Whitted's recursive ray tracing (1980): Phong's local term with shadow feelers, and the "
      "mirror-reflected and refracted rays"},
 };

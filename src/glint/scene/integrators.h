@@ -14,7 +14,7 @@
 
 namespace glint {
 
-enum class IntegratorKind { whitted, distributed, path, light };
+enum class IntegratorKind { whitted, distributed, path, light, photon };
 
 struct IntegratorInfo {
     IntegratorKind kind;
@@ -26,6 +26,9 @@ struct IntegratorInfo {
     bool physically_based;
     // Traces particles from the lights too, whose light lands anywhere on the film.
     bool traces_particles;
+    // The samples of each pixel a pass takes when it must be a given number (the photon
+    // integrator builds a photon map for each sample index); 0: the render loop's choice.
+    int pass_size;
     std::string_view summary;  // one line: who, when, what
 };
 

@@ -36,6 +36,16 @@ struct AdaptiveSampling {
 // cannot be seen against a relative threshold.
 inline constexpr float kAdaptiveDarkLevel = 0.05f;
 
+// The photon integrator's photon maps: one of per_pass photons for each sample index, gathered
+// within a radius that starts at `radius` (0: a fiftieth of the scene's bounding sphere) and
+// shrinks pass by pass as r_{i+1}^2 = r_i^2 (i + alpha) / (i + 1) (Knaus and Zwicker 2011).
+struct PhotonSettings {
+    int per_pass = 100000;
+    float radius = 0;
+    float alpha = 2.0f / 3;
+    bool operator==(const PhotonSettings&) const = default;
+};
+
 struct RenderSettings {
     int width = 640;
     int height = 480;
@@ -54,6 +64,7 @@ struct RenderSettings {
     int shadow_rays = 1;
     // Unset: every pixel takes samples_per_pixel samples.
     std::optional<AdaptiveSampling> adaptive;
+    PhotonSettings photons;  // the photon integrator's
 };
 
 // The sampler and filter a render uses: the scene's, or its integrator's default (whitted: the

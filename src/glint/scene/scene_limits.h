@@ -19,6 +19,8 @@ inline constexpr int kMaxSamplesPerPixel = 1 << 24;
 // Each level of the ray tree is a level of recursion on a worker thread's stack.
 inline constexpr int kMaxDepth = 1024;
 inline constexpr int kMaxShadowRays = 4096;
+// Photons a pass: each takes 48 bytes while its pass's map stands.
+inline constexpr int kMaxPhotonsPerPass = 1 << 24;
 
 struct SceneLimits {
     std::int64_t image_pixels = kMaxImagePixels;  // of the render, and of every image read

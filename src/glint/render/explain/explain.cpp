@@ -36,7 +36,13 @@ RayTree explain(const World& world, const PixelSample& which) {
         tree.draws.push_back({"time", kTimeDimension, {eye.time_u, 0}, false});
     RayTreeRecorder recorder(world, tree);
     tree.sample_value = with_integrator(settings.integrator, [&]<class Integrator>() {
-        const typename Integrator::Shared shared = Integrator::prepare(world);
+        typename Integrator::Shared shared = Integrator::prepare(world);
+        if constexpr (requires(RayStats & r) {
+                          Integrator::begin_pass(shared, world, 0, std::uint64_t(0), r);
+                      }) {
+            RayStats unused;
+            Integrator::begin_pass(shared, world, which.sample, which.seed, unused);
+        }
         Integrator integrator(world, shared);
         integrator.record_into(&recorder);
         RayStats stats;

@@ -98,6 +98,11 @@ struct PathVertexRecord {
     float mis = 1;        // the power heuristic's weight of the light sample
     float shadow = 1;     // the feeler: 1 unblocked, 0 blocked
     Color term;           // f |N.L| pi I_L shadow mis / pick: exactly what it added
+    // The photon integrator's gathering: the photons found within the radius (-1: none
+    // gathered here) and their estimate, exactly what it added.
+    int photons = -1;
+    float gather_radius = 0;
+    Color photon_term;
     // Scattering.
     bool scattered = false;
     std::string lobe;  // "diffuse", "highlight", "reflect", "transmit"

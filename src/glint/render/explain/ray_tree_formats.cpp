@@ -205,6 +205,11 @@ private:
                 numbers += v.shadow == 0 ? ", shadow feeler blocked" : ", shadow feeler unblocked";
             line(indent + 1, numbers + "; adds " + read(v.term));
         }
+        if (v.photons >= 0)
+            line(indent, "photon map: " + std::to_string(v.photons) +
+                             " photons within r = " + read(v.gather_radius) +
+                             ", the sum of f power / (pi r^2 photons emitted) adds " +
+                             read(v.photon_term));
         if (v.scattered) {
             std::string text = "scatters by the " + v.lobe + " part: direction " + read(v.wi);
             text += v.delta ? ", a delta part picked with probability " + read(v.scatter_pdf)
@@ -341,6 +346,13 @@ std::string path_json(const PathVertexRecord& v) {
         f.add("next_event", light.object());
     } else {
         f.add("next_event", "null");
+    }
+    if (v.photons >= 0) {
+        Fields photons;
+        photons.add("found", std::to_string(v.photons)).add("radius", exact(v.gather_radius));
+        f.add("photons", photons.add("term", exact(v.photon_term)).object());
+    } else {
+        f.add("photons", "null");
     }
     if (v.scattered) {
         Fields scatter;

@@ -221,6 +221,16 @@ void RayTreeRecorder::path_vertex(const SurfaceContext&, const PathVertexRecord&
         n.direct = record.term;
         n.lights.push_back(std::move(light));
     }
+    if (record.photons >= 0) {
+        LightRecord photons;
+        photons.name = "photon map";
+        LightSampleRecord sample;
+        sample.term = record.photon_term;
+        photons.samples.push_back(sample);
+        photons.value = record.photon_term;
+        n.direct += record.photon_term;
+        n.lights.push_back(std::move(photons));
+    }
 }
 
 }  // namespace glint

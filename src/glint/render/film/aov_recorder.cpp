@@ -101,6 +101,7 @@ void AovRecorder::path_vertex(const SurfaceContext&, const PathVertexRecord& rec
     sample_.emission = record.le * record.emission_weight;
     sample_.ambient = {};
     sample_.direct += record.term;
+    sample_.indirect += record.photon_term;  // 0 but for the photon integrator
 }
 
 }  // namespace glint

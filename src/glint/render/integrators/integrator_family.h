@@ -9,11 +9,17 @@
 //   Integrator(const World&, const Shared&);           // one per tile: per-thread caches
 //   Color trace_eye_ray(const Ray&, SampleStream&, RayStats&);
 //   void record_into(RayRecorder*);                    // explain, the output variables
+// and, when it needs them, the hooks the render loop then calls:
+//   static void begin_pass(Shared&, const World&, int sample, seed, RayStats&);
+//       before the pass of one sample index (its pass_size in the table is 1): photon maps
+//   void trace_particle(SampleStream&, SplatFilm&, RayStats&);
+//       after each eye sample: particles that land anywhere on the film
 #pragma once
 
 #include "glint/render/integrators/distributed.h"
 #include "glint/render/integrators/light_tracer.h"
 #include "glint/render/integrators/path.h"
+#include "glint/render/integrators/photon_mapper.h"
 #include "glint/render/integrators/whitted.h"
 #include "glint/scene/integrators.h"
 
@@ -31,6 +37,8 @@ decltype(auto) with_integrator(IntegratorKind kind, F&& f) {
             return f.template operator()<PathIntegrator>();
         case IntegratorKind::light:
             return f.template operator()<LightIntegrator>();
+        case IntegratorKind::photon:
+            return f.template operator()<PhotonIntegrator>();
     }
     __builtin_unreachable();  // every kind has a case: -Wswitch names one that has not
 }

@@ -7,6 +7,7 @@
 
 #include "glint/render/film/film.h"
 #include "glint/render/integrators/path.h"
+#include "glint/render/integrators/roulette.h"
 #include "glint/render/integrators/surface_context.h"
 #include "glint/shading/bsdf.h"
 #include "glint/shading/cie_1931.h"
@@ -14,66 +15,7 @@
 
 namespace glint {
 
-namespace {
-
-// As in the path tracer: after the third surface a particle whose throughput has fallen may end.
-constexpr int kRouletteDepth = 3;
-constexpr float kLeastSurvival = 0.05f;
-
-float mean(Color c) { return (c.r + c.g + c.b) / 3; }
-
-BsdfInputs bsdf_inputs(const SurfaceContext& c, SnellIndices eta) {
-    const Material& m = *c.material;
-    BsdfInputs in;
-    in.wo = c.to_viewer;
-    in.n = c.n;
-    in.ng = c.ng;
-    in.kd = m.kd;
-    in.color = c.color;
-    in.ks = m.ks;
-    in.shininess = m.shininess;
-    in.reflect = c.reflect;
-    in.roughness = c.roughness;
-    in.transmit = m.transmit;
-    in.transmit_roughness = c.transmit_roughness;
-    in.n1 = eta.n1;
-    in.n2 = eta.n2;
-    in.fresnel = m.fresnel;
-    return in;
-}
-
-}  // namespace
-
-LightIntegrator::Shared LightIntegrator::prepare(const World& world) {
-    Shared shared;
-    shared.scene = {world.scene_center(), world.scene_radius()};
-    std::vector<float> power;
-    for (const Light& light : world.lights())
-        power.push_back(emits_finite_power(light)
-                            ? mean(light_power(light, shared.scene.radius))
-                            : 0);  // refused before a render (check_particle_lights)
-    for (const ObjectLight& light : world.object_lights())
-        power.push_back(mean(object_light_power(light)));
-    power.push_back(mean(sky_power(world.settings().background, shared.scene)));
-    float total = 0;
-    for (float& p : power) {
-        if (!std::isfinite(p) || p < 0) p = 0;
-        total += p;
-    }
-    if (total > 0) shared.pick = std::make_shared<const DiscreteDistribution>(power);
-    return shared;
-}
-
-EmittedParticle LightIntegrator::emit(std::size_t index, Point2 u_position,
-                                      Point2 u_direction) const {
-    const auto lights = world_.lights();
-    const auto objects = world_.object_lights();
-    if (index < lights.size())
-        return emit_particle(lights[index], u_position, u_direction, shared_.scene);
-    if (index < lights.size() + objects.size())
-        return emit_particle(objects[index - lights.size()], u_position, u_direction);
-    return emit_sky_particle(world_.settings().background, u_position, u_direction, shared_.scene);
-}
+namespace {}  // namespace
 
 Color LightIntegrator::trace_eye_ray(const Ray& ray, SampleStream& stream, RayStats& stats) {
     stats.count(RayKind::primary);
@@ -155,15 +97,14 @@ Color LightIntegrator::eye_ray(const Ray& ray, int depth, const MediumStack& med
 }
 
 void LightIntegrator::trace_particle(SampleStream& stream, SplatFilm& film, RayStats& stats) {
-    if (!shared_.pick) return;
+    if (!shared_.emitters.any()) return;
     const RenderSettings& settings = world_.settings();
     const Camera& camera = world_.camera();
     ++stats.particles;
     const float u_pick = stream.next_1d();
     const Point2 u_position = stream.next_2d(), u_direction = stream.next_2d();
-    const std::size_t index = shared_.pick->sample(u_pick);
-    const EmittedParticle e = emit(index, u_position, u_direction);
-    Color beta = e.power / shared_.pick->probability(index);
+    const EmittedParticle e = shared_.emitters.emit(u_pick, u_position, u_direction);
+    Color beta = e.power;
     if (is_black(beta)) return;
     // At the moment its sample's eye ray was traced, so that what moves blurs alike.
     const float time = camera.has_shutter() ? camera.shutter_time(stream.get_1d(kTimeDimension))
@@ -220,14 +161,10 @@ void LightIntegrator::trace_particle(SampleStream& stream, SplatFilm& film, RayS
         Color factor = s->weight;
         if (s->transmitted) factor *= spectral_weight;
         throughput *= factor;
-        if (depth >= kRouletteDepth) {
-            const float survival = std::min(1.0f, max_channel(throughput));
-            if (survival < 1) {
-                const float p = std::max(kLeastSurvival, survival);
-                if (stream.next_1d() >= p) break;
-                factor = factor / p;
-                throughput = throughput / p;
-            }
+        if (const float p = survival_probability(throughput, depth); p < 1) {
+            if (stream.next_1d() >= p) break;
+            factor = factor / p;
+            throughput = throughput / p;
         }
         beta *= factor;
         if (s->transmitted) {

@@ -9,30 +9,25 @@
 // price of tracing light forwards.
 #pragma once
 
-#include <memory>
-
 #include "glint/math/color.h"
 #include "glint/math/ray.h"
 #include "glint/render/film/splat_film.h"
+#include "glint/render/integrators/emitters.h"
 #include "glint/render/integrators/ray_recorder.h"
 #include "glint/render/integrators/shadow_feelers.h"
 #include "glint/render/ray_stats.h"
 #include "glint/render/world.h"
-#include "glint/sampling/discrete_distribution.h"
 #include "glint/sampling/sampler.h"
-#include "glint/shading/emission.h"
 
 namespace glint {
 
 class LightIntegrator {
 public:
-    // The emitters, world.lights() then world.object_lights() then the sky (when the background
-    // is not black), picked in proportion to their power; null when nothing emits.
+    // The emitters by power.
     struct Shared {
-        std::shared_ptr<const DiscreteDistribution> pick;
-        SceneSphere scene;
+        Emitters emitters;
     };
-    static Shared prepare(const World& world);
+    static Shared prepare(const World& world) { return {Emitters(world)}; }
 
     LightIntegrator(const World& world, const Shared& shared)
         : world_(world), shared_(shared), feelers_(world, /*opaque=*/true) {}
@@ -49,9 +44,6 @@ private:
     template <bool kRecord>
     Color eye_ray(const Ray& ray, int depth, const MediumStack& media, SampleStream& stream,
                   RayStats& stats);
-    // A particle leaving the emitter of index `index` in the pick distribution.
-    EmittedParticle emit(std::size_t index, Point2 u_position, Point2 u_direction) const;
-
     const World& world_;
     const Shared& shared_;
     ShadowFeelers feelers_;

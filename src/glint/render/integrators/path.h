@@ -10,19 +10,16 @@
 #pragma once
 
 #include <cstdint>
-#include <memory>
 #include <optional>
-#include <string>
 
 #include "glint/math/color.h"
 #include "glint/math/ray.h"
 #include "glint/render/explain/ray_tree.h"
 #include "glint/render/integrators/medium_stack.h"
+#include "glint/render/integrators/next_event.h"
 #include "glint/render/integrators/ray_recorder.h"
-#include "glint/render/integrators/shadow_feelers.h"
 #include "glint/render/ray_stats.h"
 #include "glint/render/world.h"
-#include "glint/sampling/discrete_distribution.h"
 #include "glint/sampling/sampler.h"
 #include "glint/shading/bsdf.h"
 
@@ -30,15 +27,14 @@ namespace glint {
 
 class PathIntegrator {
 public:
-    // The lights, world.lights() then world.object_lights(), picked in proportion to their
-    // power; null when there is none.
+    // The lights by power, for next-event estimation.
     struct Shared {
-        std::shared_ptr<const DiscreteDistribution> light_pick;
+        NextEventLights lights;
     };
-    static Shared prepare(const World& world);
+    static Shared prepare(const World& world) { return {NextEventLights(world)}; }
 
     PathIntegrator(const World& world, const Shared& shared)
-        : world_(world), shared_(shared), feelers_(world, /*opaque=*/true) {}
+        : world_(world), next_event_(world, shared.lights) {}
 
     // The radiance one sample's path brings back along the eye ray. Counts every ray it traces.
     Color trace_eye_ray(const Ray& ray, SampleStream& stream, RayStats& stats);
@@ -60,30 +56,16 @@ private:
 
     template <bool kRecord>
     Color radiance(const Ray& ray, PathState path, SampleStream& stream, RayStats& stats);
-    // Next-event estimation at the vertex: one light, picked by power, and one shadow ray. With
-    // a record, its numbers go there too.
-    Color direct_light(const struct SurfaceContext& c, const Bsdf& bsdf, float time,
-                       SampleStream& stream, RayStats& stats, PathVertexRecord* record);
-    // The weight an emitting surface the path hit counts its emission with, weighed against the
-    // shadow rays that could have found it, and the densities weighed.
+    // The weight an emitting surface the path hit counts its emission with, weighed against
+    // the shadow rays that could have found it, and the densities weighed.
     struct EmissionWeight {
         float weight = 1, bsdf_pdf = 0, light_pdf = 0;
     };
     EmissionWeight emission_weight(const struct SurfaceContext& c, const PathState& path) const;
-    // "light 2", "emitting object 7": the light of index `index` in the pick distribution.
-    std::string light_name(std::size_t index) const;
 
     const World& world_;
-    const Shared& shared_;
-    ShadowFeelers feelers_;
+    NextEvent next_event_;
     RayRecorder* recorder_ = nullptr;
 };
-
-// The power heuristic with exponent 2 (Veach and Guibas 1995): the weight of a sample drawn with
-// density a that another strategy could have drawn with density b.
-inline float power_heuristic(float a, float b) {
-    const float a2 = a * a, b2 = b * b;
-    return a2 + b2 > 0 ? a2 / (a2 + b2) : 0;
-}
 
 }  // namespace glint

@@ -9,6 +9,7 @@
 #include "glint/math/ray.h"
 #include "glint/render/integrators/medium_stack.h"
 #include "glint/render/world.h"
+#include "glint/shading/bsdf.h"
 #include "glint/shading/material.h"
 #include "glint/shading/optics.h"
 #include "glint/shading/texture.h"
@@ -122,6 +123,27 @@ inline MediumStack media_beyond(const SurfaceContext& c, const Branches& b,
     const Material& m = *c.material;
     return b.entering ? media.entered(c.primitive, &m, ior_at(m, wavelength))
                       : media.left(c.primitive, &m);
+}
+
+// The material at c read as a BSDF's numbers (bsdf.h), for indices eta on both sides.
+inline BsdfInputs bsdf_inputs(const SurfaceContext& c, SnellIndices eta) {
+    const Material& m = *c.material;
+    BsdfInputs in;
+    in.wo = c.to_viewer;
+    in.n = c.n;
+    in.ng = c.ng;
+    in.kd = m.kd;
+    in.color = c.color;
+    in.ks = m.ks;
+    in.shininess = m.shininess;
+    in.reflect = c.reflect;
+    in.roughness = c.roughness;
+    in.transmit = m.transmit;
+    in.transmit_roughness = c.transmit_roughness;
+    in.n1 = eta.n1;
+    in.n2 = eta.n2;
+    in.fresnel = m.fresnel;
+    return in;
 }
 
 }  // namespace glint

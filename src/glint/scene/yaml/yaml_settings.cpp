@@ -57,6 +57,16 @@ AdaptiveSampling read_adaptive(const YamlSource& source, const YAML::Node& node,
     return a;  // checked with the other settings (settings_problem)
 }
 
+// `photons`: the photon integrator's photons a pass and gathering radius.
+PhotonSettings read_photons(const YamlSource& source, const YAML::Node& node, const Field& field) {
+    const MapReader map(source, node, field, "photons", {"per_pass", "radius", "alpha"});
+    PhotonSettings p;
+    p.per_pass = map.integer("per_pass", {1, kMaxPhotonsPerPass}, p.per_pass);
+    p.radius = map.number("radius", kNonNegative, p.radius);
+    p.alpha = map.number("alpha", {0, 1, true, true}, p.alpha);
+    return p;
+}
+
 // The node a problem of the settings as a whole is about: its key where the file has it, else
 // the map it belongs in.
 YAML::Node blamed_node(const MapReader& image, const YAML::Node& image_node, std::string_view key) {
@@ -94,8 +104,8 @@ RenderSettings read_image(const YamlSource& source, const YAML::Node& node, cons
                           const SceneLimits& limits) {
     const MapReader map(
         source, node, field, "image",
-        {"width", "height", "integrator", "samples", "sampler", "filter", "adaptive", "shadow_rays",
-         "max_depth", "min_weight", "background", "transparent_shadows"});
+        {"width", "height", "integrator", "samples", "sampler", "filter", "adaptive", "photons",
+         "shadow_rays", "max_depth", "min_weight", "background", "transparent_shadows"});
     RenderSettings s;
     s.width = map.integer("width", {1, kMaxImageSide}, s.width);
     s.height = map.integer("height", {1, kMaxImageSide}, s.height);
@@ -122,6 +132,8 @@ RenderSettings read_image(const YamlSource& source, const YAML::Node& node, cons
     if (const std::optional<SettingsProblem> problem = settings_problem(s))
         throw source.error_at(blamed_node(map, node, problem->key), problem->message,
                               problem->notes);
+    if (const MapEntry* photons = map.find("photons"))
+        s.photons = read_photons(source, photons->value, map.field("photons"));
     s.shadow_rays = map.integer("shadow_rays", {1, kMaxShadowRays}, s.shadow_rays);
     s.max_depth = limited_integer(source, map, "max_depth", kMaxDepth, limits.max_depth,
                                   "--max-ray-depth", s.max_depth);

@@ -1,0 +1,103 @@
+// One light, one point on it, one shadow ray; the light's weight by power worked out once.
+#include "glint/render/integrators/next_event.h"
+
+#include <cmath>
+#include <vector>
+
+#include "glint/math/constants.h"
+#include "glint/render/integrators/surface_context.h"
+#include "glint/shading/emission.h"
+#include "glint/shading/object_light.h"
+
+namespace glint {
+
+namespace {
+
+float mean(Color c) { return (c.r + c.g + c.b) / 3; }
+
+}  // namespace
+
+NextEventLights::NextEventLights(const World& world) {
+    std::vector<float> power;
+    const float radius = world.scene_radius();
+    for (const Light& light : world.lights()) power.push_back(mean(light_power(light, radius)));
+    for (const ObjectLight& light : world.object_lights())
+        power.push_back(mean(object_light_power(light)));
+    float total = 0;
+    for (float& p : power) {
+        if (!std::isfinite(p) || p < 0) p = 0;
+        total += p;
+    }
+    if (total > 0) pick = std::make_shared<const DiscreteDistribution>(power);
+}
+
+float NextEvent::object_light_pdf(std::size_t index, Point3 from, Point3 q, Normal3 n) const {
+    if (!lights_.pick) return 0;
+    const float pick = lights_.pick->probability(world_.lights().size() + index);
+    return pick * glint::object_light_pdf(world_.object_lights()[index], from, q, n);
+}
+
+std::string NextEvent::light_name(std::size_t index) const {
+    const std::size_t lights = world_.lights().size();
+    if (index < lights) return "light " + std::to_string(index);
+    return "emitting object " + std::to_string(world_.object_lights()[index - lights].primitive);
+}
+
+Color NextEvent::estimate(const SurfaceContext& c, const Bsdf& bsdf, float time,
+                          SampleStream& stream, RayStats& stats, bool weigh,
+                          PathVertexRecord* record) {
+    if (!lights_.pick) return {};
+    const float u_pick = stream.next_1d();
+    const Point2 u = stream.next_2d();
+    const std::size_t index = lights_.pick->sample(u_pick);
+    const float pick = lights_.pick->probability(index);
+    const auto lights = world_.lights();
+    LightSample ls;
+    std::size_t feeler_light = ShadowFeelers::kNoLight;
+    float light_pdf = 0;
+    if (index < lights.size()) {
+        // Point, spot, directional and area lights: no scattered ray ever hits them. An area
+        // light's point is drawn over all its shape, as the particles of the light integrator
+        // leave it, so that the two agree.
+        ls = sample_light_by_area(lights[index], c.sp.p, u);
+        feeler_light = index;
+    } else {
+        const ObjectLightSample s =
+            sample_object_light(world_.object_lights()[index - lights.size()], c.sp.p, u);
+        ls = s.light;
+        light_pdf = s.pdf;
+        if (!(s.pdf > 0)) ls.intensity = {};
+    }
+    const bool sends = !is_black(ls.intensity);
+    const Color f = sends ? bsdf.eval(ls.to_light) : Color{};
+    const float bsdf_pdf = sends ? bsdf.pdf(ls.to_light) : 0;
+    const float mis = weigh && light_pdf > 0 ? power_heuristic(pick * light_pdf, bsdf_pdf) : 1;
+    const float cosine = std::abs(dot(to_vector(c.n), ls.to_light));
+    float shadow = 0;
+    Color term;
+    if (!is_black(f)) {
+        // Light from behind reaches only what transmits: the feeler leaves by that side.
+        const Normal3 side = dot(ls.to_light, c.ng) >= 0 ? c.ng : -c.ng;
+        shadow =
+            feelers_.transmittance(feeler_light, c.sp, side, ls.to_light, ls.distance, time, stats);
+        if (shadow > 0) term = f * ls.intensity * (kPi * cosine * shadow * mis / pick);
+    }
+    if (record) {
+        record->light_sampled = true;
+        record->light = light_name(index);
+        record->pick = pick;
+        record->to_light = ls.to_light;
+        record->distance = ls.distance;
+        record->irradiance = ls.intensity * kPi;
+        record->f = f;
+        record->cosine = cosine;
+        record->light_pdf = light_pdf;
+        record->bsdf_pdf = bsdf_pdf;
+        record->mis = mis;
+        record->shadow = shadow;
+        record->term = term;
+    }
+    return term;
+}
+
+}  // namespace glint

@@ -1,0 +1,134 @@
+// Progressive photon mapping: the radius schedule's worked numbers, the photon map's gathering
+// against brute force, the furnace's exact answer, the path tracer's image of a diffuse scene,
+// a caustic, and an image independent of threads and tiles.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include "glint/render/explain/explain.h"
+#include "glint/render/integrators/photon_mapper.h"
+#include "glint/render/render.h"
+#include "glint/sampling/random.h"
+#include "glint/scene/load_scene.h"
+#include "global_illumination_scenes.h"
+
+namespace glint {
+namespace {
+
+using testing::furnace;
+using testing::red_wall;
+
+TEST(PhotonMapping, TheRadiusShrinksAsKnausAndZwickerSchedule) {
+    // r_{i+1}^2 = r_i^2 (i + alpha) / (i + 1), alpha 2/3: 1, sqrt(5/6) = 0.91287, and then
+    // sqrt(5/6 * 8/9) = 0.86066.
+    EXPECT_EQ(PhotonIntegrator::radius_of_pass(1, 2.0f / 3, 0), 1);
+    EXPECT_NEAR(PhotonIntegrator::radius_of_pass(1, 2.0f / 3, 1), 0.91287f, 1e-5f);
+    EXPECT_NEAR(PhotonIntegrator::radius_of_pass(1, 2.0f / 3, 2), 0.86066f, 1e-5f);
+    // It keeps shrinking, as i^((alpha - 1) / 2): slowly enough that each pass adds photons.
+    EXPECT_LT(PhotonIntegrator::radius_of_pass(2, 0.7f, 1000), 2 * 0.4f);
+    EXPECT_GT(PhotonIntegrator::radius_of_pass(2, 0.7f, 1000), 2 * 0.2f);
+}
+
+TEST(PhotonMap, GathersExactlyThePhotonsWithinTheRadius) {
+    std::vector<Photon> photons;
+    for (std::uint64_t i = 0; i < 2000; ++i)
+        photons.push_back({{random_float(i, 0, 0, 1) * 4 - 2, random_float(i, 0, 1, 1) * 4 - 2,
+                            random_float(i, 0, 2, 1) * 4 - 2},
+                           {0, 1, 0},
+                           {0, 1, 0},
+                           Color::gray(float(i))});
+    const PhotonMap map(photons, 0.3f);
+    for (std::uint64_t q = 0; q < 100; ++q) {
+        const Point3 p{random_float(q, 1, 0, 2) * 5 - 2.5f, random_float(q, 1, 1, 2) * 5 - 2.5f,
+                       random_float(q, 1, 2, 2) * 5 - 2.5f};
+        std::vector<float> found, expected;
+        map.for_each_near(p, [&](const Photon& photon) { found.push_back(photon.power.r); });
+        for (const Photon& photon : photons)
+            if (length_squared(photon.position - p) <= 0.3f * 0.3f)
+                expected.push_back(photon.power.r);
+        std::sort(found.begin(), found.end());
+        std::sort(expected.begin(), expected.end());
+        EXPECT_EQ(found, expected) << q;
+    }
+}
+
+TEST(PhotonMapping, AFurnaceOfEmittingWallsGivesLeOverOneMinusAlbedo) {
+    Scene scene = furnace(0.5f, Color{0.2f, 0.1f, 0.05f}, IntegratorKind::photon);
+    scene.settings.samples_per_pixel = testing::kUnderSanitizer ? 8 : 32;
+    scene.settings.photons.per_pass = testing::kUnderSanitizer ? 5000 : 20000;
+    const RenderResult r = render(World(scene), {});
+    // The density estimate's blur is nothing in a furnace, whose light is the same everywhere;
+    // the photons' noise is shared by all pixels of a pass, so the mean is judged alone.
+    Color mean;
+    for (const Color& c : r.image.pixels) mean += c / float(r.image.pixels.size());
+    EXPECT_NEAR(mean.r, 0.4f, 0.03f * 0.4f);
+    EXPECT_NEAR(mean.g, 0.2f, 0.03f * 0.2f);
+    EXPECT_NEAR(mean.b, 0.1f, 0.03f * 0.1f);
+    EXPECT_EQ(r.rays.particles, std::uint64_t(scene.settings.photons.per_pass) *
+                                    std::uint64_t(scene.settings.samples_per_pixel));
+    EXPECT_GT(r.rays.photons_stored, r.rays.particles / 2);
+}
+
+TEST(PhotonMapping, AgreesWithThePathTracerOnADiffuseScene) {
+    Scene photon = red_wall(IntegratorKind::photon), path = red_wall(IntegratorKind::path);
+    photon.settings.filter = path.settings.filter = FilterSpec{FilterKind::box, 0.5f};
+    photon.settings.photons.per_pass = testing::kUnderSanitizer ? 5000 : 20000;
+    path.settings.samples_per_pixel *= 4;
+    const Image a = render(World(photon), {}).image, b = render(World(path), {}).image;
+    // The floor's pixels, whose light the wall reflects: within 5% of each other (the photons'
+    // noise is correlated across pixels, so no per-pixel error is estimated here).
+    for (int x = 0; x < a.width; ++x) {
+        const Color p = a.at(x, a.height - 1), q = b.at(x, b.height - 1);
+        EXPECT_NEAR(p.r, q.r, 0.05f * q.r + 0.002f) << x;
+        EXPECT_NEAR(p.g, q.g, 0.05f * q.g + 0.002f) << x;
+    }
+}
+
+// explain builds the photon map of the sample's pass, as the render did: its tree gives the
+// rendered pixel to the last bit, the photon map's estimate among its terms.
+TEST(PhotonMapping, ExplainGivesTheRenderedPixelToTheLastBit) {
+    Scene scene = load_scene(std::string(GLINT_SOURCE_DIR) + "/scenes/features/caustics.yaml");
+    scene.settings.width = 12;
+    scene.settings.height = 8;
+    scene.settings.samples_per_pixel = 2;
+    scene.settings.photons.per_pass = 2000;
+    scene.settings.filter = FilterSpec{FilterKind::box, 0.5f};
+    const World world(scene);
+    RenderOptions options;
+    options.seed = 3;
+    const Image image = render(world, options).image;
+    int gathered = 0;
+    for (int y = 0; y < scene.settings.height; ++y)
+        for (int x = 0; x < scene.settings.width; ++x) {
+            Color sum;
+            for (int s = 0; s < 2; ++s) {
+                const RayTree tree = explain(world, {x, y, s, options.seed});
+                const Color e = evaluate(tree);
+                ASSERT_EQ(e, tree.sample_value) << x << ", " << y << " sample " << s;
+                sum += tree.sample_value;
+                for (const RayNode& n : tree.nodes) gathered += n.path && n.path->photons > 0;
+            }
+            EXPECT_EQ(sum / 2.0f, image.at(x, y)) << x << ", " << y;
+        }
+    EXPECT_GT(gathered, 0);
+}
+
+TEST(PhotonMapping, TheImageDoesNotDependOnThreadsOrTiles) {
+    Scene scene = red_wall(IntegratorKind::photon);
+    scene.settings.samples_per_pixel = 4;
+    scene.settings.photons.per_pass = 3000;
+    const World world(scene);
+    RenderOptions one, two;
+    one.threads = 1;
+    two.threads = 2;
+    two.tile_size = 3;
+    const RenderResult a = render(world, one), b = render(world, two);
+    EXPECT_EQ(a.image.pixels, b.image.pixels);
+    EXPECT_EQ(a.rays, b.rays);
+}
+
+}  // namespace
+}  // namespace glint
