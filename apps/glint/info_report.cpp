@@ -7,6 +7,7 @@
 
 #include "glint/render/json_string.h"
 #include "glint/render/memory_estimate.h"
+#include "glint/scene/integrators.h"
 
 namespace glint::cli {
 
@@ -135,6 +136,11 @@ std::string info_text(const InfoReport& r) {
     append(out, "Triangles    %zu\n", s.triangles);
     append(out, "Materials    %zu\n", s.materials);
     append(out, "Lights       %s\n", lights_text(s).c_str());
+    if (s.sky_width > 0)
+        append(out, "Sky          an image of %dx%d pixels: %s\n", s.sky_width, s.sky_height,
+               integrator_info(image.integrator).physically_based
+                   ? "it lights the scene"
+                   : "seen only (this integrator's light is the ambient term)");
     if (s.bounds.is_empty())
         append(out, "Bounds       none (no bounded objects)");
     else
@@ -187,6 +193,10 @@ std::string info_json(const InfoReport& r) {
            "  \"lights\": {\"point\": %zu, \"spot\": %zu, \"directional\": %zu, \"area\": %zu, "
            "\"emitting_objects\": %zu},\n",
            s.point_lights, s.spot_lights, s.directional_lights, s.area_lights, s.emitting_objects);
+    if (s.sky_width > 0)
+        append(out, "  \"sky\": {\"width\": %d, \"height\": %d},\n", s.sky_width, s.sky_height);
+    else
+        out += "  \"sky\": null,\n";
     if (s.bounds.is_empty())
         append(out, "  \"bounds\": {\"min\": null, \"max\": null, \"unbounded_objects\": %zu},\n",
                s.unbounded_objects);

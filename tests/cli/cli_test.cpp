@@ -401,6 +401,19 @@ TEST_F(Cli, InfoDescribesTheShowcase) {
         << grid.out;
 }
 
+// A sky image is described, and whether the integrator takes its light.
+TEST_F(Cli, InfoDescribesTheSky) {
+    const Outcome r = run_glint("info " + scene("features/sky.yaml"));
+    EXPECT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_NE(r.out.find("Sky          an image of 256x128 pixels: it lights the scene\n"),
+              std::string::npos)
+        << r.out;
+    EXPECT_EQ(r.out.find("[no-lights]"), std::string::npos) << r.out;
+    const Outcome json = run_glint("info " + scene("features/sky.yaml") + " --json");
+    EXPECT_NE(json.out.find("\"sky\": {\"width\": 256, \"height\": 128},"), std::string::npos)
+        << json.out;
+}
+
 // The same as one JSON object with the documented keys, one a line where they are numbers.
 TEST_F(Cli, InfoJsonHasTheDocumentedKeys) {
     const Outcome r = run_glint("info " + scene("showcase.yaml") + " --json --accel kdtree");
@@ -420,6 +433,7 @@ TEST_F(Cli, InfoJsonHasTheDocumentedKeys) {
           "\"materials\": 5,",
           "\"lights\": {\"point\": 2, \"spot\": 0, \"directional\": 0, \"area\": 0, "
           "\"emitting_objects\": 0}",
+          "\"sky\": null,",
           "\"bounds\": {\"min\": [-4.2, 0, -3.05], \"max\": [2.9, 2.6, 4.9], "
           "\"unbounded_objects\": 1}",
           "\"name\": \"kdtree\",",

@@ -1,4 +1,5 @@
-// Loading texture images with stb_image: sRGB decoding, HDR kept linear, errors naming the file.
+// Loading texture images: stb_image's formats sRGB-decoded or, for HDR, kept linear; OpenEXR and
+// PFM as glint writes them; values no texture can hold refused; errors naming the file.
 #include "glint/image/texture_file.h"
 
 #include <gtest/gtest.h>
@@ -168,6 +169,42 @@ TEST(TextureFile, HdrStaysLinear) {
     EXPECT_FLOAT_EQ(image.at(0, 0).r, 1.0f);
     EXPECT_FLOAT_EQ(image.at(0, 0).g, 0.5f);
     EXPECT_FLOAT_EQ(image.at(0, 0).b, 0.25f);
+}
+
+TEST(TextureFile, ExrAndPfmLoadAsTheyWereWritten) {
+    Image image(3, 2);
+    for (int i = 0; i < 6; ++i) image.pixels[std::size_t(i)] = {0.1f * i, 2.5f * i, 1e3f * i};
+    std::filesystem::create_directories(kOut);
+    for (const char* name : {"floats.exr", "floats.pfm"}) {
+        write_image(kOut / name, image);
+        const Image read = load_texture_image(kOut / name);
+        ASSERT_EQ(read.width, 3) << name;
+        ASSERT_EQ(read.height, 2) << name;
+        for (int i = 0; i < 6; ++i) {
+            EXPECT_EQ(read.pixels[std::size_t(i)].r, image.pixels[std::size_t(i)].r) << name;
+            EXPECT_EQ(read.pixels[std::size_t(i)].b, image.pixels[std::size_t(i)].b) << name;
+        }
+    }
+    EXPECT_THROW(load_texture_image(kOut / "floats.exr", kMaxTextureFileBytes, 5), ImageError);
+}
+
+TEST(TextureFile, ValuesNoTextureCanHoldAreRefusedAtTheirPixel) {
+    const float bad[] = {std::nanf(""), -1.0f, INFINITY};
+    for (const float v : bad) {
+        Image image(2, 2, Color::gray(0.5f));
+        image.at(1, 0).g = v;
+        // PFM writes every float as it is.
+        std::filesystem::create_directories(kOut);
+        const auto path = kOut / "bad-value.pfm";
+        write_image(path, image);
+        try {
+            load_texture_image(path);
+            FAIL() << "loaded a pixel of " << v;
+        } catch (const ImageError& e) {
+            EXPECT_NE(std::string(e.what()).find("pixel (1, 0)"), std::string::npos) << e.what();
+            EXPECT_NE(std::string(e.what()).find("finite and >= 0"), std::string::npos);
+        }
+    }
 }
 
 TEST(TextureFile, ErrorsNameTheFile) {

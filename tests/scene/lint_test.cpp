@@ -64,6 +64,21 @@ TEST(Lint, AnEmittingObjectIsALight) {
     EXPECT_TRUE(of_rule(seen, "no-lights").empty());
 }
 
+TEST(Lint, TheSkyLightsOnlyForThePhysicallyBasedIntegrators) {
+    const Scene lit = parse_yaml_scene(
+        "image: {width: 40, height: 30, integrator: path, background: [0.5, 0.6, 0.8]}\n"
+        "camera: {from: [0, 1, -5], at: [0, 0, 0], fov: 40}\n" +
+            kBall,
+        "lint.yaml");
+    EXPECT_TRUE(of_rule(lit, "no-lights").empty());
+    Scene seen = lit;
+    seen.settings.integrator = IntegratorKind::distributed;
+    EXPECT_EQ(of_rule(seen, "no-lights").size(), 1u);
+    Scene dark = lit;
+    dark.settings.background = {};
+    EXPECT_EQ(of_rule(dark, "no-lights").size(), 1u);
+}
+
 TEST(Lint, CameraInsideASphereWarnsAndOutsideDoesNot) {
     const auto warnings =
         of_rule(scene_with("objects: [{type: sphere, center: [0, 1, -5], radius: 0.5}]\n"),

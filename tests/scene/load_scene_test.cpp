@@ -5,7 +5,11 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
 
+#include "glint/scene/integrator_fit.h"
 #include "glint/scene/scene_error.h"
 
 namespace glint {
@@ -16,6 +20,24 @@ const std::filesystem::path kSource = GLINT_SOURCE_DIR;
 TEST(LoadScene, ReadsYamlScenes) {
     const Scene scene = load_scene(kSource / "scenes/whitted-basics.yaml");
     EXPECT_EQ(scene.objects.size(), 5u);
+}
+
+// Every example scene loads, fits the integrator it names, and has its row in scenes/README.md.
+TEST(LoadScene, EveryExampleSceneLoadsAndIsListed) {
+    std::ifstream readme(kSource / "scenes/README.md");
+    std::stringstream listed;
+    listed << readme.rdbuf();
+    int scenes = 0;
+    for (const auto& entry : std::filesystem::recursive_directory_iterator(kSource / "scenes")) {
+        const std::string extension = entry.path().extension().string();
+        if (extension != ".yaml" && extension != ".nff") continue;
+        const std::string name = entry.path().lexically_relative(kSource / "scenes").string();
+        SCOPED_TRACE(name);
+        ++scenes;
+        EXPECT_NO_THROW(check_integrator_fits(load_scene(entry.path())));
+        EXPECT_NE(listed.str().find("| `" + name + "` |"), std::string::npos);
+    }
+    EXPECT_GT(scenes, 30);
 }
 
 TEST(LoadScene, ReadsNffAndGzippedNff) {

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <array>
 #include <climits>
+#include <cmath>
 #include <cstdint>
 #include <cstdlib>
 #include <cstring>
@@ -14,9 +15,12 @@
 #include <system_error>
 #include <vector>
 
+#include "glint/image/exr_io.h"
 #include "glint/image/file_io.h"
 #include "glint/image/image_error.h"
+#include "glint/image/image_format.h"
 #include "glint/image/image_limits.h"
+#include "glint/image/pfm_io.h"
 #include "glint/image/srgb.h"
 #include "glint/image/stb_hazards.h"
 
@@ -205,8 +209,29 @@ Image load_texture_image(const std::filesystem::path& path, std::uintmax_t max_b
         throw ImageError(path, "texture file is " + std::to_string(size) +
                                    " bytes, more than the limit of " + std::to_string(max_bytes));
     }
+    const std::optional<ImageFormat> format = format_from_extension(path);
+    if (format == ImageFormat::exr || format == ImageFormat::pfm) {
+        Image image = *format == ImageFormat::exr ? read_exr(path) : read_pfm(path);
+        check_image_size(path, image.width, image.height, max_pixels);
+        check_texture_values(path, image);
+        return image;
+    }
     const std::vector<unsigned char> bytes = read_whole_file(path);  // names the file on failure
     return decode_texture_image(bytes, path, max_pixels);
+}
+
+void check_texture_values(const std::filesystem::path& path, const Image& image) {
+    for (int y = 0; y < image.height; ++y) {
+        for (int x = 0; x < image.width; ++x) {
+            const Color c = image.at(x, y);
+            for (const float v : {c.r, c.g, c.b}) {
+                if (std::isfinite(v) && v >= 0) continue;
+                throw ImageError(path, "pixel (" + std::to_string(x) + ", " + std::to_string(y) +
+                                           ") holds " + std::to_string(v) +
+                                           "; a texture's values must be finite and >= 0");
+            }
+        }
+    }
 }
 
 }  // namespace glint

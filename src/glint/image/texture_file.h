@@ -1,5 +1,6 @@
-// Reading texture images (PNG, JPEG, Radiance HDR, TGA, BMP) with stb_image into linear RGB.
-// 8- and 16-bit data are sRGB-decoded; HDR data is linear already. Alpha is dropped.
+// Reading texture images into linear RGB: PNG, JPEG, Radiance HDR, TGA and BMP with stb_image
+// (8- and 16-bit data sRGB-decoded, HDR data linear already, alpha dropped), and OpenEXR and PFM
+// (linear floats) as glint writes them.
 #pragma once
 
 #include <cstdint>
@@ -17,8 +18,10 @@ inline constexpr std::uintmax_t kMaxTextureFileBytes = std::uintmax_t(1) << 30;
 inline constexpr std::uintmax_t kMaxDecodableTextureBytes = 0x7fffffff;
 
 // Throws ImageError naming `path` when the file cannot be read, is not a regular file, is larger
-// than max_bytes (or kMaxDecodableTextureBytes), is not an image stb_image knows, or claims more
-// than max_pixels or a side beyond check_image_size (checked before decoding).
+// than max_bytes (or kMaxDecodableTextureBytes), is not an image it knows (by content; .exr and
+// .pfm by name), claims more than max_pixels or a side beyond check_image_size (checked before
+// decoding, but for .exr and .pfm against kMaxImagePixels), or holds a value that is not finite
+// or is negative.
 Image load_texture_image(const std::filesystem::path& path,
                          std::uintmax_t max_bytes = kMaxTextureFileBytes,
                          std::int64_t max_pixels = kMaxImagePixels);
@@ -27,5 +30,8 @@ Image load_texture_image(const std::filesystem::path& path,
 // the file in errors.
 Image decode_texture_image(std::span<const unsigned char> bytes, const std::filesystem::path& name,
                            std::int64_t max_pixels = kMaxImagePixels);
+
+// Throws ImageError naming `path` at the first pixel whose value is NaN, infinite or negative.
+void check_texture_values(const std::filesystem::path& path, const Image& image);
 
 }  // namespace glint

@@ -31,6 +31,7 @@ World::World(Scene scene, AccelKind accel, ShadowAcceleration shadows)
     : settings_(scene.settings),
       camera_(scene.camera, scene.settings.width, scene.settings.height),
       ambient_(scene.ambient),
+      sky_(scene.sky ? Sky(*scene.sky) : Sky(scene.settings.background)),
       materials_(std::move(scene.materials)),
       lights_(std::move(scene.lights)) {
     primitives_.reserve(scene.objects.size());

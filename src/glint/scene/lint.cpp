@@ -8,6 +8,7 @@
 
 #include "glint/geometry/point_inside.h"
 #include "glint/math/constants.h"
+#include "glint/scene/integrators.h"
 #include "glint/scene/quote.h"
 
 namespace glint {
@@ -45,6 +46,11 @@ std::string_view light_kind(const Light& light) {
 
 void no_lights(const Scene& scene, Warnings& out) {
     if (!scene.lights.empty()) return;
+    // The physically based integrators take the sky's light (the background is a sky of one
+    // colour); Whitted's and Cook's only show it.
+    const bool sky_lights = integrator_info(scene.settings.integrator).physically_based &&
+                            (scene.sky || !is_black(scene.settings.background));
+    if (sky_lights) return;
     // A glowing object counts even when it lights nothing (emits_light: false): it is seen, as
     // a slit seen through a prism is.
     for (const SceneObject& object : scene.objects)

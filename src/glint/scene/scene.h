@@ -20,6 +20,7 @@
 #include "glint/scene/scene_limits.h"
 #include "glint/shading/light.h"
 #include "glint/shading/material.h"
+#include "glint/shading/sky.h"
 
 namespace glint {
 
@@ -109,6 +110,8 @@ struct Scene {
     std::vector<Material> materials;
     std::vector<Light> lights;
     LargeVector<SceneObject> objects;
+    // An image round the scene in place of settings.background.
+    std::optional<SkyImage> sky;
     // What the loader accepted but the user should know ("3 degenerate triangles dropped").
     std::vector<std::string> warnings;
     SceneSources sources;

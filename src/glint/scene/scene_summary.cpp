@@ -32,6 +32,10 @@ SceneSummary summarize_scene(const Scene& scene) {
     SceneSummary s;
     s.objects = scene.objects.size();
     s.materials = scene.materials.size();
+    if (scene.sky) {
+        s.sky_width = scene.sky->image->width;
+        s.sky_height = scene.sky->image->height;
+    }
     for (const SceneObject& object : scene.objects) {
         ++s.objects_by_shape[std::string(shape_name(object.shape))];
         s.triangles += triangle_count(object.shape);

@@ -22,6 +22,7 @@ struct SceneSummary {
     // Objects whose material emits and that light the scene (SceneObject::emits_light); an area
     // light's visible face is its light's, not one of these.
     std::size_t emitting_objects = 0;
+    int sky_width = 0, sky_height = 0;  // the sky image's size; 0 for a background colour
     Bounds3 bounds;                     // of the bounded objects; empty when there are none
     std::size_t unbounded_objects = 0;  // planes, and shapes built on them
 };

@@ -94,15 +94,19 @@ EmittedParticle emit_particle(const ObjectLight& light, Point2 u_position, Point
     return {s.p, w, light.radiance * (kPi / (s.pdf * side_probability))};
 }
 
-EmittedParticle emit_sky_particle(Color radiance, Point2 u_position, Point2 u_direction,
+EmittedParticle emit_sky_particle(const Sky& sky, Point2 u_position, Point2 u_direction,
                                   const SceneSphere& scene) {
-    // Travelling along w: it comes from -w.
-    const Vector3 w = sample_uniform_sphere(u_direction);
-    return {entry_point(w, u_position, scene), w, sky_power(radiance, scene)};
+    float pdf = 0;
+    const Vector3 to_sky = sky.sample(u_direction, &pdf);
+    // Travelling along w: it comes from the sky towards -w.
+    const Vector3 w = -to_sky;
+    if (!(pdf > 0)) return {entry_point(w, u_position, scene), w, Color{}};
+    return {entry_point(w, u_position, scene), w,
+            sky.radiance(to_sky) * (kPi * scene.radius * scene.radius / pdf)};
 }
 
-Color sky_power(Color radiance, const SceneSphere& scene) {
-    return radiance * (4 * kPi * kPi * scene.radius * scene.radius);
+Color sky_power(const Sky& sky, const SceneSphere& scene) {
+    return sky.mean_radiance() * (4 * kPi * kPi * scene.radius * scene.radius);
 }
 
 LightSample sample_light_by_area(const Light& light, Point3 p, Point2 u) {

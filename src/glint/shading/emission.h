@@ -11,6 +11,7 @@
 #include "glint/math/vector.h"
 #include "glint/shading/light.h"
 #include "glint/shading/object_light.h"
+#include "glint/shading/sky.h"
 
 namespace glint {
 
@@ -35,12 +36,12 @@ EmittedParticle emit_particle(const Light& light, Point2 u_position, Point2 u_di
 // An emitting object's: a point drawn on it, a side (both sides of a two-sided one emit), and a
 // direction cosine-weighted around that side's normal.
 EmittedParticle emit_particle(const ObjectLight& light, Point2 u_position, Point2 u_direction);
-// The background as a sky of uniform radiance: a direction from anywhere, entering the scene's
-// sphere through the disk across it.
-EmittedParticle emit_sky_particle(Color radiance, Point2 u_position, Point2 u_direction,
+// The sky's: a direction drawn by the sky's brightness (Sky::sample), entering the scene's
+// sphere through the disk across it, carrying L(w) pi R^2 / pdf(w).
+EmittedParticle emit_sky_particle(const Sky& sky, Point2 u_position, Point2 u_direction,
                                   const SceneSphere& scene);
-// The flux the sky sends into the scene's sphere: radiance x 4 pi x pi R^2.
-Color sky_power(Color radiance, const SceneSphere& scene);
+// The flux the sky sends into the scene's sphere: its mean radiance x 4 pi x pi R^2.
+Color sky_power(const Sky& sky, const SceneSphere& scene);
 
 // A point drawn uniformly by area over the light's shape, as particles leave it (for an area
 // light: a sphere all round, where sample_light aims at the cap it shows p), as a light sample

@@ -20,7 +20,7 @@ Emitters::Emitters(const World& world)
         power.push_back(emits_finite_power(light) ? mean(light_power(light, scene_.radius)) : 0);
     for (const ObjectLight& light : world.object_lights())
         power.push_back(mean(object_light_power(light)));
-    power.push_back(mean(sky_power(world.settings().background, scene_)));
+    power.push_back(mean(sky_power(world.sky(), scene_)));
     float total = 0;
     for (float& p : power) {
         if (!std::isfinite(p) || p < 0) p = 0;
@@ -28,8 +28,6 @@ Emitters::Emitters(const World& world)
     }
     if (total > 0) pick_ = std::make_shared<const DiscreteDistribution>(power);
 }
-
-bool Emitters::is_sky(float u_pick) const { return pick_->sample(u_pick) == pick_->size() - 1; }
 
 EmittedParticle Emitters::emit(float u_pick, Point2 u_position, Point2 u_direction) const {
     const std::size_t index = pick_->sample(u_pick);
@@ -41,7 +39,7 @@ EmittedParticle Emitters::emit(float u_pick, Point2 u_position, Point2 u_directi
     else if (index < lights.size() + objects.size())
         e = emit_particle(objects[index - lights.size()], u_position, u_direction);
     else
-        e = emit_sky_particle(world_.settings().background, u_position, u_direction, scene_);
+        e = emit_sky_particle(world_.sky(), u_position, u_direction, scene_);
     e.power = e.power / pick_->probability(index);
     return e;
 }

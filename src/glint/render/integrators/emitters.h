@@ -1,6 +1,6 @@
 // The emitters particles and photons leave from, as one list picked in proportion to power:
-// world.lights() (those whose power is finite), world.object_lights(), then the sky when the
-// background is not black.
+// world.lights() (those whose power is finite), world.object_lights(), then the sky when it is
+// not black.
 #pragma once
 
 #include <cstddef>
@@ -23,8 +23,6 @@ public:
     // A particle of the emitter u_pick picks, its power divided by the probability it was
     // picked with: the flux it carries for the whole scene. any() must hold.
     EmittedParticle emit(float u_pick, Point2 u_position, Point2 u_direction) const;
-    // Whether the emitter of a particle is the sky (next-event estimation does not sample it).
-    bool is_sky(float u_pick) const;
 
 private:
     const World& world_;

@@ -31,11 +31,12 @@ Color LightIntegrator::eye_ray(const Ray& ray, int depth, const MediumStack& med
     if constexpr (kRecord) recorder_->begin_ray(ray, depth, 1);
     const auto hit = world_.intersect(ray, {0, kInfinity}, kVisibleToCameraRays);
     if (!hit) {
+        const Color sky = world_.sky().radiance(ray.direction);
         if constexpr (kRecord) {
-            recorder_->missed(settings.background);
-            recorder_->end_ray(settings.background);
+            recorder_->missed(sky);
+            recorder_->end_ray(sky);
         }
-        return settings.background;
+        return sky;
     }
     if (depth == 1) ++stats.primary_hits;
     const SurfaceContext c = surface_context(world_, ray, *hit);

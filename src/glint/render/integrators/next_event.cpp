@@ -23,6 +23,10 @@ NextEventLights::NextEventLights(const World& world) {
     for (const Light& light : world.lights()) power.push_back(mean(light_power(light, radius)));
     for (const ObjectLight& light : world.object_lights())
         power.push_back(mean(object_light_power(light)));
+    if (!world.sky().is_black()) {
+        power.push_back(mean(sky_power(world.sky(), {world.scene_center(), radius})));
+        sky = true;
+    }
     float total = 0;
     for (float& p : power) {
         if (!std::isfinite(p) || p < 0) p = 0;
@@ -37,9 +41,15 @@ float NextEvent::object_light_pdf(std::size_t index, Point3 from, Point3 q, Norm
     return pick * glint::object_light_pdf(world_.object_lights()[index], from, q, n);
 }
 
+float NextEvent::sky_pdf(Vector3 w) const {
+    if (!lights_.sky) return 0;
+    return lights_.pick->probability(lights_.pick->size() - 1) * world_.sky().pdf(w);
+}
+
 std::string NextEvent::light_name(std::size_t index) const {
     const std::size_t lights = world_.lights().size();
     if (index < lights) return "light " + std::to_string(index);
+    if (index == lights + world_.object_lights().size()) return "the sky";
     return "emitting object " + std::to_string(world_.object_lights()[index - lights].primitive);
 }
 
@@ -61,6 +71,11 @@ Color NextEvent::estimate(const SurfaceContext& c, const Bsdf& bsdf, float time,
         // leave it, so that the two agree.
         ls = sample_light_by_area(lights[index], c.sp.p, u);
         feeler_light = index;
+    } else if (index == lights.size() + world_.object_lights().size()) {
+        // The sky: a direction by its brightness, as far as shadow rays go.
+        const Vector3 w = world_.sky().sample(u, &light_pdf);
+        ls = {w, kInfinity, Color{}};
+        if (light_pdf > 0) ls.intensity = world_.sky().radiance(w) / (kPi * light_pdf);
     } else {
         const ObjectLightSample s =
             sample_object_light(world_.object_lights()[index - lights.size()], c.sp.p, u);

@@ -1,7 +1,8 @@
 // Next-event estimation for the physically based integrators: at a surface point, one light
-// picked in proportion to its power, a point drawn on it, and a shadow ray. A light of intensity
-// I_L gives irradiance pi I_L facing it (light.h), an emitting object's pi I_L being Le over the
-// density of the direction drawn, so the estimate of the light reflected towards wo is
+// picked in proportion to its power, a point drawn on it (or a direction towards the sky), and a
+// shadow ray. A light of intensity I_L gives irradiance pi I_L facing it (light.h), an emitting
+// object's or the sky's pi I_L being Le over the density of the direction drawn, so the estimate
+// of the light reflected towards wo is
 //   f(wo, L) |N.L| pi I_L shadow / pick.
 #pragma once
 
@@ -22,10 +23,12 @@ namespace glint {
 
 struct SurfaceContext;
 
-// The lights, world.lights() then world.object_lights(), by power: built once a render.
+// The lights, world.lights() then world.object_lights(), then the sky unless it is black, by
+// power: built once a render.
 struct NextEventLights {
     explicit NextEventLights(const World& world);
     std::shared_ptr<const DiscreteDistribution> pick;  // null when nothing lights the scene
+    bool sky = false;                                  // the last entry is the sky
 };
 
 // Per thread (its shadow feelers keep caches).
@@ -37,13 +40,15 @@ public:
     // The light one light sends to c through bsdf, drawing its numbers from the stream. With
     // weigh, an emitting object's sample is weighed by the power heuristic against the BSDF's
     // density for its direction (the path tracer, whose scattered rays find emitters too).
-    // With a record, its numbers go there.
+    // The sky's sample is weighed too. With a record, its numbers go there.
     Color estimate(const SurfaceContext& c, const Bsdf& bsdf, float time, SampleStream& stream,
                    RayStats& stats, bool weigh, PathVertexRecord* record);
 
     // The density per steradian, the pick included, with which estimate() from `from` draws the
     // point q (normal n) of object_lights()[index]: what a scattered ray that found it weighs.
     float object_light_pdf(std::size_t index, Point3 from, Point3 q, Normal3 n) const;
+    // The same for the sky's direction w: what a scattered ray that left the scene weighs.
+    float sky_pdf(Vector3 w) const;
     bool any() const { return lights_.pick != nullptr; }
 
 private:

@@ -62,12 +62,17 @@ Color PathIntegrator::radiance(const Ray& ray, PathState path, SampleStream& str
     if constexpr (kRecord) recorder_->begin_ray(ray, path.depth, 1);
     const auto hit = world_.intersect(ray, {0, kInfinity}, kVisibleToCameraRays);
     if (!hit) {
-        // The background is a sky that lights the scene, found by scattered rays alone.
+        // The sky, weighed against the shadow rays that could have found it.
+        const Color le = world_.sky().radiance(ray.direction);
+        const float weight =
+            path.after_delta ? 1
+                             : power_heuristic(path.bsdf_pdf, next_event_.sky_pdf(ray.direction));
+        const Color sky = le * weight;
         if constexpr (kRecord) {
-            recorder_->missed(settings.background);
-            recorder_->end_ray(settings.background);
+            recorder_->missed(sky);
+            recorder_->end_ray(sky);
         }
-        return settings.background;
+        return sky;
     }
     if (path.depth == 1) ++stats.primary_hits;
     const SurfaceContext c = surface_context(world_, ray, *hit);

@@ -49,8 +49,6 @@ void trace_photon(const World& world, const Emitters& emitters, std::uint64_t in
     const float u_pick = u.next();
     const Point2 u_position = u.next_2d(), u_direction = u.next_2d();
     const EmittedParticle e = emitters.emit(u_pick, u_position, u_direction);
-    // The sky has no shadow rays: its light comes by photons from the first surface on.
-    const bool from_sky = emitters.is_sky(u_pick);
     Color beta = e.power;
     if (is_black(beta)) return;
     const Camera& camera = world.camera();
@@ -74,7 +72,7 @@ void trace_photon(const World& world, const Emitters& emitters, std::uint64_t in
         }
         const Bsdf bsdf(bsdf_inputs(c, snell_indices(c, media, wavelength)),
                         TransportMode::importance);
-        if (bsdf.has_smooth_part() && (!direct || from_sky)) {
+        if (bsdf.has_smooth_part() && !direct) {
             out.push_back({c.sp.p, c.to_viewer, c.ng, beta});
             ++stats.photons_stored;
         }
@@ -170,11 +168,12 @@ Color PhotonIntegrator::eye_ray(const Ray& ray, int depth, const MediumStack& me
     if constexpr (kRecord) recorder_->begin_ray(ray, depth, 1);
     const auto hit = world_.intersect(ray, {0, kInfinity}, kVisibleToCameraRays);
     if (!hit) {
+        const Color sky = world_.sky().radiance(ray.direction);
         if constexpr (kRecord) {
-            recorder_->missed(settings.background);
-            recorder_->end_ray(settings.background);
+            recorder_->missed(sky);
+            recorder_->end_ray(sky);
         }
-        return settings.background;
+        return sky;
     }
     if (depth == 1) ++stats.primary_hits;
     const SurfaceContext c = surface_context(world_, ray, *hit);

@@ -1,6 +1,8 @@
 // One feeler, or with transparent shadows a chain of them from surface to surface.
 #include "glint/render/integrators/shadow_feelers.h"
 
+#include <cmath>
+
 namespace glint {
 
 float ShadowFeelers::transmittance(std::size_t light, const SurfacePoint& sp, Normal3 n,
@@ -9,7 +11,7 @@ float ShadowFeelers::transmittance(std::size_t light, const SurfacePoint& sp, No
     Ray feeler = world_.spawn_ray(sp.p, n, to_light, sp.error, time);
     // The offset origin is slightly nearer to or farther from the light; stop just short of it.
     float remaining = light_distance - distance(sp.p, feeler.origin);
-    if (light == kNoLight) {
+    if (light == kNoLight && std::isfinite(light_distance)) {
         // A point drawn on an emitting object lies on a surface that casts shadows. Aim the
         // feeler from its offset origin at that very point, or near the object's outline it
         // would pierce the surface early; and stop short of the point by the offset a ray

@@ -47,8 +47,9 @@ Color WhittedIntegrator::shade(const Ray& ray, int depth, float weight, RayStats
     const RenderSettings& settings = world_.settings();
     const auto hit = world_.intersect(ray, {0, kInfinity}, kVisibleToCameraRays);
     if (!hit) {
-        if constexpr (kRecord) recorder_->missed(settings.background);
-        return settings.background;
+        const Color sky = world_.sky().radiance(ray.direction);
+        if constexpr (kRecord) recorder_->missed(sky);
+        return sky;
     }
     if (depth == 1) ++stats.primary_hits;
 

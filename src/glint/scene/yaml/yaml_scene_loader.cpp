@@ -19,6 +19,7 @@
 #include "glint/scene/yaml/yaml_materials.h"
 #include "glint/scene/yaml/yaml_settings.h"
 #include "glint/scene/yaml/yaml_shape_reader.h"
+#include "glint/scene/yaml/yaml_sky.h"
 
 namespace glint {
 
@@ -85,7 +86,7 @@ void add_light_face(LightEntry& entry, std::size_t index, TextPosition where,
 Scene read_scene(const YamlSource& source, const ReadSandbox& sandbox, const YAML::Node& root) {
     const MapReader scene(
         source, root, Field("", "scene"), "scene",
-        {"image", "camera", "ambient", "materials", "lights", "define", "objects"});
+        {"image", "camera", "ambient", "sky", "materials", "lights", "define", "objects"});
     Scene result;
     if (const MapEntry* image = section(scene, "image")) {
         result.settings = read_image(source, image->value, scene.field("image"), sandbox.limits);
@@ -94,6 +95,19 @@ Scene read_scene(const YamlSource& source, const ReadSandbox& sandbox, const YAM
     result.camera =
         read_camera(source, scene.require("camera").value, scene.field("camera"), warnings);
     result.ambient = scene.color("ambient", result.ambient);
+    if (const MapEntry* sky = section(scene, "sky")) {
+        const MapEntry* image = scene.find("image");
+        if (image && image->value.IsMap()) {
+            if (const YAML::Node background = image->value["background"]) {
+                throw source.error_at(sky->key_node,
+                                      "a scene has a sky or a background colour, not both",
+                                      {"image.background is given at line " +
+                                           std::to_string(background.Mark().line + 1),
+                                       "the sky is what rays that leave the scene see"});
+            }
+        }
+        result.sky = read_sky(source, sandbox, sky->value, scene.field("sky"));
+    }
 
     result.sources.file = source.file_name();
     MaterialTable materials(source, sandbox, result.materials, result.sources.materials);
