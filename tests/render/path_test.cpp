@@ -42,19 +42,34 @@ TEST(PathTracing, MaxDepthCutsTheSumOfBounces) {
     EXPECT_NEAR(mean.r, 1.75, 0.01 * 1.75);
 }
 
-TEST(PathTracing, OneBounceIsTheDistributedIntegratorsDirectLighting) {
+// With one light picked by power at each point, and with every light (next_event: all), whose
+// shadow rays are one for each of the three lights where there was one in all.
+class OneBounce : public ::testing::TestWithParam<NextEventStrategy> {};
+
+TEST_P(OneBounce, IsTheDistributedIntegratorsDirectLighting) {
     // Two renders of each with different seeds; the squared difference of a pixel's two values
     // over 2 estimates its variance. Over 4 x 4 blocks the means of the two integrators must
     // agree within 5 standard errors of their difference.
-    const auto renders = [](IntegratorKind kind) {
-        const World world(directly_lit(kind));
+    std::uint64_t shadow_rays = 0;
+    const auto renders = [&](IntegratorKind kind) {
+        Scene scene = directly_lit(kind);
+        scene.settings.next_event = GetParam();
+        const World world(scene);
         RenderOptions a, b;
         a.seed = 1;
         b.seed = 2;
-        return std::pair{render(world, a).image, render(world, b).image};
+        const RenderResult first = render(world, a);
+        shadow_rays = first.rays[RayKind::shadow];
+        return std::pair{first.image, render(world, b).image};
     };
-    const auto [p1, p2] = renders(IntegratorKind::path);
     const auto [d1, d2] = renders(IntegratorKind::distributed);
+    const auto [p1, p2] = renders(IntegratorKind::path);
+    Scene one = directly_lit(IntegratorKind::path);
+    const std::uint64_t picked = render(World(one), {}).rays[RayKind::shadow];
+    if (GetParam() == NextEventStrategy::all) {
+        EXPECT_GT(double(shadow_rays), 2.5 * double(picked));
+        EXPECT_LE(shadow_rays, 3 * picked);
+    }
     int failures = 0;
     for (int by = 0; by < p1.height; by += 4)
         for (int bx = 0; bx < p1.width; bx += 4) {
@@ -78,6 +93,14 @@ TEST(PathTracing, OneBounceIsTheDistributedIntegratorsDirectLighting) {
         }
     EXPECT_EQ(failures, 0);
 }
+
+INSTANTIATE_TEST_SUITE_P(PathTracing, OneBounce,
+                         ::testing::Values(NextEventStrategy::one, NextEventStrategy::all),
+                         [](const ::testing::TestParamInfo<NextEventStrategy>& strategy) {
+                             return strategy.param == NextEventStrategy::one
+                                        ? std::string("OneLightPickedByPower")
+                                        : std::string("EveryLight");
+                         });
 
 TEST(PathTracing, AWhiteFloorBesideARedWallTurnsRed) {
     const auto redness = [](const Image& image) {

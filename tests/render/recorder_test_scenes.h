@@ -25,6 +25,8 @@ inline constexpr const char* kRecorderTestScenes[] = {
     "scenes/features/csg.yaml",
     "scenes/features/meshes.yaml",
     "scenes/features/cornell-box.yaml",
+    "scenes/features/colour-bleeding.yaml",
+    "scenes/features/sky.yaml",
 };
 
 inline std::string scene_test_name(const ::testing::TestParamInfo<const char*>& param) {

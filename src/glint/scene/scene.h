@@ -47,6 +47,10 @@ struct PhotonSettings {
     bool operator==(const PhotonSettings&) const = default;
 };
 
+// Next-event estimation of the path and photon integrators: at each surface, one light picked
+// in proportion to its power, or every light with one shadow ray each.
+enum class NextEventStrategy { one, all };
+
 struct RenderSettings {
     int width = 640;
     int height = 480;
@@ -66,6 +70,7 @@ struct RenderSettings {
     // Unset: every pixel takes samples_per_pixel samples.
     std::optional<AdaptiveSampling> adaptive;
     PhotonSettings photons;  // the photon integrator's
+    NextEventStrategy next_event = NextEventStrategy::one;
 };
 
 // The sampler and filter a render uses: the scene's, or its integrator's default (whitted: the

@@ -78,16 +78,10 @@ struct BranchRecord {
 
 // What the path tracer did at one surface point: the emission it counted and how it weighed
 // it, the one light it sampled (next-event estimation), and the direction it scattered in.
-struct PathVertexRecord {
-    Color le;                      // the surface's emission
-    float emission_weight = 1;     // the MIS weight Le counts with: 1 when seen by the eye or
-                                   // after a delta part, 0 when it only glows
-    float emission_bsdf_pdf = 0;   // the densities weighed: of the direction that found it,
-    float emission_light_pdf = 0;  // and of a shadow ray finding it (0: no light samples it)
-    // Next-event estimation.
-    bool light_sampled = false;
+// One light's sample by next-event estimation.
+struct NextEventRecord {
     std::string light;    // its name, as LightRecord's
-    float pick = 0;       // the probability the light was picked with, by power
+    float pick = 0;       // the probability the light was picked with, by power (1: every light)
     Vector3 to_light;     // L
     float distance = 0;   // to the point on the light (infinite for a directional one)
     Color irradiance;     // pi I_L: what a surface facing the light receives from it
@@ -98,6 +92,16 @@ struct PathVertexRecord {
     float mis = 1;        // the power heuristic's weight of the light sample
     float shadow = 1;     // the feeler: 1 unblocked, 0 blocked
     Color term;           // f |N.L| pi I_L shadow mis / pick: exactly what it added
+};
+
+struct PathVertexRecord {
+    Color le;                      // the surface's emission
+    float emission_weight = 1;     // the MIS weight Le counts with: 1 when seen by the eye or
+                                   // after a delta part, 0 when it only glows
+    float emission_bsdf_pdf = 0;   // the densities weighed: of the direction that found it,
+    float emission_light_pdf = 0;  // and of a shadow ray finding it (0: no light samples it)
+    // Next-event estimation: the light picked, or every light, in the order added.
+    std::vector<NextEventRecord> next_events;
     // The photon integrator's gathering: the photons found within the radius (-1: none
     // gathered here) and their estimate, exactly what it added.
     int photons = -1;

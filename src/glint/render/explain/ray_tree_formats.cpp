@@ -188,22 +188,23 @@ private:
             line(indent, "emits Le " + read(v.le) + ", counted with weight " +
                              read(v.emission_weight) + why);
         }
-        if (v.light_sampled) {
-            std::string text = "next event: " + v.light + ", picked with probability " +
-                               read(v.pick) + ": L " + read(v.to_light) + ", distance " +
-                               read(v.distance) + ", irradiance facing it pi IL " +
-                               read(v.irradiance);
-            line(indent, text);
-            std::string numbers = "BSDF f " + read(v.f) + ", |N.L| = " + read(v.cosine) +
-                                  ", BSDF pdf " + read(v.bsdf_pdf);
-            if (v.light_pdf > 0)
-                numbers += ", light pdf " + read(v.pick) + " x " + read(v.light_pdf) +
-                           ", MIS weight " + read(v.mis);
-            if (v.f == Color{})
+        for (const NextEventRecord& e : v.next_events) {
+            const std::string picked = e.pick == 1 && v.next_events.size() > 1
+                                           ? " (every light is sampled)"
+                                           : ", picked with probability " + read(e.pick);
+            line(indent, "next event: " + e.light + picked + ": L " + read(e.to_light) +
+                             ", distance " + read(e.distance) + ", irradiance facing it pi IL " +
+                             read(e.irradiance));
+            std::string numbers = "BSDF f " + read(e.f) + ", |N.L| = " + read(e.cosine) +
+                                  ", BSDF pdf " + read(e.bsdf_pdf);
+            if (e.light_pdf > 0)
+                numbers += ", light pdf " + read(e.pick) + " x " + read(e.light_pdf) +
+                           ", MIS weight " + read(e.mis);
+            if (e.f == Color{})
                 numbers += ": the BSDF sends nothing that way, no feeler";
             else
-                numbers += v.shadow == 0 ? ", shadow feeler blocked" : ", shadow feeler unblocked";
-            line(indent + 1, numbers + "; adds " + read(v.term));
+                numbers += e.shadow == 0 ? ", shadow feeler blocked" : ", shadow feeler unblocked";
+            line(indent + 1, numbers + "; adds " + read(e.term));
         }
         if (v.photons >= 0)
             line(indent, "photon map: " + std::to_string(v.photons) +
@@ -335,18 +336,18 @@ std::string path_json(const PathVertexRecord& v) {
     f.add("le", exact(v.le)).add("emission_weight", exact(v.emission_weight));
     f.add("emission_bsdf_pdf", exact(v.emission_bsdf_pdf));
     f.add("emission_light_pdf", exact(v.emission_light_pdf));
-    if (v.light_sampled) {
+    std::string next_events;
+    for (const NextEventRecord& e : v.next_events) {
         Fields light;
-        light.add("light", json_string(v.light)).add("pick", exact(v.pick));
-        light.add("to_light", exact(v.to_light)).add("distance", exact(v.distance));
-        light.add("irradiance", exact(v.irradiance)).add("f", exact(v.f));
-        light.add("cosine", exact(v.cosine)).add("light_pdf", exact(v.light_pdf));
-        light.add("bsdf_pdf", exact(v.bsdf_pdf)).add("mis", exact(v.mis));
-        light.add("shadow", exact(v.shadow)).add("term", exact(v.term));
-        f.add("next_event", light.object());
-    } else {
-        f.add("next_event", "null");
+        light.add("light", json_string(e.light)).add("pick", exact(e.pick));
+        light.add("to_light", exact(e.to_light)).add("distance", exact(e.distance));
+        light.add("irradiance", exact(e.irradiance)).add("f", exact(e.f));
+        light.add("cosine", exact(e.cosine)).add("light_pdf", exact(e.light_pdf));
+        light.add("bsdf_pdf", exact(e.bsdf_pdf)).add("mis", exact(e.mis));
+        light.add("shadow", exact(e.shadow)).add("term", exact(e.term));
+        next_events += (next_events.empty() ? "" : ", ") + light.object();
     }
+    f.add("next_event", "[" + next_events + "]");
     if (v.photons >= 0) {
         Fields photons;
         photons.add("found", std::to_string(v.photons)).add("radius", exact(v.gather_radius));

@@ -211,14 +211,14 @@ void RayTreeRecorder::path_vertex(const SurfaceContext&, const PathVertexRecord&
     // The terms evaluate() adds: the weighted emission, no ambient term, the sampled light.
     n.emission = record.le * record.emission_weight;
     n.ambient = {};
-    if (record.light_sampled) {
+    for (const NextEventRecord& next : record.next_events) {
         LightRecord light;
-        light.name = record.light;
+        light.name = next.light;
         LightSampleRecord sample;
-        sample.term = record.term;
+        sample.term = next.term;
         light.samples.push_back(sample);
-        light.value = record.term;
-        n.direct = record.term;
+        light.value = next.term;
+        n.direct += next.term;
         n.lights.push_back(std::move(light));
     }
     if (record.photons >= 0) {

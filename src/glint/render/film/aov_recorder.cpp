@@ -100,7 +100,7 @@ void AovRecorder::path_vertex(const SurfaceContext&, const PathVertexRecord& rec
     path_ = true;
     sample_.emission = record.le * record.emission_weight;
     sample_.ambient = {};
-    sample_.direct += record.term;
+    for (const NextEventRecord& next : record.next_events) sample_.direct += next.term;
     sample_.indirect += record.photon_term;  // 0 but for the photon integrator
 }
 

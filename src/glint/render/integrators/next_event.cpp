@@ -33,17 +33,23 @@ NextEventLights::NextEventLights(const World& world) {
         total += p;
     }
     if (total > 0) pick = std::make_shared<const DiscreteDistribution>(power);
+    all = world.settings().next_event == NextEventStrategy::all;
+}
+
+float NextEvent::pick(std::size_t index) const {
+    const float p = lights_.pick->probability(index);
+    return lights_.all && p > 0 ? 1 : p;
 }
 
 float NextEvent::object_light_pdf(std::size_t index, Point3 from, Point3 q, Normal3 n) const {
     if (!lights_.pick) return 0;
-    const float pick = lights_.pick->probability(world_.lights().size() + index);
-    return pick * glint::object_light_pdf(world_.object_lights()[index], from, q, n);
+    return pick(world_.lights().size() + index) *
+           glint::object_light_pdf(world_.object_lights()[index], from, q, n);
 }
 
 float NextEvent::sky_pdf(Vector3 w) const {
     if (!lights_.sky) return 0;
-    return lights_.pick->probability(lights_.pick->size() - 1) * world_.sky().pdf(w);
+    return pick(lights_.pick->size() - 1) * world_.sky().pdf(w);
 }
 
 std::string NextEvent::light_name(std::size_t index) const {
@@ -57,10 +63,26 @@ Color NextEvent::estimate(const SurfaceContext& c, const Bsdf& bsdf, float time,
                           SampleStream& stream, RayStats& stats, bool weigh,
                           PathVertexRecord* record) {
     if (!lights_.pick) return {};
-    const float u_pick = stream.next_1d();
-    const Point2 u = stream.next_2d();
-    const std::size_t index = lights_.pick->sample(u_pick);
-    const float pick = lights_.pick->probability(index);
+    if (!lights_.all) {
+        const float u_pick = stream.next_1d();
+        const Point2 u = stream.next_2d();
+        const std::size_t index = lights_.pick->sample(u_pick);
+        return estimate_light(index, pick(index), u, c, bsdf, time, stats, weigh, record);
+    }
+    // Every light, each with numbers of its own whether it sends light or not, so that the
+    // dimensions a point takes do not depend on what it sees.
+    Color sum;
+    for (std::size_t index = 0; index < lights_.pick->size(); ++index) {
+        const Point2 u = stream.next_2d();
+        if (pick(index) > 0)
+            sum += estimate_light(index, 1, u, c, bsdf, time, stats, weigh, record);
+    }
+    return sum;
+}
+
+Color NextEvent::estimate_light(std::size_t index, float pick, Point2 u, const SurfaceContext& c,
+                                const Bsdf& bsdf, float time, RayStats& stats, bool weigh,
+                                PathVertexRecord* record) {
     const auto lights = world_.lights();
     LightSample ls;
     std::size_t feeler_light = ShadowFeelers::kNoLight;
@@ -98,19 +120,19 @@ Color NextEvent::estimate(const SurfaceContext& c, const Bsdf& bsdf, float time,
         if (shadow > 0) term = f * ls.intensity * (kPi * cosine * shadow * mis / pick);
     }
     if (record) {
-        record->light_sampled = true;
-        record->light = light_name(index);
-        record->pick = pick;
-        record->to_light = ls.to_light;
-        record->distance = ls.distance;
-        record->irradiance = ls.intensity * kPi;
-        record->f = f;
-        record->cosine = cosine;
-        record->light_pdf = light_pdf;
-        record->bsdf_pdf = bsdf_pdf;
-        record->mis = mis;
-        record->shadow = shadow;
-        record->term = term;
+        NextEventRecord& r = record->next_events.emplace_back();
+        r.light = light_name(index);
+        r.pick = pick;
+        r.to_light = ls.to_light;
+        r.distance = ls.distance;
+        r.irradiance = ls.intensity * kPi;
+        r.f = f;
+        r.cosine = cosine;
+        r.light_pdf = light_pdf;
+        r.bsdf_pdf = bsdf_pdf;
+        r.mis = mis;
+        r.shadow = shadow;
+        r.term = term;
     }
     return term;
 }

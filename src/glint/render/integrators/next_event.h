@@ -1,9 +1,10 @@
 // Next-event estimation for the physically based integrators: at a surface point, one light
-// picked in proportion to its power, a point drawn on it (or a direction towards the sky), and a
-// shadow ray. A light of intensity I_L gives irradiance pi I_L facing it (light.h), an emitting
-// object's or the sky's pi I_L being Le over the density of the direction drawn, so the estimate
-// of the light reflected towards wo is
-//   f(wo, L) |N.L| pi I_L shadow / pick.
+// picked in proportion to its power (or, with image.next_event: all, every light), a point drawn
+// on it (or a direction towards the sky), and a shadow ray. A light of intensity I_L gives
+// irradiance pi I_L facing it (light.h), an emitting object's or the sky's pi I_L being Le over
+// the density of the direction drawn, so the estimate of the light reflected towards wo is
+//   f(wo, L) |N.L| pi I_L shadow / pick,
+// pick being 1 when every light is sampled.
 #pragma once
 
 #include <cstddef>
@@ -29,6 +30,7 @@ struct NextEventLights {
     explicit NextEventLights(const World& world);
     std::shared_ptr<const DiscreteDistribution> pick;  // null when nothing lights the scene
     bool sky = false;                                  // the last entry is the sky
+    bool all = false;                                  // every light at each point
 };
 
 // Per thread (its shadow feelers keep caches).
@@ -37,10 +39,11 @@ public:
     NextEvent(const World& world, const NextEventLights& lights)
         : world_(world), lights_(lights), feelers_(world, /*opaque=*/true) {}
 
-    // The light one light sends to c through bsdf, drawing its numbers from the stream. With
-    // weigh, an emitting object's sample is weighed by the power heuristic against the BSDF's
-    // density for its direction (the path tracer, whose scattered rays find emitters too).
-    // The sky's sample is weighed too. With a record, its numbers go there.
+    // The light one light (or every light) sends to c through bsdf, drawing its numbers from
+    // the stream. With weigh, an emitting object's sample is weighed by the power heuristic
+    // against the BSDF's density for its direction (the path tracer, whose scattered rays find
+    // emitters too). The sky's sample is weighed too. With a record, the numbers of each light
+    // sampled are appended there.
     Color estimate(const SurfaceContext& c, const Bsdf& bsdf, float time, SampleStream& stream,
                    RayStats& stats, bool weigh, PathVertexRecord* record);
 
@@ -52,6 +55,11 @@ public:
     bool any() const { return lights_.pick != nullptr; }
 
 private:
+    // The probability light `index` is sampled with at a point.
+    float pick(std::size_t index) const;
+    Color estimate_light(std::size_t index, float pick, Point2 u, const SurfaceContext& c,
+                         const Bsdf& bsdf, float time, RayStats& stats, bool weigh,
+                         PathVertexRecord* record);
     std::string light_name(std::size_t index) const;
 
     const World& world_;

@@ -102,10 +102,10 @@ int limited_integer(const YamlSource& source, const MapReader& map, std::string_
 
 RenderSettings read_image(const YamlSource& source, const YAML::Node& node, const Field& field,
                           const SceneLimits& limits) {
-    const MapReader map(
-        source, node, field, "image",
-        {"width", "height", "integrator", "samples", "sampler", "filter", "adaptive", "photons",
-         "shadow_rays", "max_depth", "min_weight", "background", "transparent_shadows"});
+    const MapReader map(source, node, field, "image",
+                        {"width", "height", "integrator", "samples", "sampler", "filter",
+                         "adaptive", "photons", "next_event", "shadow_rays", "max_depth",
+                         "min_weight", "background", "transparent_shadows"});
     RenderSettings s;
     s.width = map.integer("width", {1, kMaxImageSide}, s.width);
     s.height = map.integer("height", {1, kMaxImageSide}, s.height);
@@ -134,6 +134,10 @@ RenderSettings read_image(const YamlSource& source, const YAML::Node& node, cons
                               problem->notes);
     if (const MapEntry* photons = map.find("photons"))
         s.photons = read_photons(source, photons->value, map.field("photons"));
+    static constexpr std::string_view kNextEvent[] = {"all", "one"};
+    if (map.choice("next_event", kNextEvent, "next-event strategy", "next-event strategies",
+                   "one") == "all")
+        s.next_event = NextEventStrategy::all;
     s.shadow_rays = map.integer("shadow_rays", {1, kMaxShadowRays}, s.shadow_rays);
     s.max_depth = limited_integer(source, map, "max_depth", kMaxDepth, limits.max_depth,
                                   "--max-ray-depth", s.max_depth);
