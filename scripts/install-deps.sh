@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Installs the Debian 12 packages glint builds against, skipping those already present.
-# With --bench, also POV-Ray, the reference renderer of bench/spd_vs_povray.
+# With --bench, also POV-Ray and Blender, the reference renderers of bench/spd_vs_povray,
+# bench/distributed_vs_povray and bench/path_vs_cycles.
 set -euo pipefail
 
 packages=(
@@ -11,7 +12,7 @@ packages=(
     libcli11-dev libgtest-dev libgmock-dev libbenchmark-dev
     graphviz  # the tests render `glint explain --format dot` with it
 )
-[ "${1:-}" = "--bench" ] && packages+=(povray)
+[ "${1:-}" = "--bench" ] && packages+=(povray blender)
 
 missing=()
 for p in "${packages[@]}"; do
