@@ -32,9 +32,7 @@ Scene half_noisy(int most, int fewest) {
     // The floor covers x < 0 only (the image's right, as u = forward x up = -x).
     scene.objects.push_back({Box{{-10, -1, -10}, {0, 0, 10}}, 0});
     scene.objects.push_back({Box{{-10, 0, 0}, {0, 1, 0.2f}}, 0});  // a wall casting a penumbra
-    AreaLight light;
-    light.shape = RectangleLight{{-1, 3, 0}, {2, 0, 0}, {0, 0, 2}};
-    scene.lights.push_back(light);
+    scene.lights.push_back(*rectangle_light({-1, 3, 0}, {2, 0, 0}, {0, 0, 2}));
     return scene;
 }
 

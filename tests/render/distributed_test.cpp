@@ -65,9 +65,7 @@ double penumbra_by_integration(float x) {
 
 TEST(Distributed, PenumbraOfADiskLightMatchesNumericalIntegration) {
     Scene scene = floor_scene();
-    AreaLight light;
-    light.shape = DiskLight{{0, 4, 0}, {0, -1, 0}, 1};
-    scene.lights.push_back(light);
+    scene.lights.push_back(disk_light({0, 4, 0}, {0, -1, 0}, 1));
     Material occluder;
     scene.materials.push_back(occluder);
     scene.objects.push_back({Disk{{0, 2, 0}, {0, 1, 0}, 0.5f, 0}, 1});
@@ -112,9 +110,8 @@ TEST(Distributed, TinyAreaLightsLightLikeAPointLight) {
     // A point light at (1, 3, 0) gives N.L = 3 / sqrt(10) at the origin (no attenuation).
     const float expected = 3 / std::sqrt(10.0f);
     for (const AreaLight& light :
-         {AreaLight{SphereLight{{1, 3, 0}, 1e-3f}},
-          AreaLight{DiskLight{{1, 3, 0}, {0, -1, 0}, 1e-3f}},
-          AreaLight{RectangleLight{{1, 3, 0}, {1e-3f, 0, 0}, {0, 0, 1e-3f}}}}) {
+         {sphere_light({1, 3, 0}, 1e-3f), disk_light({1, 3, 0}, {0, -1, 0}, 1e-3f),
+          *rectangle_light({1, 3, 0}, {1e-3f, 0, 0}, {0, 0, 1e-3f})}) {
         Scene scene = floor_scene();
         scene.lights.push_back(light);
         EXPECT_NEAR(mean_on_floor(World(scene), 0, 0, 16), expected, 1e-3f);
@@ -125,7 +122,7 @@ TEST(Distributed, ShadowRaysPerLightAreAveraged) {
     // A sphere light half hidden by nothing: every shadow ray reaches it. With 3 shadow rays a
     // sample, the sample counts 3 shadow rays and its value stays the light's.
     Scene scene = floor_scene();
-    AreaLight light{SphereLight{{0, 3, 0}, 0.5f}};
+    AreaLight light = sphere_light({0, 3, 0}, 0.5f);
     light.shadow_rays = 3;
     scene.lights.push_back(light);
     const World world(scene);
@@ -140,7 +137,7 @@ TEST(Distributed, ShadowRaysPerLightAreAveraged) {
 
 TEST(Whitted, AreaLightIsAPointLightAtItsCentreAndEmittingObjectsOnlyGlow) {
     Scene scene = floor_scene();
-    scene.lights.push_back(AreaLight{RectangleLight{{0, 3, 4}, {2, 0, 0}, {0, 0, 2}}});
+    scene.lights.push_back(*rectangle_light({0, 3, 4}, {2, 0, 0}, {0, 0, 2}));
     Material glow;
     glow.emission = Color::gray(4);
     scene.materials.push_back(glow);

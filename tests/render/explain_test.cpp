@@ -10,6 +10,7 @@
 #include <cstring>
 #include <string>
 
+#include "glint/math/constants.h"
 #include "glint/render/explain/ray_tree_formats.h"
 #include "glint/render/render.h"
 #include "glint/scene/load_scene.h"

@@ -62,8 +62,7 @@ inline Scene directly_lit(IntegratorKind integrator) {
     point.position = {-2, 2, -1};
     point.color = Color::gray(2);
     point.attenuation = {0, 0, 1};
-    AreaLight area;
-    area.shape = RectangleLight{{0, 3, 2}, {1, 0, 0}, {0, 0, 1}};
+    AreaLight area = *rectangle_light({0, 3, 2}, {1, 0, 0}, {0, 0, 1});
     area.color = Color::gray(4);
     area.attenuation = {0, 0, 1};
     scene.lights = {point, area};

@@ -8,6 +8,7 @@
 #include <cmath>
 #include <utility>
 
+#include "glint/render/explain/explain.h"
 #include "glint/render/render.h"
 #include "glint/scene/integrator_fit.h"
 #include "glint/scene/settings_problem.h"
@@ -94,6 +95,49 @@ TEST(LightTracing, TheImageDoesNotDependOnThreadsOrTiles) {
     const RenderResult a = render(world, one), b = render(world, two);
     EXPECT_EQ(a.image.pixels, b.image.pixels);
     EXPECT_EQ(a.rays, b.rays);
+}
+
+// glint explain's report of the particles on a pixel adds up, with the eye ray's value, to the
+// pixel of a render of one sample a pixel through the one-pixel box filter.
+TEST(LightTracing, ExplainReportsTheParticlesThatLightAPixel) {
+    Scene scene = directly_lit(IntegratorKind::light);
+    scene.settings.samples_per_pixel = 1;
+    const World world(scene);
+    const Image image = render(world, {}).image;
+    int lit = 0;
+    for (int y = 0; y < scene.settings.height; y += 3)
+        for (int x = 0; x < scene.settings.width; x += 5) {
+            const RayTree tree = explain(world, {x, y, 0, 0});
+            ASSERT_TRUE(tree.particles);
+            const ParticleReport& r = *tree.particles;
+            EXPECT_EQ(r.traced, 24u * 16u);
+            EXPECT_GT(r.seen, 0u);
+            EXPECT_LE(r.seen, r.traced);
+            const Color pixel = image.at(x, y), sum = tree.sample_value + r.value;
+            EXPECT_NEAR(sum.r, pixel.r, 1e-5f + 1e-5f * pixel.r);
+            EXPECT_NEAR(sum.b, pixel.b, 1e-5f + 1e-5f * pixel.b);
+            if (r.landed == 0) continue;
+            ++lit;
+            // The largest few, largest first, each within the pixel's filter, and none beyond the
+            // pixel's whole.
+            ASSERT_FALSE(r.largest.empty());
+            EXPECT_LE(r.largest.size(), 5u);
+            for (std::size_t i = 0; i < r.largest.size(); ++i) {
+                const ParticleContribution& c = r.largest[i];
+                EXPECT_GT(c.weight, 0);
+                EXPECT_LE(c.value.r * c.weight, r.value.r * 1.0001f);
+                EXPECT_TRUE(c.light == "point light 0" || c.light == "area light 1 (rectangle)" ||
+                            c.light == "emitting object 1 (disk)")
+                    << c.light;
+                if (i > 0) {
+                    const auto share = [](const ParticleContribution& p) {
+                        return (p.value.r + p.value.g + p.value.b) * p.weight;
+                    };
+                    EXPECT_GE(share(r.largest[i - 1]), share(c));
+                }
+            }
+        }
+    EXPECT_GE(lit, 3);
 }
 
 TEST(LightTracing, ScenesItCannotRenderAreRefused) {

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <memory>
 
+#include "glint/math/constants.h"
 #include "glint/render/render.h"
 #include "global_illumination_scenes.h"
 

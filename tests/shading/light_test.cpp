@@ -52,7 +52,7 @@ TEST(Light, SpotLightIsFullInsideDarkOutsideAndSmoothBetween) {
 }
 
 TEST(Light, AreaLightSeenByWhittedIsAPointLightAtItsCentre) {
-    const AreaLight light{RectangleLight{{0, 4, 3}, {2, 0, 0}, {0, 0, 2}}, {1, 1, 1}};
+    const AreaLight light = *rectangle_light({0, 4, 3}, {2, 0, 0}, {0, 0, 2});
     const LightSample s = sample_light(light, {0, 0, 0});
     EXPECT_FLOAT_EQ(s.distance, 5);
     EXPECT_FLOAT_EQ(s.to_light.y, 0.8f);
@@ -62,9 +62,9 @@ TEST(Light, AreaLightSeenByWhittedIsAPointLightAtItsCentre) {
 
 TEST(Light, AreaLightPointsLieOnTheirShapes) {
     const Point3 p{0, 0, 0};
-    const AreaLight rectangle{RectangleLight{{0, 4, 0}, {2, 0, 0}, {0, 0, 1}}};
-    const AreaLight disk{DiskLight{{0, 4, 0}, {0, -1, 0}, 1.5f}};
-    const AreaLight sphere{SphereLight{{0, 4, 0}, 1}};
+    const AreaLight rectangle = *rectangle_light({0, 4, 0}, {2, 0, 0}, {0, 0, 1});
+    const AreaLight disk = disk_light({0, 4, 0}, {0, -1, 0}, 1.5f);
+    const AreaLight sphere = sphere_light({0, 4, 0}, 1);
     double mean_x = 0;
     for (int i = 0; i < 2000; ++i) {
         const Point2 u{random_float(i, 0, 0, 2), random_float(i, 0, 1, 2)};
@@ -90,7 +90,8 @@ TEST(Light, AreaLightPointsLieOnTheirShapes) {
 TEST(Light, AreaLightAttenuatesByTheDistanceToTheDrawnPoint) {
     // A point of the rectangle at (1, 4, 0) (u = (1, 0.5) of sides 2 and 1): d = sqrt(17),
     // 1 / (0 + 0 + d^2) = 1 / 17.
-    AreaLight light{RectangleLight{{0, 4, 0}, {2, 0, 0}, {0, 0, 1}}, {1, 1, 1}, {0, 0, 1}};
+    AreaLight light = *rectangle_light({0, 4, 0}, {2, 0, 0}, {0, 0, 1});
+    light.attenuation = {0, 0, 1};
     const LightSample s = sample_light(light, {0, 0, 0}, {0x1.fffffep-1f, 0.5f});
     EXPECT_NEAR(s.distance, std::sqrt(17.0f), 1e-5);
     EXPECT_NEAR(s.intensity.r, 1 / 17.0f, 1e-6);

@@ -48,4 +48,41 @@ SurfacePoint Box::surface_at(const Ray& ray, const ShapeHit& hit) const {
     return sp;
 }
 
+namespace {
+
+// The area of each of the two faces across `axis`.
+float face_area(const Box& b, int axis) {
+    const Vector3 size = b.max - b.min;
+    return size[(axis + 1) % 3] * size[(axis + 2) % 3];
+}
+
+}  // namespace
+
+float Box::area() const {
+    return 2 * (face_area(*this, 0) + face_area(*this, 1) + face_area(*this, 2));
+}
+
+SurfaceSample Box::sample(Point2 u) const {
+    // A face picked by its area with u.x, which is then stretched back over [0, 1).
+    const float total = area();
+    float x = u.x * total;
+    int face = 0;
+    for (; face < 5; ++face) {
+        const float a = face_area(*this, face / 2);
+        if (x < a) break;
+        x -= a;
+    }
+    const int axis = face / 2;
+    const int i = (axis + 1) % 3, j = (axis + 2) % 3;
+    const float a = face_area(*this, axis);
+    const float along_i = std::min(x / a, 0x1.fffffep-1f);
+    const bool max_side = face % 2 == 1;
+    float p[3], n[3] = {0, 0, 0};
+    p[axis] = max_side ? max[axis] : min[axis];
+    p[i] = min[i] + (max[i] - min[i]) * along_i;
+    p[j] = min[j] + (max[j] - min[j]) * u.y;
+    n[axis] = max_side ? 1.0f : -1.0f;
+    return {{p[0], p[1], p[2]}, Normal3(n[0], n[1], n[2]), 1 / total};
+}
+
 }  // namespace glint

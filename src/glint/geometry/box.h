@@ -4,6 +4,7 @@
 #include <optional>
 
 #include "glint/geometry/surface_point.h"
+#include "glint/geometry/surface_sample.h"
 #include "glint/math/bounds.h"
 #include "glint/math/interval.h"
 #include "glint/math/ray.h"
@@ -21,6 +22,10 @@ struct Box {
     std::optional<ShapeHit> intersect(const Ray& ray, Interval t_range) const;
     // uv: the point's position across the face, in [0,1]^2, along the two other axes in order.
     SurfacePoint surface_at(const Ray& ray, const ShapeHit& hit) const;
+    // Its area, and a point drawn uniformly by area from u in [0,1)^2: what lets it light a
+    // scene.
+    float area() const;
+    SurfaceSample sample(Point2 u) const;
 };
 
 }  // namespace glint

@@ -5,6 +5,7 @@
 #include <string>
 
 #include "glint/geometry/surface_point.h"
+#include "glint/geometry/surface_sample.h"
 #include "glint/math/bounds.h"
 #include "glint/math/interval.h"
 #include "glint/math/ray.h"
@@ -29,6 +30,10 @@ struct Cylinder {
     // Caps: the normal is -a at the base and +a at the top; u the same angle, v = distance from
     // the axis / radius.
     SurfacePoint surface_at(const Ray& ray, const ShapeHit& hit) const;
+    // Its area (the caps' too when capped), and a point drawn uniformly by area from u in
+    // [0,1)^2: what lets it light a scene.
+    float area() const;
+    SurfaceSample sample(Point2 u) const;
 };
 
 // Empty when the cylinder is valid, else what is wrong, e.g.

@@ -9,6 +9,7 @@
 #include "glint/geometry/axis_frame.h"
 #include "glint/geometry/near_ray.h"
 #include "glint/math/constants.h"
+#include "glint/sampling/warp.h"
 
 namespace glint {
 
@@ -67,6 +68,22 @@ std::string describe_problem(const Disk& disk) {
             << " with radius " << disk.radius;
     }
     return out.str();
+}
+
+float Disk::area() const { return kPi * (radius * radius - inner_radius * inner_radius); }
+
+SurfaceSample Disk::sample(Point2 u) const {
+    Vector3 s, t;
+    orthonormal_basis(to_vector(normal), s, t);
+    if (inner_radius == 0) {
+        // Shirley and Chiu's concentric map keeps a stratified pattern's strata compact.
+        const Point2 q = sample_uniform_disk(u);
+        return {center + (s * q.x + t * q.y) * radius, normal, 1 / area()};
+    }
+    const float r2 =
+        inner_radius * inner_radius + u.x * (radius * radius - inner_radius * inner_radius);
+    const float r = std::sqrt(r2), phi = 2 * kPi * u.y;
+    return {center + (s * std::cos(phi) + t * std::sin(phi)) * r, normal, 1 / area()};
 }
 
 }  // namespace glint

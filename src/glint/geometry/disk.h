@@ -6,6 +6,7 @@
 #include <string>
 
 #include "glint/geometry/surface_point.h"
+#include "glint/geometry/surface_sample.h"
 #include "glint/math/bounds.h"
 #include "glint/math/interval.h"
 #include "glint/math/ray.h"
@@ -27,6 +28,10 @@ struct Disk {
     // normal (axis_frame(normal), see below) / 2pi in [0, 1); v runs from the inner edge (the
     // centre when there is no hole) at 0 to the rim at 1.
     SurfacePoint surface_at(const Ray& ray, const ShapeHit& hit) const;
+    // Its area, and a point drawn uniformly by area from u in [0,1)^2: what lets it light a
+    // scene.
+    float area() const;
+    SurfaceSample sample(Point2 u) const;
 };
 
 // Empty when the disk is valid, else what is wrong, e.g. "disk radius must be > 0, got -1".

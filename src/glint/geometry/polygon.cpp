@@ -8,6 +8,8 @@
 #include <utility>
 #include <vector>
 
+#include "glint/sampling/warp.h"
+
 namespace glint {
 
 namespace {
@@ -336,6 +338,59 @@ SurfacePoint Polygon::surface_at(const Ray& ray, const ShapeHit& hit) const {
     orthonormal_basis(to_vector(normal), s, t);
     sp.uv = {dot(sp.p - vertices[0], s), dot(sp.p - vertices[0], t)};
     return sp;
+}
+
+bool is_convex(const Polygon& polygon) {
+    const auto& v = polygon.vertices;
+    const std::size_t n = v.size();
+    bool left = false, right = false;
+    for (std::size_t i = 0; i < n; ++i) {
+        const float turn = dot(polygon.normal, cross(v[(i + 1) % n] - v[i], v[(i + 2) % n] - v[i]));
+        left |= turn > 0;
+        right |= turn < 0;
+    }
+    return !(left && right);
+}
+
+float Polygon::area() const { return 0.5f * length(newell_normal(vertices)); }
+
+namespace {
+
+// Twice the area of the fan's triangle (v0, v[i], v[i + 1]).
+float fan_double_area(const std::vector<Point3>& v, std::size_t i) {
+    return length(cross(v[i] - v[0], v[i + 1] - v[0]));
+}
+
+bool is_parallelogram(const std::vector<Point3>& v) {
+    if (v.size() != 4) return false;
+    const Vector3 gap = (v[0] - v[1]) + (v[2] - v[3]);  // zero when v0 + v2 = v1 + v3
+    return length(gap) <= 1e-5f * (length(v[1] - v[0]) + length(v[3] - v[0]));
+}
+
+}  // namespace
+
+SurfaceSample Polygon::sample(Point2 u) const {
+    const auto& v = vertices;
+    if (is_parallelogram(v)) {
+        const Vector3 e1 = v[1] - v[0], e2 = v[3] - v[0];
+        return {v[0] + e1 * u.x + e2 * u.y, normal, 1 / length(cross(e1, e2))};
+    }
+    // A fan triangle picked by its area with u.x, which is then stretched back over [0, 1).
+    float total = 0;
+    for (std::size_t i = 1; i + 1 < v.size(); ++i) total += fan_double_area(v, i);
+    // Collinear runs of vertices make empty fans, which are never picked.
+    float x = u.x * total, a = 0;
+    std::size_t i = 0;
+    for (std::size_t k = 1; k + 1 < v.size(); ++k) {
+        const float area_k = fan_double_area(v, k);
+        if (!(area_k > 0)) continue;
+        i = k;
+        a = area_k;
+        if (x < a) break;
+        x -= a;
+    }
+    const Point2 b = sample_uniform_triangle({std::min(x / a, 0x1.fffffep-1f), u.y});
+    return {v[0] + (v[i] - v[0]) * b.y + (v[i + 1] - v[0]) * (1 - b.x - b.y), normal, 2 / total};
 }
 
 }  // namespace glint

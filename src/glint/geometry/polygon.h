@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "glint/geometry/surface_point.h"
+#include "glint/geometry/surface_sample.h"
 #include "glint/math/bounds.h"
 #include "glint/math/interval.h"
 #include "glint/math/ray.h"
@@ -78,7 +79,17 @@ struct Polygon {
     // uv: the point's position in the plane, in scene units, along two perpendicular in-plane
     // axes (orthonormal_basis of the normal), measured from vertices[0].
     SurfacePoint surface_at(const Ray& ray, const ShapeHit& hit) const;
+    // Its area, half the length of Newell's vector area; and, for a convex polygon only, a point
+    // drawn uniformly by area from u in [0,1)^2, which lets it light a scene: a parallelogram
+    // (a rectangle light) bilinearly, which keeps a stratified pattern's strata, any other by
+    // its fan of triangles from vertex 0.
+    float area() const;
+    SurfaceSample sample(Point2 u) const;
 };
+
+// Whether the polygon turns the same way at every vertex (collinear runs allowed): what
+// Polygon::sample needs.
+bool is_convex(const Polygon& polygon);
 
 // Vertices may stray from their common plane by this fraction of the polygon's bounding-box
 // diagonal (rounding in files that print 3 to 6 digits), as measured from the plane of the others.

@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "glint/math/constants.h"
+#include "glint/sampling/warp.h"
 
 namespace glint {
 
@@ -45,6 +46,55 @@ SurfacePoint Sphere::surface_at(const Ray& ray, const ShapeHit& hit, Uv uv) cons
     sp.uv = {(phi < 0 ? phi + 2 * kPi : phi) / (2 * kPi),
              std::acos(std::clamp(-unit.y, -1.0f, 1.0f)) / kPi};
     return sp;
+}
+
+float Sphere::area() const { return 4 * kPi * radius * radius; }
+
+SurfaceSample Sphere::sample(Point2 u) const {
+    const Vector3 d = sample_uniform_sphere(u);
+    return {center + d * radius, Normal3(d), 1 / area()};
+}
+
+namespace {
+
+// Whether `from` lies far enough outside the sphere for it to fill a cone of directions there.
+bool sees_a_cone(const Sphere& s, Point3 from) {
+    return length_squared(s.center - from) > s.radius * s.radius * 1.0001f;
+}
+
+// 1 - cos of the half-angle of that cone, written so that it keeps its digits when the sphere
+// looks small: sin^2 / (1 + cos).
+float one_minus_cos_max(const Sphere& s, Point3 from) {
+    const float sin2_max = s.radius * s.radius / length_squared(s.center - from);
+    return sin2_max / (1 + std::sqrt(1 - sin2_max));
+}
+
+}  // namespace
+
+SurfaceSample Sphere::sample_seen_from(Point3 from, Point2 u) const {
+    if (!sees_a_cone(*this, from)) return sample(u);
+    const Vector3 to_center = center - from;
+    const float d2 = length_squared(to_center), r2 = radius * radius;
+    const float d = std::sqrt(d2);
+    const float cos_max = std::sqrt(1 - r2 / d2);
+    const Vector3 w = from_frame(sample_uniform_cone(u, cos_max), to_center / d);
+    // The near point along w, from the distance of the line to the centre measured directly.
+    const float b = dot(w, to_center);
+    const float t = b - std::sqrt(std::max(0.0f, r2 - length_squared(to_center - w * b)));
+    const Point3 p = from + w * t;
+    const Vector3 normal = normalize(p - center);
+    // pdf by solid angle 1 / (2 pi (1 - cos_max)), turned into one by area.
+    const float cos_at_point = std::abs(dot(normal, w));
+    return {p, Normal3(normal), cos_at_point / (2 * kPi * one_minus_cos_max(*this, from) * t * t)};
+}
+
+float Sphere::pdf_seen_from(Point3 from, Point3 q) const {
+    if (!sees_a_cone(*this, from)) return 1 / area();
+    const Vector3 w = q - from;
+    const float t2 = length_squared(w);
+    if (!(t2 > 0)) return 0;
+    const float cos_at_point = std::abs(dot(normalize(q - center), w)) / std::sqrt(t2);
+    return cos_at_point / (2 * kPi * one_minus_cos_max(*this, from) * t2);
 }
 
 }  // namespace glint

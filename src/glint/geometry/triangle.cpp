@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "glint/geometry/watertight_triangle.h"
+#include "glint/sampling/warp.h"
 
 namespace glint {
 
@@ -36,6 +37,15 @@ SurfacePoint Triangle::surface_at(const Ray&, const ShapeHit& hit) const {
 float double_area(const Triangle& triangle) {
     const auto& v = triangle.vertices;
     return length(cross(v[1] - v[0], v[2] - v[0]));
+}
+
+float Triangle::area() const { return 0.5f * double_area(*this); }
+
+SurfaceSample Triangle::sample(Point2 u) const {
+    const auto& [v0, v1, v2] = vertices;
+    const Point2 b = sample_uniform_triangle(u);
+    return {v0 + (v1 - v0) * b.y + (v2 - v0) * (1 - b.x - b.y),
+            Normal3(normalize(cross(v1 - v0, v2 - v0))), 1 / area()};
 }
 
 }  // namespace glint

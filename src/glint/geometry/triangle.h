@@ -5,6 +5,7 @@
 #include <optional>
 
 #include "glint/geometry/surface_point.h"
+#include "glint/geometry/surface_sample.h"
 #include "glint/math/bounds.h"
 #include "glint/math/interval.h"
 #include "glint/math/ray.h"
@@ -21,6 +22,10 @@ struct Triangle {
     std::optional<ShapeHit> intersect(const Ray& ray, Interval t_range) const;
     // The normal is normalize((v1 - v0) x (v2 - v0)); uv interpolates the vertex uvs.
     SurfacePoint surface_at(const Ray& ray, const ShapeHit& hit) const;
+    // Its area, and a point drawn uniformly by area from u in [0,1)^2: what lets it light a
+    // scene.
+    float area() const;
+    SurfaceSample sample(Point2 u) const;
 };
 
 // The watertight test (watertight_triangle.h) on the triangle (v0, v1, v2): t, and the

@@ -252,4 +252,12 @@ SurfacePoint TriangleMesh::surface_at(const Ray&, const ShapeHit& hit) const {
     return sp;
 }
 
+float TriangleMesh::area() const {
+    double sum = 0;
+    for (const auto& tri : data->triangles)
+        sum += 0.5 * double(length(cross(data->positions[tri[1]] - data->positions[tri[0]],
+                                         data->positions[tri[2]] - data->positions[tri[0]])));
+    return float(sum);
+}
+
 }  // namespace glint

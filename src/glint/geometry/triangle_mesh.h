@@ -99,6 +99,9 @@ struct TriangleMesh {
     // normals when there are any (turned to the normal's side); uv interpolates the vertex uvs,
     // or is the barycentric (u, v) without them.
     SurfacePoint surface_at(const Ray& ray, const ShapeHit& hit) const;
+    // The sum of its triangles' areas. Points are drawn on it through its triangles, picked by
+    // area from a table that whoever samples it keeps (SurfaceSampler).
+    float area() const;
 };
 
 // The watertight test (as Triangle's) on the mesh's triangle `index`; two-sided.

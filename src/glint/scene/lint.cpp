@@ -77,8 +77,7 @@ void camera_inside(const Scene& scene, Warnings& out) {
 std::optional<Point3> light_position(const Light& light) {
     if (const auto* p = std::get_if<PointLight>(&light)) return p->position;
     if (const auto* s = std::get_if<SpotLight>(&light)) return s->position;
-    if (const auto* a = std::get_if<AreaLight>(&light))
-        return std::visit([](const auto& shape) { return shape.center; }, a->shape);
+    if (const auto* a = std::get_if<AreaLight>(&light)) return a->center;
     return std::nullopt;
 }
 

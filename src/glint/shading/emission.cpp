@@ -33,22 +33,7 @@ Point3 entry_point(Vector3 direction, Point2 u, const SceneSphere& scene) {
 
 // A point drawn uniformly by area on an area light's shape.
 Point3 point_on(const AreaLight& light, Point2 u) {
-    struct On {
-        Point2 u;
-        Point3 operator()(const SphereLight& s) const {
-            return s.center + sample_uniform_sphere(u) * s.radius;
-        }
-        Point3 operator()(const DiskLight& d) const {
-            Vector3 a, b;
-            orthonormal_basis(to_vector(d.normal), a, b);
-            const Point2 q = sample_uniform_disk(u);
-            return d.center + (a * q.x + b * q.y) * d.radius;
-        }
-        Point3 operator()(const RectangleLight& r) const {
-            return r.center + r.u * (u.x - 0.5f) + r.v * (u.y - 0.5f);
-        }
-    };
-    return std::visit(On{u}, light.shape);
+    return std::visit([u](const auto& shape) { return shape.sample(u).p; }, light.shape);
 }
 
 }  // namespace

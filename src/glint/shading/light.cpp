@@ -22,39 +22,6 @@ float spot_factor(const SpotLight& light, Vector3 to_light) {
     return t * t * (3 - 2 * t);
 }
 
-Point3 center_of(const AreaLight& light) {
-    return std::visit([](const auto& shape) { return shape.center; }, light.shape);
-}
-
-// A point of the light's shape, as seen from p.
-struct DrawPoint {
-    Point3 p;
-    Point2 u;
-
-    Point3 operator()(const SphereLight& s) const {
-        const Vector3 to_center = s.center - p;
-        const float d2 = length_squared(to_center);
-        const float r2 = s.radius * s.radius;
-        if (d2 <= r2) return s.center + sample_uniform_sphere(u) * s.radius;  // p inside
-        // Uniform over the cone of directions the sphere fills, then the near side along it.
-        const float d = std::sqrt(d2);
-        const float cos_max = std::sqrt(std::max(0.0f, 1 - r2 / d2));
-        const Vector3 w = from_frame(sample_uniform_cone(u, cos_max), to_center / d);
-        const float b = dot(w, to_center);
-        const float t = b - std::sqrt(std::max(0.0f, r2 - (d2 - b * b)));
-        return p + w * t;
-    }
-    Point3 operator()(const DiskLight& disk) const {
-        Vector3 s, t;
-        orthonormal_basis(to_vector(disk.normal), s, t);
-        const Point2 q = sample_uniform_disk(u);
-        return disk.center + (s * q.x + t * q.y) * disk.radius;
-    }
-    Point3 operator()(const RectangleLight& r) const {
-        return r.center + r.u * (u.x - 0.5f) + r.v * (u.y - 0.5f);
-    }
-};
-
 struct AtCenter {
     Point3 p;
 
@@ -70,11 +37,42 @@ struct AtCenter {
         return {-light.direction, kInfinity, light.color};
     }
     LightSample operator()(const AreaLight& light) const {
-        return light_from_point(p, center_of(light), light.color, light.attenuation);
+        return light_from_point(p, light.center, light.color, light.attenuation);
     }
 };
 
 }  // namespace
+
+AreaLight sphere_light(Point3 center, float radius) {
+    AreaLight light;
+    light.shape = Sphere{center, radius};
+    light.center = center;
+    return light;
+}
+
+AreaLight disk_light(Point3 center, Normal3 normal, float radius) {
+    AreaLight light;
+    light.shape = Disk{center, normal, radius, 0};
+    light.center = center;
+    return light;
+}
+
+std::optional<AreaLight> rectangle_light(Point3 center, Vector3 u, Vector3 v) {
+    const Vector3 hu = u * 0.5f, hv = v * 0.5f;
+    auto polygon =
+        make_polygon({center - hu - hv, center + hu - hv, center + hu + hv, center - hu + hv});
+    if (!std::holds_alternative<Polygon>(polygon)) return std::nullopt;
+    AreaLight light;
+    light.shape = std::get<Polygon>(std::move(polygon));
+    light.center = center;
+    return light;
+}
+
+Point3 point_seen_from(const AreaLight& light, Point3 p, Point2 u) {
+    if (const auto* sphere = std::get_if<Sphere>(&light.shape))
+        return sphere->sample_seen_from(p, u).p;
+    return std::visit([u](const auto& shape) { return shape.sample(u).p; }, light.shape);
+}
 
 LightSample sample_light_at_center(const Light& light, Point3 p) {
     return std::visit(AtCenter{p}, light);
@@ -82,8 +80,7 @@ LightSample sample_light_at_center(const Light& light, Point3 p) {
 
 LightSample sample_light(const Light& light, Point3 p, Point2 u) {
     if (const auto* area = std::get_if<AreaLight>(&light))
-        return light_from_point(p, std::visit(DrawPoint{p, u}, area->shape), area->color,
-                                area->attenuation);
+        return light_from_point(p, point_seen_from(*area, p, u), area->color, area->attenuation);
     return sample_light(light, p);
 }
 

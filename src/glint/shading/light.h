@@ -3,8 +3,12 @@
 // in the scene; objects that emit light are lights of their own (object_light.h).
 #pragma once
 
+#include <optional>
 #include <variant>
 
+#include "glint/geometry/disk.h"
+#include "glint/geometry/polygon.h"
+#include "glint/geometry/sphere.h"
 #include "glint/math/color.h"
 #include "glint/math/vector.h"
 
@@ -40,33 +44,30 @@ struct DirectionalLight {
     Color color{1, 1, 1};
 };
 
-// The shapes of area lights. Each emits to both sides.
-struct SphereLight {
-    Point3 center;
-    float radius = 1;  // > 0
-};
-struct DiskLight {
-    Point3 center;
-    Normal3 normal{0, -1, 0};  // unit
-    float radius = 1;          // > 0
-};
-struct RectangleLight {
-    Point3 center;
-    Vector3 u{1, 0, 0}, v{0, 0, 1};  // the sides, full length; not parallel
-};
-
 // A light with an extent, for soft shadows (Cook, Porter and Carpenter 1984). Its colour is that
 // of a point light spread over the shape, as POV-Ray's area lights do: a point drawn on it lights
 // a surface like a point light of the whole colour there, so that averaging over the points gives
 // the penumbra, and a small area light looks like a point light. A sphere is sampled by the cone
-// of directions it fills as seen from the surface, a disk and a rectangle uniformly by area.
+// of directions it fills as seen from the surface, a disk and a rectangle uniformly by area: each
+// shape draws its own points (Sphere::sample_seen_from, Disk::sample, Polygon::sample). Each
+// emits to both sides. Made by sphere_light, disk_light and rectangle_light below.
 struct AreaLight {
-    std::variant<SphereLight, DiskLight, RectangleLight> shape;
+    std::variant<Sphere, Disk, Polygon> shape;  // the polygon a rectangle
+    Point3 center;                              // where Whitted's ray tracer puts it
     Color color{1, 1, 1};
     Attenuation attenuation;
     // Shadow rays a sample sends to it; 0 takes the scene's image.shadow_rays.
     int shadow_rays = 0;
 };
+
+AreaLight sphere_light(Point3 center, float radius);
+AreaLight disk_light(Point3 center, Normal3 normal, float radius);  // normal unit
+// The rectangle center + a u + b v for a and b in [-1/2, 1/2]; nothing when u and v make none
+// (zero, parallel or too large to measure).
+std::optional<AreaLight> rectangle_light(Point3 center, Vector3 u, Vector3 v);
+
+// The point of the light's shape that a shadow ray from p aims at, drawn from u in [0,1)^2.
+Point3 point_seen_from(const AreaLight& light, Point3 p, Point2 u);
 
 using Light = std::variant<PointLight, SpotLight, DirectionalLight, AreaLight>;
 

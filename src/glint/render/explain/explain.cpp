@@ -3,6 +3,7 @@
 
 #include <optional>
 
+#include "glint/render/explain/particle_report.h"
 #include "glint/render/explain/ray_tree_recorder.h"
 #include "glint/render/eye_sample.h"
 #include "glint/render/integrators/integrator_family.h"
@@ -48,6 +49,8 @@ RayTree explain(const World& world, const PixelSample& which) {
         RayStats stats;
         return integrator.trace_eye_ray(eye.ray, stream, stats);
     });
+    if (settings.integrator == IntegratorKind::light)
+        tree.particles = particle_report(world, which);
     return tree;
 }
 

@@ -149,6 +149,29 @@ struct RayNode {
     Color value;                           // exactly what the ray brought back
 };
 
+// A particle of the light integrator that landed on the explained pixel.
+struct ParticleContribution {
+    int from_x = 0, from_y = 0;  // the pixel whose sample sent it
+    std::size_t emitter = 0;     // of the emitters, lights then emitting objects then the sky
+    std::string light;           // the emitter's name, as LightRecord's ("the sky")
+    int bounces = 0;             // surfaces it met before the one joined to the eye
+    std::uint32_t object = 0;    // that surface
+    Point3 point;
+    Point2 film;       // where the eye sees the point, in pixels
+    Color value;       // what it sends to the eye, before the film's filter
+    float weight = 0;  // its weight in the pixel: the filter's there, over the particles a pixel
+};
+
+// The light integrator's particles of one sample pass (one sent by each pixel's sample) and what
+// they bring to the explained pixel: the part of its colour its own eye ray cannot find.
+struct ParticleReport {
+    std::uint64_t traced = 0;  // particles sent
+    std::uint64_t seen = 0;    // of them, those joined to the eye somewhere on the film
+    std::uint64_t landed = 0;  // contributions (a particle may add one a bounce) on this pixel
+    Color value;               // their sum, each times its weight: the pass's particle share
+    std::vector<ParticleContribution> largest;  // the largest few, largest first
+};
+
 struct RayTree {
     int x = 0, y = 0, sample = 0;
     std::uint64_t seed = 0;
@@ -160,6 +183,8 @@ struct RayTree {
     std::vector<RandomDraw> draws;  // the camera's: pixel, lens, time
     std::vector<RayNode> nodes;     // nodes[0] is the eye ray, children after their parents
     Color sample_value;             // what the integrator returned for the sample
+    // The light integrator's particles on the pixel, which come besides the sample's value.
+    std::optional<ParticleReport> particles;
 };
 
 // The sample's colour worked out again from the tree's recorded terms, combined as the

@@ -90,10 +90,33 @@ public:
                            : " (the tree's terms give " + read(evaluated) + ")"));
         out_ << "\n";
         if (!t.nodes.empty()) node(0, 0);
+        if (t.particles) particles(*t.particles);
         return out_.str();
     }
 
 private:
+    void particles(const ParticleReport& r) {
+        out_ << "\n";
+        line(0, "particles of this sample pass (the light integrator's light from the lights):");
+        line(1, std::to_string(r.traced) + " sent, one by each pixel's sample; " +
+                    std::to_string(r.seen) + " reached the eye somewhere on the film");
+        line(1, std::to_string(r.landed) + (r.landed == 1 ? " contribution" : " contributions") +
+                    " landed on this pixel, adding " + read(r.value) + "; with the eye ray's " +
+                    read(tree_.sample_value) + ", the pass gives the pixel " +
+                    read(r.value + tree_.sample_value));
+        if (!r.largest.empty()) line(1, "the largest:");
+        for (const ParticleContribution& c : r.largest) {
+            const std::string path = c.bounces == 0 ? "straight"
+                                     : c.bounces == 1
+                                         ? "after 1 bounce"
+                                         : "after " + std::to_string(c.bounces) + " bounces";
+            line(2, "from " + c.light + " (sent by pixel (" + std::to_string(c.from_x) + ", " +
+                        std::to_string(c.from_y) + ")), " + path + " to object " +
+                        std::to_string(c.object) + " at " + read(c.point) + ": " + read(c.value) +
+                        " landing at " + read(c.film) + ", weight " + read(c.weight) + " here");
+        }
+    }
+
     void line(int indent, const std::string& text) {
         out_ << std::string(std::size_t(indent) * 2, ' ') << text << "\n";
     }
@@ -449,6 +472,22 @@ std::string ray_tree_json(const RayTree& tree) {
     for (std::size_t i = 0; i < tree.nodes.size(); ++i)
         rays += "  " + node_json(tree, int(i)) + (i + 1 < tree.nodes.size() ? ",\n" : "\n");
     f.add("rays", rays + "]");
+    if (const auto& r = tree.particles) {
+        Fields p;
+        p.add("traced", std::to_string(r->traced)).add("seen", std::to_string(r->seen));
+        p.add("landed", std::to_string(r->landed)).add("value", exact(r->value));
+        p.add("largest", array(r->largest, [](const ParticleContribution& c) {
+                  Fields one;
+                  one.add("from_pixel",
+                          "[" + std::to_string(c.from_x) + ", " + std::to_string(c.from_y) + "]");
+                  one.add("light", json_string(c.light)).add("emitter", std::to_string(c.emitter));
+                  one.add("bounces", std::to_string(c.bounces))
+                      .add("object", std::to_string(c.object));
+                  one.add("point", exact(c.point)).add("film", exact(c.film));
+                  return one.add("value", exact(c.value)).add("weight", exact(c.weight)).object();
+              }));
+        f.add("particles", p.object());
+    }
     return f.object() + "\n";
 }
 

@@ -65,11 +65,11 @@ void RayTreeRecorder::hit(const SurfaceContext& c, const Hit& hit) {
 
 void RayTreeRecorder::stop(StopReason reason) { current().stop = reason; }
 
-std::string RayTreeRecorder::light_name(std::size_t light, bool object_light) const {
+std::string light_name(const World& world, std::size_t light, bool object_light) {
     if (object_light) {
-        const std::uint32_t object = world_.object_lights()[light].primitive;
+        const std::uint32_t object = world.object_lights()[light].primitive;
         return "emitting object " + std::to_string(object) + " (" +
-               std::string(shape_name(world_.primitives()[object].shape)) + ")";
+               std::string(shape_name(world.primitives()[object].shape)) + ")";
     }
     const std::string index = " " + std::to_string(light);
     return std::visit(
@@ -79,13 +79,13 @@ std::string RayTreeRecorder::light_name(std::size_t light, bool object_light) co
             if constexpr (std::is_same_v<L, SpotLight>) return "spot light" + index;
             if constexpr (std::is_same_v<L, DirectionalLight>) return "directional light" + index;
             if constexpr (std::is_same_v<L, AreaLight>) {
-                const char* shape = std::holds_alternative<SphereLight>(l.shape) ? "sphere"
-                                    : std::holds_alternative<DiskLight>(l.shape) ? "disk"
-                                                                                 : "rectangle";
+                const char* shape = std::holds_alternative<Sphere>(l.shape) ? "sphere"
+                                    : std::holds_alternative<Disk>(l.shape) ? "disk"
+                                                                            : "rectangle";
                 return "area light" + index + " (" + shape + ")";
             }
         },
-        world_.lights()[light]);
+        world.lights()[light]);
 }
 
 LightSampleRecord RayTreeRecorder::sample_record(std::size_t light, const SurfaceContext& c,
@@ -123,7 +123,7 @@ LightSampleRecord RayTreeRecorder::sample_record(std::size_t light, const Surfac
 void RayTreeRecorder::light(std::size_t light, const SurfaceContext& c, const LightSample& ls,
                             float time, Color term) {
     LightRecord record;
-    record.name = light_name(light, false);
+    record.name = light_name(world_, light, false);
     record.light = light;
     record.samples.push_back(sample_record(light, c, ls, time, term));
     record.value = term;
@@ -133,7 +133,7 @@ void RayTreeRecorder::light(std::size_t light, const SurfaceContext& c, const Li
 
 void RayTreeRecorder::begin_light(std::size_t light, bool object_light) {
     LightRecord record;
-    record.name = light_name(light, object_light);
+    record.name = light_name(world_, light, object_light);
     record.light = light;
     record.object_light = object_light;
     record.averaged = true;

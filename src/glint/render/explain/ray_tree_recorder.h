@@ -15,6 +15,10 @@
 
 namespace glint {
 
+// A light's name in the tree: "point light 0", "area light 1 (disk)", "emitting object 4
+// (sphere)"; `light` indexes world.object_lights() when object_light, else world.lights().
+std::string light_name(const World& world, std::size_t light, bool object_light);
+
 class RayTreeRecorder final : public RayRecorder {
 public:
     // Records into `tree`, whose nodes it appends (the first ray traced is the eye ray).
@@ -43,7 +47,6 @@ private:
     BranchRecord& branch_of(RayKind kind);
     LightSampleRecord sample_record(std::size_t light, const SurfaceContext& c,
                                     const LightSample& ls, float time, Color term);
-    std::string light_name(std::size_t light, bool object_light) const;
 
     const World& world_;
     RayTree& tree_;

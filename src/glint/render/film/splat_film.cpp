@@ -65,6 +65,17 @@ void SplatFilm::splat(Point2 p, Color c) {
     }
 }
 
+float SplatFilm::weight(Point2 p, int x, int y) const {
+    if (!(p.x >= 0 && p.x < float(width_) && p.y >= 0 && p.y < float(height_))) return 0;
+    if (x < 0 || x >= width_ || y < 0 || y >= height_) return 0;
+    const float r = filter_.radius();
+    const float dx = float(x) + 0.5f - p.x, dy = float(y) + 0.5f - p.y;
+    // As splat: the pixels whose centres lie within -r < d <= r.
+    if (!(dx > -r && dx <= r && dy > -r && dy <= r)) return 0;
+    return filter_.evaluate(dy) / row_norm_[std::size_t(y)] *
+           (filter_.evaluate(dx) / column_norm_[std::size_t(x)]);
+}
+
 Image SplatFilm::resolve(float scale) const {
     Image image(width_, height_);
     const double factor = double(scale) / kUnit;

@@ -24,6 +24,9 @@ public:
     // Adds c at film position p (pixels), weighted by the filter over each pixel it reaches.
     // Positions outside the image add nothing. Thread-safe. c must be valid (is_valid_sample).
     void splat(Point2 p, Color c);
+    // The weight with which splat(p, c) adds c to pixel (x, y): the filter's there over its
+    // integral; 0 for a pixel beyond the filter's reach or a position outside the image.
+    float weight(Point2 p, int x, int y) const;
 
     // The sums times scale (1 over the particles per pixel).
     Image resolve(float scale) const;

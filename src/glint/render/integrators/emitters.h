@@ -23,6 +23,9 @@ public:
     // A particle of the emitter u_pick picks, its power divided by the probability it was
     // picked with: the flux it carries for the whole scene. any() must hold.
     EmittedParticle emit(float u_pick, Point2 u_position, Point2 u_direction) const;
+    // The index of the emitter u_pick picks: world.lights(), then world.object_lights(), then
+    // the sky.
+    std::size_t picked(float u_pick) const { return pick_->sample(u_pick); }
 
 private:
     const World& world_;

@@ -9,13 +9,12 @@
 #include "glint/render/integrators/path.h"
 #include "glint/render/integrators/roulette.h"
 #include "glint/render/integrators/surface_context.h"
+#include "glint/sampling/warp.h"
 #include "glint/shading/bsdf.h"
 #include "glint/shading/cie_1931.h"
 #include "glint/shading/spectrum.h"
 
 namespace glint {
-
-namespace {}  // namespace
 
 Color LightIntegrator::trace_eye_ray(const Ray& ray, SampleStream& stream, RayStats& stats) {
     stats.count(RayKind::primary);
@@ -149,6 +148,9 @@ void LightIntegrator::trace_particle(SampleStream& stream, SplatFilm& film, RayS
                         if (is_valid_sample(value)) {
                             film.splat(to_eye->film, value);
                             seen = true;
+                            if (observer_) [[unlikely]]
+                                (*observer_)({shared_.emitters.picked(u_pick), depth - 1,
+                                              c.primitive, c.sp.p, to_eye->film, value});
                         }
                     }
                 }

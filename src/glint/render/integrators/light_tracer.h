@@ -9,6 +9,8 @@
 // price of tracing light forwards.
 #pragma once
 
+#include <functional>
+
 #include "glint/math/color.h"
 #include "glint/math/ray.h"
 #include "glint/render/film/splat_film.h"
@@ -20,6 +22,17 @@
 #include "glint/sampling/sampler.h"
 
 namespace glint {
+
+// One contribution of a particle to the film, as it is splatted: for `glint explain`.
+struct ParticleSplat {
+    std::size_t emitter = 0;  // of the Emitters' list, which sent it
+    int bounces = 0;          // surfaces it met before this one
+    std::uint32_t object = 0;
+    Point3 point;
+    Point2 film;  // where it lands, in pixels
+    Color value;  // what it adds there, before the filter
+};
+using ParticleObserver = std::function<void(const ParticleSplat&)>;
 
 class LightIntegrator {
 public:
@@ -39,6 +52,8 @@ public:
     void trace_particle(SampleStream& stream, SplatFilm& film, RayStats& stats);
 
     void record_into(RayRecorder* recorder) { recorder_ = recorder; }
+    // Tells `observer` of each contribution trace_particle splats.
+    void observe_particles(const ParticleObserver* observer) { observer_ = observer; }
 
 private:
     template <bool kRecord>
@@ -48,6 +63,7 @@ private:
     const Shared& shared_;
     ShadowFeelers feelers_;
     RayRecorder* recorder_ = nullptr;
+    const ParticleObserver* observer_ = nullptr;
 };
 
 }  // namespace glint

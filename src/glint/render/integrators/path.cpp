@@ -8,6 +8,7 @@
 
 #include "glint/render/integrators/roulette.h"
 #include "glint/render/integrators/surface_context.h"
+#include "glint/sampling/warp.h"
 #include "glint/shading/cie_1931.h"
 #include "glint/shading/spectrum.h"
 

@@ -96,42 +96,42 @@ LightEntry parse_directional(const MapReader& map) {
 }
 
 // What every area light takes besides its shape.
-LightEntry area_light(const MapReader& map, decltype(AreaLight::shape) shape, Shape face) {
-    AreaLight light;
-    light.shape = shape;
+LightEntry area_light(const MapReader& map, AreaLight light) {
     light.color = read_emitted(map);
     light.attenuation = read_attenuation(map);
     light.shadow_rays = map.integer("shadow_rays", {1, kMaxShadowRays}, 0);
     LightEntry entry{light, std::nullopt};
-    if (map.boolean("visible", true)) entry.visible_shape = std::move(face);
+    if (map.boolean("visible", true))
+        entry.visible_shape =
+            std::visit([](const auto& shape) { return Shape(shape); }, light.shape);
     return entry;
 }
 
 LightEntry parse_sphere(const MapReader& map) {
-    const SphereLight sphere{map.point("center"), map.number("radius", kPositive)};
-    return area_light(map, sphere, Sphere{sphere.center, sphere.radius});
+    const Point3 center = map.point("center");
+    return area_light(map, sphere_light(center, map.number("radius", kPositive)));
 }
 
 LightEntry parse_disk(const MapReader& map) {
-    const DiskLight disk{map.point("center"), Normal3(map.direction("normal", Vector3{0, -1, 0})),
-                         map.number("radius", kPositive)};
-    return area_light(map, disk, Disk{disk.center, disk.normal, disk.radius, 0});
+    const Point3 center = map.point("center");
+    const Normal3 normal(map.direction("normal", Vector3{0, -1, 0}));
+    return area_light(map, disk_light(center, normal, map.number("radius", kPositive)));
 }
 
 LightEntry parse_rectangle(const MapReader& map) {
-    RectangleLight rectangle{map.point("center"), map.vector("u"), map.vector("v")};
-    const Vector3 normal = cross(rectangle.u, rectangle.v);
-    if (!(length_squared(normal) > 0) || !std::isfinite(length_squared(normal))) {
+    const Point3 center = map.point("center");
+    const Vector3 u = map.vector("u"), v = map.vector("v");
+    const Vector3 normal = cross(u, v);
+    std::optional<AreaLight> light;
+    if (length_squared(normal) > 0 && std::isfinite(length_squared(normal)))
+        light = rectangle_light(center, u, v);
+    if (!light) {
         throw map.source().error_at(
             map.require("v").value,
             "rectangle light sides u and v must be non-zero and not parallel, got u = " +
-                format_vector(rectangle.u) + " and v = " + format_vector(rectangle.v));
+                format_vector(u) + " and v = " + format_vector(v));
     }
-    const Vector3 hu = rectangle.u * 0.5f, hv = rectangle.v * 0.5f;
-    const Point3 c = rectangle.center;
-    auto face =
-        make_polygon({c - hu - hv, c + hu - hv, c + hu + hv, c - hu + hv}, InsideTest::even_odd);
-    return area_light(map, rectangle, std::get<Polygon>(std::move(face)));
+    return area_light(map, std::move(*light));
 }
 
 struct LightType {
