@@ -4,7 +4,7 @@
 #include "glint/render/integrators/glossy_lobe.h"
 #include "glint/render/integrators/local_lighting.h"
 #include "glint/render/integrators/surface_context.h"
-#include "glint/sampling/warp.h"
+#include "glint/render/integrators/wavelength_split.h"
 
 namespace glint {
 
@@ -83,15 +83,13 @@ Color DistributedIntegrator::shade(const Ray& ray, int depth, float weight, Samp
     }
     // A dispersive surface splits a ray that carries every wavelength: the refracted ray takes
     // the sample's wavelength, and what it brings back counts by that wavelength's colour.
+    const WavelengthSplit split =
+        split_wavelength(m, ray.wavelength, [&] { return stream.get_1d(kWavelengthDimension); });
     Ray parent = ray;
-    Color spectral_weight{1, 1, 1};
-    if (m.dispersion.model != DispersionModel::none && m.transmit > 0 && ray.wavelength == 0) {
-        const float u = stream.get_1d(kWavelengthDimension);
-        parent.wavelength = sample_visible_wavelength(u);
-        spectral_weight =
-            wavelength_to_rgb_weight(parent.wavelength) / visible_wavelength_pdf(parent.wavelength);
-        if constexpr (kRecord) recorder_->wavelength(u, parent.wavelength);
-    }
+    parent.wavelength = split.wavelength;
+    const Color spectral_weight = split.weight;
+    if constexpr (kRecord)
+        if (split.drawn) recorder_->wavelength(split.u, parent.wavelength);
     const Branches b = branches_at(c, ray.direction, media, parent.wavelength);
     if constexpr (kRecord)
         recorder_->branches(c, b, media, parent.wavelength, ray.direction, weight);

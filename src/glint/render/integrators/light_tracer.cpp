@@ -9,10 +9,8 @@
 #include "glint/render/integrators/path.h"
 #include "glint/render/integrators/roulette.h"
 #include "glint/render/integrators/surface_context.h"
-#include "glint/sampling/warp.h"
+#include "glint/render/integrators/wavelength_split.h"
 #include "glint/shading/bsdf.h"
-#include "glint/shading/cie_1931.h"
-#include "glint/shading/spectrum.h"
 
 namespace glint {
 
@@ -57,14 +55,12 @@ Color LightIntegrator::eye_ray(const Ray& ray, int depth, const MediumStack& med
     // share exact on average.
     // A dispersive surface splits the ray as in the path tracer.
     const Material& m = *c.material;
-    float wavelength = ray.wavelength;
-    Color spectral_weight{1, 1, 1};
-    if (m.dispersion.model != DispersionModel::none && m.transmit > 0 && wavelength == 0) {
-        const float u = stream.get_1d(kWavelengthDimension);
-        wavelength = sample_visible_wavelength(u);
-        spectral_weight = wavelength_to_rgb_weight(wavelength) / visible_wavelength_pdf(wavelength);
-        if constexpr (kRecord) recorder_->wavelength(u, wavelength);
-    }
+    const WavelengthSplit split =
+        split_wavelength(m, ray.wavelength, [&] { return stream.get_1d(kWavelengthDimension); });
+    const float wavelength = split.wavelength;
+    const Color spectral_weight = split.weight;
+    if constexpr (kRecord)
+        if (split.drawn) recorder_->wavelength(split.u, wavelength);
     const Bsdf bsdf(bsdf_inputs(c, snell_indices(c, media, wavelength)));
     const float u_lobe = stream.next_1d();
     const Point2 u = stream.next_2d();
@@ -120,12 +116,10 @@ void LightIntegrator::trace_particle(SampleStream& stream, SplatFilm& film, RayS
         if (!hit) break;
         const SurfaceContext c = surface_context(world_, ray, *hit);
         const Material& m = *c.material;
-        Color spectral_weight{1, 1, 1};
-        if (m.dispersion.model != DispersionModel::none && m.transmit > 0 && wavelength == 0) {
-            wavelength = sample_visible_wavelength(stream.next_1d());
-            spectral_weight =
-                wavelength_to_rgb_weight(wavelength) / visible_wavelength_pdf(wavelength);
-        }
+        const WavelengthSplit split =
+            split_wavelength(m, wavelength, [&] { return stream.next_1d(); });
+        wavelength = split.wavelength;
+        const Color spectral_weight = split.weight;
         const Bsdf bsdf(bsdf_inputs(c, snell_indices(c, media, wavelength)),
                         TransportMode::importance);
         // Joined to the eye through a point of its lens.

@@ -8,9 +8,7 @@
 
 #include "glint/render/integrators/roulette.h"
 #include "glint/render/integrators/surface_context.h"
-#include "glint/sampling/warp.h"
-#include "glint/shading/cie_1931.h"
-#include "glint/shading/spectrum.h"
+#include "glint/render/integrators/wavelength_split.h"
 
 namespace glint {
 
@@ -103,14 +101,12 @@ Color PathIntegrator::radiance(const Ray& ray, PathState path, SampleStream& str
 
     // A dispersive surface splits a ray that carries every wavelength, as in the distributed
     // integrator: what refracts takes the sample's wavelength and counts by its colour.
-    float wavelength = ray.wavelength;
-    Color spectral_weight{1, 1, 1};
-    if (m.dispersion.model != DispersionModel::none && m.transmit > 0 && wavelength == 0) {
-        const float u = stream.get_1d(kWavelengthDimension);
-        wavelength = sample_visible_wavelength(u);
-        spectral_weight = wavelength_to_rgb_weight(wavelength) / visible_wavelength_pdf(wavelength);
-        if constexpr (kRecord) recorder_->wavelength(u, wavelength);
-    }
+    const WavelengthSplit split =
+        split_wavelength(m, ray.wavelength, [&] { return stream.get_1d(kWavelengthDimension); });
+    const float wavelength = split.wavelength;
+    const Color spectral_weight = split.weight;
+    if constexpr (kRecord)
+        if (split.drawn) recorder_->wavelength(split.u, wavelength);
     const Bsdf bsdf(bsdf_inputs(c, snell_indices(c, path.media, wavelength)));
     if (bsdf.has_smooth_part())
         color += next_event_.estimate(c, bsdf, ray.time, stream, stats, /*weigh=*/true,

@@ -13,10 +13,8 @@
 #include "glint/math/constants.h"
 #include "glint/render/integrators/roulette.h"
 #include "glint/render/integrators/surface_context.h"
+#include "glint/render/integrators/wavelength_split.h"
 #include "glint/sampling/random.h"
-#include "glint/sampling/warp.h"
-#include "glint/shading/cie_1931.h"
-#include "glint/shading/spectrum.h"
 
 namespace glint {
 
@@ -64,12 +62,9 @@ void trace_photon(const World& world, const Emitters& emitters, std::uint64_t in
         if (!hit) break;
         const SurfaceContext c = surface_context(world, ray, *hit);
         const Material& m = *c.material;
-        Color spectral_weight{1, 1, 1};
-        if (m.dispersion.model != DispersionModel::none && m.transmit > 0 && wavelength == 0) {
-            wavelength = sample_visible_wavelength(u.next());
-            spectral_weight =
-                wavelength_to_rgb_weight(wavelength) / visible_wavelength_pdf(wavelength);
-        }
+        const WavelengthSplit split = split_wavelength(m, wavelength, [&] { return u.next(); });
+        wavelength = split.wavelength;
+        const Color spectral_weight = split.weight;
         const Bsdf bsdf(bsdf_inputs(c, snell_indices(c, media, wavelength)),
                         TransportMode::importance);
         if (bsdf.has_smooth_part() && !direct) {
@@ -192,14 +187,12 @@ Color PhotonIntegrator::eye_ray(const Ray& ray, int depth, const MediumStack& me
     };
     if (depth > settings.max_depth) return end(StopReason::max_depth);
     const Material& m = *c.material;
-    float wavelength = ray.wavelength;
-    Color spectral_weight{1, 1, 1};
-    if (m.dispersion.model != DispersionModel::none && m.transmit > 0 && wavelength == 0) {
-        const float u = stream.get_1d(kWavelengthDimension);
-        wavelength = sample_visible_wavelength(u);
-        spectral_weight = wavelength_to_rgb_weight(wavelength) / visible_wavelength_pdf(wavelength);
-        if constexpr (kRecord) recorder_->wavelength(u, wavelength);
-    }
+    const WavelengthSplit split =
+        split_wavelength(m, ray.wavelength, [&] { return stream.get_1d(kWavelengthDimension); });
+    const float wavelength = split.wavelength;
+    const Color spectral_weight = split.weight;
+    if constexpr (kRecord)
+        if (split.drawn) recorder_->wavelength(split.u, wavelength);
     const Bsdf bsdf(bsdf_inputs(c, snell_indices(c, media, wavelength)));
     if (bsdf.has_smooth_part()) {
         // The smooth parts: the lights straight, the rest from the photons.
