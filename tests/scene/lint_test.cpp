@@ -238,5 +238,36 @@ TEST(Lint, WarningsPointToTheLineOfTheirSubject) {
     EXPECT_FALSE(of_rule(scene_with(kBall, ""), "no-lights")[0].location);
 }
 
+// The image settings of some integrators warn, at their place, under the others.
+TEST(Lint, PhotonsAndNextEventWarnUnderIntegratorsThatIgnoreThem) {
+    const auto parse = [](const std::string& integrator, const std::string& settings) {
+        return parse_yaml_scene("image: {integrator: " + integrator + ", " + settings + "}\n" +
+                                    "camera: {from: [0, 1, -5], at: [0, 0, 0], fov: 40}\n"
+                                    "lights: [{type: point, position: [0, 5, -3]}]\n" +
+                                    kBall,
+                                "lint.yaml");
+    };
+    const auto photons = of_rule(parse("path", "photons: {per_pass: 1000}"), "unused-setting");
+    ASSERT_EQ(photons.size(), 1u);
+    EXPECT_EQ(photons[0].subject, "image.photons");
+    EXPECT_EQ(photons[0].message,
+              "the path integrator sends no photons: image.photons is for integrator: photon");
+    ASSERT_TRUE(photons[0].location);
+    EXPECT_EQ(photons[0].location->line, 1);
+    EXPECT_EQ(photons[0].location->column, 36);  // the value, after "photons: "
+    const auto next_event = of_rule(parse("distributed", "next_event: all"), "unused-setting");
+    ASSERT_EQ(next_event.size(), 1u);
+    EXPECT_EQ(next_event[0].subject, "image.next_event");
+    EXPECT_NE(next_event[0].message.find("samples every light"), std::string::npos);
+    EXPECT_NE(of_rule(parse("light", "next_event: one"), "unused-setting")[0].message.find(
+                  "samples no lights"),
+              std::string::npos);
+    // Where they act, nothing.
+    EXPECT_TRUE(
+        of_rule(parse("photon", "photons: {per_pass: 1000}, next_event: all"), "unused-setting")
+            .empty());
+    EXPECT_TRUE(of_rule(parse("path", "next_event: all"), "unused-setting").empty());
+}
+
 }  // namespace
 }  // namespace glint

@@ -227,6 +227,31 @@ void out_of_view(const Scene& scene, Warnings& out) {
     }
 }
 
+// image.photons is read by the photon integrator alone, image.next_event by the integrators
+// that sample lights by next-event estimation (path, photon).
+void unused_setting(const Scene& scene, Warnings& out) {
+    const IntegratorKind kind = scene.settings.integrator;
+    const std::string name(integrator_info(kind).name);
+    const auto at = [&](const std::optional<TextPosition>& p) -> std::optional<SourceLocation> {
+        if (!p) return std::nullopt;
+        return SourceLocation{scene.sources.file, p->line, p->column};
+    };
+    if (scene.sources.photons && kind != IntegratorKind::photon)
+        out.push_back({"unused-setting", "image.photons",
+                       "the " + name +
+                           " integrator sends no photons: image.photons is for "
+                           "integrator: photon",
+                       at(scene.sources.photons)});
+    if (scene.sources.next_event && kind != IntegratorKind::path && kind != IntegratorKind::photon)
+        out.push_back({"unused-setting", "image.next_event",
+                       "the " + name + " integrator " +
+                           (kind == IntegratorKind::light
+                                ? std::string("joins particles to the eye and samples no lights")
+                                : std::string("samples every light at every point")) +
+                           ": image.next_event is for the path and photon integrators",
+                       at(scene.sources.next_event)});
+}
+
 }  // namespace
 
 std::string object_subject(const Scene& scene, std::size_t index) {
@@ -244,6 +269,7 @@ std::vector<LintWarning> lint_scene(const Scene& scene) {
     ior(scene, out);
     unused_material(scene, out);
     out_of_view(scene, out);
+    unused_setting(scene, out);
     return out;
 }
 

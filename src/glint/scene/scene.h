@@ -103,6 +103,8 @@ struct SceneSources {
     std::string file;
     std::vector<TextPosition> materials, lights;
     LargeVector<TextPosition> objects;
+    // The image settings only some integrators read, where the file gives them.
+    std::optional<TextPosition> photons, next_event;
     // Every file the scene read besides its own (meshes, material libraries, glTF buffers,
     // textures), resolved, in the order first read; filled by load_scene.
     std::vector<std::filesystem::path> files_read;

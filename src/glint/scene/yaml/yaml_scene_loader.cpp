@@ -90,6 +90,10 @@ Scene read_scene(const YamlSource& source, const ReadSandbox& sandbox, const YAM
     Scene result;
     if (const MapEntry* image = section(scene, "image")) {
         result.settings = read_image(source, image->value, scene.field("image"), sandbox.limits);
+        if (const YAML::Node photons = image->value["photons"])
+            result.sources.photons = text_position(photons.Mark());
+        if (const YAML::Node next_event = image->value["next_event"])
+            result.sources.next_event = text_position(next_event.Mark());
     }
     std::vector<std::string> warnings;
     result.camera =
