@@ -46,6 +46,22 @@ TEST(Bsdf, LambertIsKdColourOverPi) {
     EXPECT_NEAR(bsdf.pdf(Vector3{0, 0, 1}), 1 / kPiD, 1e-6);
 }
 
+// Veach's correction for shading normals, worked: ng = +z, ns = (0.6, 0, 0.8), wo = +z and
+// wi = (0.8, 0, 0.6): |wo.ns| |wi.ng| / (|wo.ng| |wi.ns|) = 0.8 x 0.6 / (1 x 0.96) = 1/2.
+TEST(Bsdf, ImportanceScattersByTheAdjointsShadingNormalCorrection) {
+    BsdfInputs in = inputs();
+    in.wo = {0, 0, 1};
+    in.n = Normal3{0.6f, 0, 0.8f};
+    in.kd = 1;
+    in.reflect = 0;
+    const Vector3 wi{0.8f, 0, 0.6f};
+    EXPECT_NEAR(Bsdf(in).eval(wi).r, 1 / kPiD, 1e-6);
+    EXPECT_NEAR(Bsdf(in, TransportMode::importance).eval(wi).r, 0.5 / kPiD, 1e-6);
+    // Where the shading normal is the geometric one, importance scatters as radiance does.
+    in.n = in.ng;
+    EXPECT_EQ(Bsdf(in, TransportMode::importance).eval(wi), Bsdf(in).eval(wi));
+}
+
 TEST(Bsdf, TheHighlightIsLafortuneAndWillemsNormalisedPhong) {
     // ks (n+2)/(2 pi) cos^n(alpha): n = 10, alpha = 20 degrees from the mirror direction.
     BsdfInputs in = inputs();

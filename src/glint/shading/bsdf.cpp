@@ -78,14 +78,27 @@ float Bsdf::glossy_f(Vector3 wi, Vector3 axis, float exponent, float weight) con
     return weight * phong_lobe_pdf(c, exponent) / cos_end;
 }
 
+// Veach (1997, 5.3): with a shading normal the adjoint BSDF is not the BSDF with its directions
+// swapped; importance scatters by f(wi, wo) |wo.ns| |wi.ng| / (|wo.ng| |wi.ns|), so that
+// particles light a smooth-shaded surface as the eye's paths find it lit.
+float Bsdf::adjoint_factor(Vector3 wi) const {
+    const Normal3 &ns = in_.n, &ng = in_.ng;
+    if (mode_ == TransportMode::radiance || (ns.x == ng.x && ns.y == ng.y && ns.z == ng.z))
+        return 1;
+    const float below = std::abs(dot(in_.wo, to_vector(ng))) * std::abs(dot(wi, to_vector(ns)));
+    if (!(below > 0)) return 0;
+    return std::abs(dot(in_.wo, to_vector(ns))) * std::abs(dot(wi, to_vector(ng))) / below;
+}
+
 Color Bsdf::eval(Vector3 wi) const {
     if (reflects(wi)) {
         Color f = diffuse_f(wi) + Color::gray(highlight_f(wi));
         if (!reflect_delta_) f += Color::gray(glossy_f(wi, mirror_, reflect_exponent_, reflect_));
-        return f;
+        return f * adjoint_factor(wi);
     }
     if (transmit_delta_) return {};
-    return Color::gray(glossy_f(wi, refracted_, transmit_exponent_, transmit_) * compression_);
+    return Color::gray(glossy_f(wi, refracted_, transmit_exponent_, transmit_) * compression_ *
+                       adjoint_factor(wi));
 }
 
 float Bsdf::lobe_pdf(BsdfLobe lobe, Vector3 wi) const {
@@ -145,7 +158,7 @@ std::optional<BsdfSample> Bsdf::sample(float u_lobe, Point2 u) const {
         s.delta = true;
         s.pdf = pick_[l];
         const float w = s.transmitted ? transmit_ * compression_ : reflect_;
-        s.weight = Color::gray(w / pick_[l]);
+        s.weight = Color::gray(w / pick_[l] * adjoint_factor(s.wi));
         return s;
     }
     s.f = eval(s.wi);

@@ -11,7 +11,8 @@
 //              with fresnel, kt F of it reflects (Fresnel's equations for a dielectric), and
 //              on total internal reflection all of it does
 // When kd + ks + kr + kt exceeds 1 all four are scaled down to sum to 1. Radiance refracted into
-// a denser medium is compressed by (n1/n2)^2 (Veach 1997, 5.2); importance is not.
+// a denser medium is compressed by (n1/n2)^2 (Veach 1997, 5.2); importance is not, and with a
+// shading normal importance scatters by the adjoint's correction (Veach 1997, 5.3).
 #pragma once
 
 #include <array>
@@ -82,6 +83,8 @@ private:
     // The part's density for wi (0 for a delta part or the wrong side).
     float lobe_pdf(BsdfLobe lobe, Vector3 wi) const;
     bool reflects(Vector3 wi) const { return dot(wi, in_.ng) > 0; }
+    // For importance, the shading normal's correction of the adjoint (1 for radiance).
+    float adjoint_factor(Vector3 wi) const;
 
     BsdfInputs in_;
     TransportMode mode_;
