@@ -35,6 +35,9 @@ void add_image_options(CLI::App& command, ImageOptions& c) {
     command.add_option("--filter", c.filter, "Reconstruction filter with its default radius")
         ->check(CLI::IsMember(names(filter_names())));
     command
+        .add_option("--shadows", c.shadows, "Shadow feelers or shadow maps, overriding the scene's")
+        ->check(CLI::IsMember(names(kShadowMethodNames)));
+    command
         .add_option("--max-depth", c.max_depth, "Deepest level of the ray tree (eye rays are 1)")
         ->check(whole_number(1, kMaxDepth));
 }
@@ -53,6 +56,7 @@ std::string image_options_arguments(const ImageOptions& o) {
     word("--integrator", o.integrator);
     word("--sampler", o.sampler);
     word("--filter", o.filter);
+    word("--shadows", o.shadows);
     number("--max-depth", o.max_depth);
     return line;
 }
@@ -81,6 +85,8 @@ void apply_image_options(const ImageOptions& c, RenderSettings& s) {
         filter.radius = default_filter_radius(filter.kind);
         s.filter = filter;
     }
+    if (!c.shadows.empty())
+        s.shadows = c.shadows == "map" ? ShadowMethod::map : ShadowMethod::feelers;
     if (c.spp) s.samples_per_pixel = *c.spp;
     if (c.max_depth) s.max_depth = *c.max_depth;
     // The scene file's own checks, on what the options made of its settings.

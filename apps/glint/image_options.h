@@ -15,6 +15,7 @@ struct ImageOptions {
     std::string integrator;  // empty: the scene's
     std::string sampler;     // empty: the scene's (or its integrator's default)
     std::string filter;      // empty: likewise; else a filter's name with its default radius
+    std::string shadows;     // empty: the scene's; else feelers or map
 };
 
 void add_image_options(CLI::App& command, ImageOptions& options);
@@ -25,7 +26,8 @@ std::string image_options_arguments(const ImageOptions& options);
 // The scene's settings with the options applied; a lone width or height keeps the scene's
 // aspect ratio. Throws UsageError for an image over the limits or settings that a scene file
 // could not hold either (settings_problem: a sample count the sampler cannot take, adaptive
-// sampling with the regular sampler or below its min_samples).
+// sampling with the regular sampler or below its min_samples, shadow maps for an integrator that
+// traces its shadows).
 void apply_image_options(const ImageOptions& options, RenderSettings& settings);
 
 }  // namespace glint::cli

@@ -107,6 +107,9 @@ void print_summary(const std::string& output, const RenderSettings& s, const Ren
             std::printf("  (%s hit)", with_thousands(rays.primary_hits).c_str());
         std::printf("\n");
     }
+    if (rays.shadow_map_lookups > 0)
+        std::printf("  shadow-map lookups %7s  (in place of shadow feelers)\n",
+                    with_thousands(rays.shadow_map_lookups).c_str());
     if (rays.photons_stored > 0)
         std::printf("  photons    %15s  (%s stored)\n", with_thousands(rays.particles).c_str(),
                     with_thousands(rays.photons_stored).c_str());

@@ -29,7 +29,8 @@ std::string stats_json(const RenderReport& report) {
     }
     json << "    \"particles\": " << r.rays.particles << ",\n"
          << "    \"particles_seen\": " << r.rays.particles_seen << ",\n"
-         << "    \"photons_stored\": " << r.rays.photons_stored << ",\n";
+         << "    \"photons_stored\": " << r.rays.photons_stored << ",\n"
+         << "    \"shadow_map_lookups\": " << r.rays.shadow_map_lookups << ",\n";
     json << "    \"total\": " << r.rays.total() << "\n"
          << "  },\n"
          << "  \"mrays_per_second\": " << mrays << ",\n"

@@ -633,6 +633,26 @@ TEST_F(Cli, OptionsCannotGetRoundTheSceneFilesChecksOfAdaptiveSampling) {
     EXPECT_EQ(ok.exit_code, 0) << ok.err;
 }
 
+// --shadows map goes through the same check as the scene's shadows: map.
+TEST_F(Cli, ShadowMapsFromTheCommandLineAreCheckedAsTheScenesAre) {
+    const Outcome path =
+        run_glint("render " + scene("features/cornell-box.yaml") + " --shadows map -q -o p.png");
+    EXPECT_EQ(path.exit_code, 2);
+    EXPECT_NE(path.err.find("with --shadows map: shadow maps are for the whitted and distributed "
+                            "integrators, not path"),
+              std::string::npos)
+        << path.err;
+    const Outcome glass = run_glint("render " + scene("features/transparent-shadows.yaml") +
+                                    " --shadows map -q -o g.png");
+    EXPECT_EQ(glass.exit_code, 2);
+    EXPECT_NE(glass.err.find("transparent shadows need shadow feelers"), std::string::npos)
+        << glass.err;
+    const Outcome ok = run_glint("render " + scene("features/shadows.yaml") +
+                                 " --shadows map --width 32 -o ok.png");
+    EXPECT_EQ(ok.exit_code, 0) << ok.err;
+    EXPECT_NE(ok.out.find("shadow-map lookups"), std::string::npos) << ok.out;
+}
+
 // The samples image: the counts themselves in a float format; in a PNG a linear ramp of grey,
 // the 8-bit value 255 count / most (not sRGB-encoded, which would show half the samples as 73%).
 TEST_F(Cli, TheSamplesImageIsALinearRampOfTheCounts) {

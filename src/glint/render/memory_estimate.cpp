@@ -108,6 +108,12 @@ MemoryEstimate estimate_render_memory(const Scene& scene, AccelKind accel,
     // sorted into the grid (three copies at most), and two buckets a photon.
     if (s.integrator == IntegratorKind::photon)
         e.film += std::uint64_t(s.photons.per_pass) * (3 * sizeof(Photon) + 2 * 4 + 8);
+    // Shadow maps: six faces of depths a light (one for a directional light; counted as six).
+    if (s.shadows == ShadowMethod::map) {
+        const std::uint64_t face = std::uint64_t(s.shadow_map.resolution) *
+                                   std::uint64_t(s.shadow_map.resolution) * sizeof(float);
+        e.acceleration += std::uint64_t(scene.lights.size()) * 6 * face;
+    }
     return e;
 }
 

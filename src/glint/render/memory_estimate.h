@@ -16,7 +16,7 @@ namespace glint {
 
 struct MemoryEstimate {
     std::uint64_t references = 0;    // primitives, each mesh's triangles counted one by one
-    std::uint64_t acceleration = 0;  // bytes: the structure over the references
+    std::uint64_t acceleration = 0;  // bytes: the structure over the references, shadow maps
     // Bytes: the render's state (the film's sums, each pixel's samples taken and, under adaptive
     // sampling, its error), the images made from it and the buffers of the files written.
     std::uint64_t film = 0;

@@ -33,6 +33,8 @@ struct RayStats {
     // The photon integrator's photons that came to rest in its maps (it counts those it
     // emitted as particles).
     std::uint64_t photons_stored = 0;
+    // Shadows looked up in shadow maps instead of traced as feelers (shadows: map).
+    std::uint64_t shadow_map_lookups = 0;
 
     void count(RayKind kind) { ++traced[std::size_t(kind)]; }
     std::uint64_t operator[](RayKind kind) const { return traced[std::size_t(kind)]; }
@@ -49,6 +51,7 @@ struct RayStats {
         particles += o.particles;
         particles_seen += o.particles_seen;
         photons_stored += o.photons_stored;
+        shadow_map_lookups += o.shadow_map_lookups;
         return *this;
     }
     bool operator==(const RayStats&) const = default;

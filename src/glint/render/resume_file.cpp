@@ -353,6 +353,7 @@ void encode_state(const RenderState& s, ByteWriter& out) {
     out.u64(s.rays.particles);
     out.u64(s.rays.particles_seen);
     out.u64(s.rays.photons_stored);
+    out.u64(s.rays.shadow_map_lookups);
     out.u64(s.bad_samples.count);
     const SampleLocation first = s.bad_samples.first.value_or(SampleLocation{});
     out.u8(s.bad_samples.first ? 1 : 0);
@@ -384,7 +385,7 @@ void encode_state(const RenderState& s, ByteWriter& out) {
 
 // The bytes encode_state writes for s, worked out without writing them.
 std::uint64_t encoded_size(const RenderState& s) {
-    return 4 + 4 + s.tiles_done.size() + kRayKindCount * 8 + 4 * 8 + 8 + 1 + 3 * 4 + 8 +
+    return 4 + 4 + s.tiles_done.size() + kRayKindCount * 8 + 5 * 8 + 8 + 1 + 3 * 4 + 8 +
            s.samples.size() * 4 + s.errors.size() * (4 + 8 + 8) + s.film.box_sums().size() * 4 * 4 +
            s.film.sums().size() * 4 * 16 + (s.splats ? s.splats->size() * 8 : 0);
 }
@@ -399,6 +400,7 @@ void decode_state(ByteReader& in, RenderState& s, const std::string& corrupt) {
     s.rays.particles = in.u64();
     s.rays.particles_seen = in.u64();
     s.rays.photons_stored = in.u64();
+    s.rays.shadow_map_lookups = in.u64();
     s.bad_samples.count = in.u64();
     const bool has_first = in.u8() != 0;
     SampleLocation first;

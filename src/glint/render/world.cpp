@@ -6,6 +6,7 @@
 #include <cmath>
 #include <utility>
 
+#include "glint/math/constants.h"
 #include "glint/render/integrators/eye_media.h"
 
 namespace glint {
@@ -75,6 +76,29 @@ World::World(Scene scene, AccelKind accel, ShadowAcceleration shadows)
     // light buffers list) get their own BVH now rather than on a render thread's first ray.
     for (const Primitive& p : primitives_)
         prepare_mesh_bvhs(p.shape, any_buffer && LightBuffer::tests_whole(p.shape));
+    if (settings_.shadows == ShadowMethod::map) build_shadow_maps();
+}
+
+void World::build_shadow_maps() {
+    const ShadowMapSettings& s = settings_.shadow_map;
+    for (const Light& light : lights_) {
+        std::optional<ShadowMap> map;
+        if (const auto* point = std::get_if<PointLight>(&light))
+            map = ShadowMap::cube(point->position, 0, *aggregate_, s);
+        else if (const auto* spot = std::get_if<SpotLight>(&light))
+            map = ShadowMap::cube(spot->position, 0, *aggregate_, s);
+        else if (const auto* area = std::get_if<AreaLight>(&light))
+            // Seen from its centre, as wide as the disk of its area.
+            map = ShadowMap::cube(
+                area->center,
+                std::visit([](const auto& shape) { return std::sqrt(shape.area() / kPi); },
+                           area->shape),
+                *aggregate_, s);
+        else if (const auto* sun = std::get_if<DirectionalLight>(&light);
+                 sun && !aggregate_->bounds().is_empty())
+            map = ShadowMap::parallel(sun->direction, aggregate_->bounds(), *aggregate_, s);
+        shadow_maps_.push_back(std::move(map));
+    }
 }
 
 void World::add_object_light(const SceneObject& object, std::uint32_t primitive) {

@@ -14,6 +14,7 @@
 #include "glint/camera/camera.h"
 #include "glint/math/huge_page_allocator.h"
 #include "glint/render/integrators/medium_stack.h"
+#include "glint/render/shadow_map.h"
 #include "glint/scene/scene.h"
 #include "glint/shading/object_light.h"
 
@@ -74,6 +75,10 @@ public:
     // within t_range. last_occluder is the caller's (per thread) memory of the primitive that
     // blocked this light last: with a light buffer and the occluder cache on, it is tested
     // first and updated.
+    // With shadows: map, light's shadow map (none for lights that have none).
+    const ShadowMap* shadow_map(std::size_t light) const {
+        return light < shadow_maps_.size() && shadow_maps_[light] ? &*shadow_maps_[light] : nullptr;
+    }
     bool occluded_towards(std::size_t light, const Ray& ray, Interval t_range,
                           std::uint32_t& last_occluder) const;
 
@@ -104,6 +109,7 @@ public:
 
 private:
     void add_object_light(const SceneObject& object, std::uint32_t primitive);
+    void build_shadow_maps();
 
     RenderSettings settings_;
     Camera camera_;
@@ -119,6 +125,7 @@ private:
     std::unique_ptr<Aggregate> aggregate_;    // over primitives_
     ShadowAcceleration shadows_;
     std::vector<std::unique_ptr<LightBuffer>> light_buffers_;  // per light; null for none
+    std::vector<std::optional<ShadowMap>> shadow_maps_;        // per light, with shadows: map
     float scene_scale_ = 1;  // largest coordinate magnitude of bounded geometry
     float scene_radius_ = 1;
     Point3 scene_center_;

@@ -47,6 +47,20 @@ struct PhotonSettings {
     bool operator==(const PhotonSettings&) const = default;
 };
 
+// How Whitted's and Cook's ray tracers find shadows from the scene's lights: shadow feelers (the
+// notes' rays towards each light), or shadow maps (Williams 1978) looked up instead.
+enum class ShadowMethod { feelers, map };
+inline constexpr std::string_view kShadowMethodNames[] = {"feelers", "map"};  // by ShadowMethod
+
+struct ShadowMapSettings {
+    int resolution = 512;  // texels along each edge of each face
+    // In texels at the receiver: how far the receiver is moved off its surface along its
+    // normal, and how much nearer than it the stored depth must be to shadow it.
+    float bias = 1.5f;
+    int filter = 3;  // the filter's width in texels (odd; 1: one bilinear lookup)
+    bool operator==(const ShadowMapSettings&) const = default;
+};
+
 // Next-event estimation of the path and photon integrators: at each surface, one light picked
 // in proportion to its power, or every light with one shadow ray each.
 enum class NextEventStrategy { one, all };
@@ -71,6 +85,8 @@ struct RenderSettings {
     std::optional<AdaptiveSampling> adaptive;
     PhotonSettings photons;  // the photon integrator's
     NextEventStrategy next_event = NextEventStrategy::one;
+    ShadowMethod shadows = ShadowMethod::feelers;
+    ShadowMapSettings shadow_map;  // with shadows: map
 };
 
 // The sampler and filter a render uses: the scene's, or its integrator's default (whitted: the

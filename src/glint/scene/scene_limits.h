@@ -21,6 +21,8 @@ inline constexpr int kMaxDepth = 1024;
 inline constexpr int kMaxShadowRays = 4096;
 // Photons a pass: each takes 48 bytes while its pass's map stands.
 inline constexpr int kMaxPhotonsPerPass = 1 << 24;
+// A shadow map's texels along a face's edge: six faces of 4096^2 floats are 400 MB a light.
+inline constexpr int kMaxShadowMapResolution = 4096;
 
 struct SceneLimits {
     std::int64_t image_pixels = kMaxImagePixels;  // of the render, and of every image read

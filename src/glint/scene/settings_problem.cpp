@@ -11,6 +11,17 @@ std::optional<SettingsProblem> settings_problem(const RenderSettings& s) {
                                "sampler, got " +
                                    std::to_string(s.samples_per_pixel),
                                {"the jittered and sobol samplers take any number"}};
+    if (s.shadows == ShadowMethod::map && s.integrator != IntegratorKind::whitted &&
+        s.integrator != IntegratorKind::distributed)
+        return SettingsProblem{"shadows",
+                               "shadow maps are for the whitted and distributed integrators, not " +
+                                   std::string(integrator_name(s.integrator)),
+                               {"the physically based integrators trace their shadow rays: a "
+                                "map's texels and bias would bend the light they converge to"}};
+    if (s.shadows == ShadowMethod::map && s.transparent_shadows)
+        return SettingsProblem{"transparent_shadows",
+                               "transparent shadows need shadow feelers, not shadows: map",
+                               {"a shadow map holds only the nearest surface from the light"}};
     if (!s.adaptive) return std::nullopt;
     if (integrator_info(s.integrator).traces_particles)
         return SettingsProblem{"adaptive",

@@ -47,6 +47,7 @@ struct LightSampleRecord {
     float n_dot_l = 0;         // N.L with the shading normal
     bool faces_light = false;  // N.L > 0 and the light sends something: a feeler was traced
     float shadow = 1;          // the feeler's transmittance: 1 lit, 0 shadowed
+    bool shadow_map = false;   // the shadow was looked up in the light's map (shadows: map)
     std::optional<std::uint32_t> occluder;  // the first object in the way, when shadowed
     bool blinn = true;                      // the highlight is Blinn's (H.N), else Phong's (R.V)
     Vector3 highlight_vector;               // H or R

@@ -265,15 +265,27 @@ private:
                                                 : ": sends nothing this way, adds nothing"));
             return;
         }
-        if (s.shadow == 0) {
+        if (s.shadow_map) {
+            text += s.shadow == 0  ? ", in shadow by the shadow map"
+                    : s.shadow < 1 ? ", " + read(s.shadow) + " of it lit by the shadow map's filter"
+                                   : ", lit by the shadow map";
+            if (s.shadow == 0 && s.occluder)
+                text += " (object " + std::to_string(*s.occluder) + " on the feeler's line)";
+            if (s.shadow == 0) {
+                line(indent, text + ": adds nothing");
+                return;
+            }
+            line(indent, text + ", IL " + read(s.intensity));
+        } else if (s.shadow == 0) {
             text += ", shadow feeler blocked";
             if (s.occluder) text += " by object " + std::to_string(*s.occluder);
             line(indent, text + ": adds nothing");
             return;
+        } else {
+            text += s.shadow < 1 ? ", " + read(s.shadow) + " of it through transparent objects"
+                                 : ", shadow feeler unblocked";
+            line(indent, text + ", IL " + read(s.intensity));
         }
-        text += s.shadow < 1 ? ", " + read(s.shadow) + " of it through transparent objects"
-                             : ", shadow feeler unblocked";
-        line(indent, text + ", IL " + read(s.intensity));
         const std::string spec = s.blinn ? "(H.N)^n" : "(R.V)^n";
         line(indent + 1, "diffuse kd C (N.L) IL " + read(s.diffuse) + ", highlight ks " + spec +
                              " IL " + read(s.highlight) +
@@ -327,6 +339,7 @@ std::string light_sample_json(const LightSampleRecord& s) {
     f.add("to_light", exact(s.to_light)).add("distance", exact(s.distance));
     f.add("intensity", exact(s.intensity)).add("n_dot_l", exact(s.n_dot_l));
     f.add("faces_light", s.faces_light ? "true" : "false").add("shadow", exact(s.shadow));
+    f.add("shadow_map", s.shadow_map ? "true" : "false");
     f.add("occluder", s.occluder ? std::to_string(*s.occluder) : "null");
     f.add("highlight_model", s.blinn ? "\"blinn\"" : "\"phong\"");
     f.add("highlight_vector", exact(s.highlight_vector));

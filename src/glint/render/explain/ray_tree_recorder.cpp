@@ -101,6 +101,7 @@ LightSampleRecord RayTreeRecorder::sample_record(std::size_t light, const Surfac
     if (!r.faces_light) return r;
     RayStats unused;
     r.shadow = feelers_.transmittance(light, c.sp, c.ng, ls.to_light, ls.distance, time, unused);
+    r.shadow_map = unused.shadow_map_lookups > 0;
     if (r.shadow < 1) {
         const Ray feeler = world_.spawn_ray(c.sp.p, c.ng, ls.to_light, c.sp.error, time);
         const float reach = ls.distance - distance(c.sp.p, feeler.origin);

@@ -8,6 +8,18 @@ namespace glint {
 float ShadowFeelers::transmittance(std::size_t light, const SurfacePoint& sp, Normal3 n,
                                    Vector3 to_light, float light_distance, float time,
                                    RayStats& stats) {
+    if (light != kNoLight)
+        if (const ShadowMap* map = world_.shadow_map(light)) {
+            Lookup& last = last_lookup_[light];
+            if (last.visibility >= 0 && last.p.x == sp.p.x && last.p.y == sp.p.y &&
+                last.p.z == sp.p.z)
+                return last.visibility;
+            if (const std::optional<float> lit = map->visibility(sp.p, n)) {
+                ++stats.shadow_map_lookups;
+                last = {sp.p, *lit};
+                return *lit;
+            }
+        }
     Ray feeler = world_.spawn_ray(sp.p, n, to_light, sp.error, time);
     // The offset origin is slightly nearer to or farther from the light; stop just short of it.
     float remaining = light_distance - distance(sp.p, feeler.origin);

@@ -28,7 +28,8 @@ public:
     explicit ShadowFeelers(const World& world, bool opaque = false)
         : world_(world),
           transparent_(world.settings().transparent_shadows && !opaque),
-          last_occluder_(world.lights().size(), LightBuffer::kNoPrimitive) {}
+          last_occluder_(world.lights().size(), LightBuffer::kNoPrimitive),
+          last_lookup_(world.lights().size()) {}
 
     // The fraction of the light that reaches the surface point sp along the unit direction
     // to_light over light_distance, from world.lights()[light] (or kNoLight). n is the geometric
@@ -40,6 +41,13 @@ private:
     const World& world_;
     bool transparent_;
     std::vector<std::uint32_t> last_occluder_;  // per light
+    // Per light, the last point a shadow map was asked about and its answer: a map answers for
+    // the whole light at once, and an area light's samples at one point all ask it.
+    struct Lookup {
+        Point3 p;
+        float visibility = -1;  // none yet
+    };
+    std::vector<Lookup> last_lookup_;
 };
 
 }  // namespace glint

@@ -67,6 +67,22 @@ PhotonSettings read_photons(const YamlSource& source, const YAML::Node& node, co
     return p;
 }
 
+// `shadow_map`: the resolution, bias and filter of the shadow maps of `shadows: map`.
+ShadowMapSettings read_shadow_map(const YamlSource& source, const YAML::Node& node,
+                                  const Field& field) {
+    const MapReader map(source, node, field, "shadow_map", {"resolution", "bias", "filter"});
+    ShadowMapSettings m;
+    m.resolution = map.integer("resolution", {16, kMaxShadowMapResolution}, m.resolution);
+    m.bias = map.number("bias", {0, 64}, m.bias);
+    m.filter = map.integer("filter", {1, 15}, m.filter);
+    if (m.filter % 2 == 0)
+        throw source.error_at(map.require("filter").value,
+                              "shadow_map filter must be odd (a texel and as many on each side), "
+                              "got " +
+                                  std::to_string(m.filter));
+    return m;
+}
+
 // The node a problem of the settings as a whole is about: its key where the file has it, else
 // the map it belongs in.
 YAML::Node blamed_node(const MapReader& image, const YAML::Node& image_node, std::string_view key) {
@@ -102,10 +118,11 @@ int limited_integer(const YamlSource& source, const MapReader& map, std::string_
 
 RenderSettings read_image(const YamlSource& source, const YAML::Node& node, const Field& field,
                           const SceneLimits& limits) {
-    const MapReader map(source, node, field, "image",
-                        {"width", "height", "integrator", "samples", "sampler", "filter",
-                         "adaptive", "photons", "next_event", "shadow_rays", "max_depth",
-                         "min_weight", "background", "transparent_shadows"});
+    const MapReader map(
+        source, node, field, "image",
+        {"width", "height", "integrator", "samples", "sampler", "filter", "adaptive", "photons",
+         "next_event", "shadow_rays", "max_depth", "min_weight", "background",
+         "transparent_shadows", "shadows", "shadow_map"});
     RenderSettings s;
     s.width = map.integer("width", {1, kMaxImageSide}, s.width);
     s.height = map.integer("height", {1, kMaxImageSide}, s.height);
@@ -129,9 +146,6 @@ RenderSettings read_image(const YamlSource& source, const YAML::Node& node, cons
                         "--max-samples", s.samples_per_pixel);
     if (const MapEntry* adaptive = map.find("adaptive"))
         s.adaptive = read_adaptive(source, adaptive->value, map.field("adaptive"), s);
-    if (const std::optional<SettingsProblem> problem = settings_problem(s))
-        throw source.error_at(blamed_node(map, node, problem->key), problem->message,
-                              problem->notes);
     if (const MapEntry* photons = map.find("photons"))
         s.photons = read_photons(source, photons->value, map.field("photons"));
     static constexpr std::string_view kNextEvent[] = {"all", "one"};
@@ -144,6 +158,14 @@ RenderSettings read_image(const YamlSource& source, const YAML::Node& node, cons
     s.min_weight = map.number("min_weight", kUnitInterval, s.min_weight);
     s.background = map.color("background", s.background);
     s.transparent_shadows = map.boolean("transparent_shadows", s.transparent_shadows);
+    if (map.choice("shadows", kShadowMethodNames, "shadow method", "shadow methods", "feelers") ==
+        "map")
+        s.shadows = ShadowMethod::map;
+    if (const MapEntry* shadow_map = map.find("shadow_map"))
+        s.shadow_map = read_shadow_map(source, shadow_map->value, map.field("shadow_map"));
+    if (const std::optional<SettingsProblem> problem = settings_problem(s))
+        throw source.error_at(blamed_node(map, node, problem->key), problem->message,
+                              problem->notes);
     return s;
 }
 
