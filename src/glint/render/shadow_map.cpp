@@ -195,6 +195,9 @@ std::optional<float> ShadowMap::visibility(Point3 p, Normal3 n) const {
     const Receiver receiver{p + to_vector(n) * (size * settings_.bias), to_vector(n),
                             size * settings_.bias};
     const Projection at = project(receiver.q);
+    // At the light itself there is no direction to look up; beyond an orthographic map's edge
+    // no texel: a feeler answers.
+    if (!(at.distance > 0) || !std::isfinite(at.x) || !std::isfinite(at.y)) return std::nullopt;
     if (parallel_ && !(at.x >= 0 && at.x < float(resolution_) && at.y >= 0 &&
                        at.y < float(resolution_)))
         return std::nullopt;

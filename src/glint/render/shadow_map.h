@@ -31,7 +31,8 @@ public:
                               const ShadowMapSettings& settings);
 
     // The fraction of the light that reaches p, whose geometric normal towards the light is n;
-    // nothing where the map does not cover p (beyond a directional map's extent).
+    // nothing where the map does not cover p (beyond a directional map's extent, or at the
+    // light itself).
     std::optional<float> visibility(Point3 p, Normal3 n) const;
 
     // The depth stored for the direction d from the light (a cube), for tests: the nearest
