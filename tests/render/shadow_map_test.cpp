@@ -70,8 +70,8 @@ void expect_equal_away_from_edges(const Image& feelers, const Image& map, float 
                 }
             if (!edge) {
                 ++off_edges;
-                ADD_FAILURE() << "pixel (" << x << ", " << y << "): feelers " << a << ", map "
-                              << b << ", no shadow edge within " << reach << " pixels";
+                ADD_FAILURE() << "pixel (" << x << ", " << y << "): feelers " << a << ", map " << b
+                              << ", no shadow edge within " << reach << " pixels";
             }
         }
     EXPECT_EQ(off_edges, 0);

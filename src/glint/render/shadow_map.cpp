@@ -21,7 +21,9 @@ constexpr float kInf = std::numeric_limits<float>::infinity();
 // A cube face is the plane s e_a + u e_b + v e_c for u, v in [-1, 1], with a = face / 2,
 // s = +1 for even faces, -1 for odd, b = a + 1 and c = a + 2 (mod 3).
 Vector3 axis_vector(int axis, float value) {
-    return axis == 0 ? Vector3{value, 0, 0} : axis == 1 ? Vector3{0, value, 0} : Vector3{0, 0, value};
+    return axis == 0   ? Vector3{value, 0, 0}
+           : axis == 1 ? Vector3{0, value, 0}
+                       : Vector3{0, 0, value};
 }
 
 Vector3 face_direction(int face, float u, float v) {
@@ -198,8 +200,8 @@ std::optional<float> ShadowMap::visibility(Point3 p, Normal3 n) const {
     // At the light itself there is no direction to look up; beyond an orthographic map's edge
     // no texel: a feeler answers.
     if (!(at.distance > 0) || !std::isfinite(at.x) || !std::isfinite(at.y)) return std::nullopt;
-    if (parallel_ && !(at.x >= 0 && at.x < float(resolution_) && at.y >= 0 &&
-                       at.y < float(resolution_)))
+    if (parallel_ &&
+        !(at.x >= 0 && at.x < float(resolution_) && at.y >= 0 && at.y < float(resolution_)))
         return std::nullopt;
     // The filter's half-width in texels: the filter's, or for a light with an extent the
     // penumbra its blockers imply.
@@ -223,7 +225,8 @@ std::optional<float> ShadowMap::visibility(Point3 p, Normal3 n) const {
         if (found == 0) return 1.0f;
         const float z = blockers / float(found);
         // Similar triangles: the penumbra's width at the receiver, as an angle from the light.
-        const float penumbra = light_radius_ * std::max(at.distance - z, 0.0f) / std::max(z, 1e-20f);
+        const float penumbra =
+            light_radius_ * std::max(at.distance - z, 0.0f) / std::max(z, 1e-20f);
         half = std::max(half, penumbra / (at.distance * angle));
     }
     if (half <= 0) return lit_share(at.face, at.x, at.y, receiver);

@@ -77,8 +77,8 @@ private:
     float texel_size(float distance) const;
 
     bool parallel_ = false;
-    Point3 origin_;  // the light's position; the centre of an orthographic map's near face
-    Vector3 axis_, s_, t_;  // an orthographic map's direction and its two sides (unit)
+    Point3 origin_;          // the light's position; the centre of an orthographic map's near face
+    Vector3 axis_, s_, t_;   // an orthographic map's direction and its two sides (unit)
     float half_extent_ = 0;  // of an orthographic map
     float light_radius_ = 0;
     int resolution_ = 0;
