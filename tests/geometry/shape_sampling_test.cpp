@@ -27,7 +27,7 @@ void expect_on_surface(const S& shape, int count = 500) {
         ASSERT_NEAR(length(to_vector(s.normal)), 1, 1e-5);
         EXPECT_FLOAT_EQ(s.pdf, 1 / shape.area());
         const Vector3 n = to_vector(s.normal);
-        const Ray ray(s.p + n * 1e-2f, -n);
+        const Ray ray{s.p + n * 1e-2f, -n};
         const auto hit = shape.intersect(ray, {0, 1});
         ASSERT_TRUE(hit) << "point " << i;
         EXPECT_NEAR(hit->t, 1e-2f, 1e-4f) << "point " << i;
