@@ -128,10 +128,10 @@ TEST(ModelLoader, GlbWithEmbeddedTextureAndOrthographicCamera) {
     ASSERT_EQ(m.materials.size(), 1u);
     const auto* texture = std::get_if<ImageTexture>(&m.materials[0].color);
     ASSERT_TRUE(texture);
-    EXPECT_EQ(texture->image->width, 2);
-    EXPECT_EQ(texture->scale, (Color{0.8f, 0.2f, 0.1f}));   // baseColorFactor
-    EXPECT_EQ(texture->image->at(0, 0), (Color{1, 0, 0}));  // top left: red
-    EXPECT_EQ(texture->image->at(0, 1), (Color{0, 0, 1}));  // bottom left: blue
+    EXPECT_EQ(texture->image->base().width, 2);
+    EXPECT_EQ(texture->scale, (Color{0.8f, 0.2f, 0.1f}));          // baseColorFactor
+    EXPECT_EQ(texture->image->base().at(0, 0), (Color{1, 0, 0}));  // top left: red
+    EXPECT_EQ(texture->image->base().at(0, 1), (Color{0, 0, 1}));  // bottom left: blue
     // glTF uv (0.25, 0.25), near vertex 0 at (10, 0, 0), is the top-left texel: red. glTF's v
     // runs down the image; Assimp turns it to glint's convention.
     const Ray ray{{10.5f, 0.5f, 1}, {0, 0, -1}};
@@ -224,7 +224,7 @@ TEST(ModelLoader, ObjWithTextureSpot) {
     EXPECT_EQ(spot.name, "spot");
     const auto* texture = std::get_if<ImageTexture>(&spot.color);
     ASSERT_TRUE(texture);
-    EXPECT_EQ(texture->image->width, 1024);
+    EXPECT_EQ(texture->image->base().width, 1024);
     EXPECT_EQ(texture->scale, (Color{1, 1, 1}));
     EXPECT_FLOAT_EQ(spot.ka, 0.1f);
     EXPECT_FLOAT_EQ(spot.ks, 0.2f);

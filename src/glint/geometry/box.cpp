@@ -45,6 +45,12 @@ SurfacePoint Box::surface_at(const Ray& ray, const ShapeHit& hit) const {
     const int u_axis = std::min(a, b), v_axis = std::max(a, b);
     sp.uv = {(c[u_axis] - min[u_axis]) / (max[u_axis] - min[u_axis]),
              (c[v_axis] - min[v_axis]) / (max[v_axis] - min[v_axis])};
+    float du[3] = {0, 0, 0}, dv[3] = {0, 0, 0};
+    du[u_axis] = max[u_axis] - min[u_axis];
+    dv[v_axis] = max[v_axis] - min[v_axis];
+    sp.dpdu = {du[0], du[1], du[2]};
+    sp.dpdv = {dv[0], dv[1], dv[2]};
+    sp.has_derivatives = true;
     return sp;
 }
 

@@ -10,6 +10,7 @@
 #include "glint/geometry/axis_frame.h"
 #include "glint/geometry/disk.h"
 #include "glint/geometry/near_ray.h"
+#include "glint/math/constants.h"
 #include "glint/math/quadratic.h"
 
 namespace glint {
@@ -142,6 +143,8 @@ SurfacePoint Cone::surface_at(const Ray& ray, const ShapeHit& hit) const {
     const AxisFrame frame = axis_frame(axis);
     const Vector3 radial = rho > 0 ? across / rho : frame.x;
     const float u = angle_around(frame, radial);
+    // The way the radial direction turns as u grows (angle_around's sense).
+    const Vector3 tangent = frame.x * dot(radial, frame.z) - frame.z * dot(radial, frame.x);
 
     SurfacePoint sp;
     if (hit.part == kSide) {
@@ -151,8 +154,14 @@ SurfacePoint Cone::surface_at(const Ray& ray, const ShapeHit& hit) const {
         const float w = std::clamp(
             ((rho - base_radius) * dr + (y + half_length) * dy) / (dr * dr + dy * dy), 0.0f, 1.0f);
         sp.p = f.mid_point() + axis * (-half_length + w * dy) + radial * (base_radius + w * dr);
-        sp.normal = Normal3(normalize(radial - axis * static_cast<float>(f.slope)));
+        const Vector3 unnormalised = radial - axis * static_cast<float>(f.slope);
+        sp.normal = Normal3(normalize(unnormalised));
         sp.uv = {u, w};
+        // u turns the radial direction (and the normal with it) about the axis; v slides
+        // along the generating segment.
+        sp.dpdu = tangent * (2 * kPi * (base_radius + w * dr));
+        sp.dpdv = axis * dy + radial * dr;
+        sp.dndu = tangent * (2 * kPi / length(unnormalised));
     } else {
         const bool at_base = hit.part == kBaseCap;
         const float cap_radius = at_base ? base_radius : apex_radius;
@@ -160,7 +169,10 @@ SurfacePoint Cone::surface_at(const Ray& ray, const ShapeHit& hit) const {
         sp.p = f.mid_point() + axis * (at_base ? -half_length : half_length) + radial * rho_on_cap;
         sp.normal = Normal3(at_base ? -axis : axis);
         sp.uv = {u, rho_on_cap / cap_radius};
+        sp.dpdu = tangent * (2 * kPi * rho_on_cap);
+        sp.dpdv = radial * cap_radius;
     }
+    sp.has_derivatives = true;
     sp.shading_normal = sp.normal;
     return sp;
 }

@@ -171,6 +171,8 @@ SurfacePoint Csg::surface_at(const Ray& ray, const ShapeHit& hit, Uv uv) const {
     if (bits & kFlipped) {
         sp.normal = -sp.normal;
         sp.shading_normal = -sp.shading_normal;
+        sp.dndu = -sp.dndu;
+        sp.dndv = -sp.dndv;
     }
     return sp;
 }

@@ -50,8 +50,13 @@ SurfacePoint Disk::surface_at(const Ray& ray, const ShapeHit& hit) const {
     sp.p = center + in_plane;
     sp.normal = sp.shading_normal = Normal3(n);
     const float rho = length(in_plane);
-    sp.uv = {angle_around(axis_frame(n), in_plane),
+    const AxisFrame frame = axis_frame(n);
+    sp.uv = {angle_around(frame, in_plane),
              std::clamp((rho - inner_radius) / (radius - inner_radius), 0.0f, 1.0f)};
+    // in_plane = rho (cos(phi) x - sin(phi) z) with phi = 2 pi u, rho from v.
+    sp.dpdu = (frame.x * dot(in_plane, frame.z) - frame.z * dot(in_plane, frame.x)) * (2 * kPi);
+    sp.dpdv = in_plane * ((radius - inner_radius) / std::max(rho, 1e-12f));
+    sp.has_derivatives = true;
     return sp;
 }
 

@@ -25,6 +25,9 @@ SurfacePoint Plane::surface_at(const Ray& ray, const ShapeHit& hit) const {
     Vector3 s, t;
     orthonormal_basis(to_vector(normal), s, t);
     sp.uv = {dot(sp.p - point, s), dot(sp.p - point, t)};
+    sp.dpdu = s;
+    sp.dpdv = t;
+    sp.has_derivatives = true;
     return sp;
 }
 

@@ -337,6 +337,9 @@ SurfacePoint Polygon::surface_at(const Ray& ray, const ShapeHit& hit) const {
     Vector3 s, t;
     orthonormal_basis(to_vector(normal), s, t);
     sp.uv = {dot(sp.p - vertices[0], s), dot(sp.p - vertices[0], t)};
+    sp.dpdu = s;
+    sp.dpdv = t;
+    sp.has_derivatives = true;
     return sp;
 }
 

@@ -45,6 +45,14 @@ SurfacePoint Sphere::surface_at(const Ray& ray, const ShapeHit& hit, Uv uv) cons
     const float phi = std::atan2(-unit.z, unit.x);
     sp.uv = {(phi < 0 ? phi + 2 * kPi : phi) / (2 * kPi),
              std::acos(std::clamp(-unit.y, -1.0f, 1.0f)) / kPi};
+    // p = c + r (sin(pi v) cos(phi), -cos(pi v), -sin(pi v) sin(phi)) with phi = 2 pi u, and
+    // the normal moves with the point: dn = dp / r. At the poles dp/du vanishes.
+    const float rho = std::max(std::sqrt(unit.x * unit.x + unit.z * unit.z), 1e-6f);
+    sp.dpdu = Vector3{unit.z, 0, -unit.x} * (2 * kPi * radius);
+    sp.dpdv = Vector3{-unit.y * unit.x / rho, rho, -unit.y * unit.z / rho} * (kPi * radius);
+    sp.dndu = sp.dpdu / radius;
+    sp.dndv = sp.dpdv / radius;
+    sp.has_derivatives = true;
     return sp;
 }
 

@@ -22,6 +22,12 @@ struct ShapeHit {
 // sphere an arc tangent and an arc cosine at every hit; skipped, uv is (0, 0).
 enum class Uv : bool { skip, compute };
 
+// The footprint of a texture lookup: how uv changes from one pixel to the next across (x) and
+// down (y) the image, from the ray's differentials (pencil.h). Zero: a lookup at a point.
+struct UvFootprint {
+    float dudx = 0, dvdx = 0, dudy = 0, dvdy = 0;
+};
+
 struct SurfacePoint {
     Point3 p;
     // Unit geometric normal. On closed shapes it points outwards; on open ones (planes,
@@ -32,6 +38,13 @@ struct SurfacePoint {
     Normal3 shading_normal;
     // Texture coordinates; their range and meaning depend on the shape.
     Point2 uv;
+    // How the point and the shading normal change with uv, where the shape computes uv and
+    // knows them (has_derivatives): what ray differentials need to carry a pencil of rays across
+    // the surface and to find the texture footprint. dndu and dndv are zero on flat faces.
+    Vector3 dpdu, dpdv, dndu, dndv;
+    bool has_derivatives = false;
+    // Set by the integrator when the ray carries differentials; textures filter over it.
+    UvFootprint footprint;
     // How far p may lie off the true surface, for shapes found iteratively (implicit surfaces,
     // fractals); 0 for the analytic ones. Secondary rays start at least this far off.
     float error = 0;

@@ -60,7 +60,22 @@ SurfacePoint surface_at_placed(const Shape& shape, const Transform& world_from_o
     SurfacePoint sp = glint::surface_at(shape, o.ray, object_hit, uv);
     sp.p = world_from_object(sp.p);
     sp.normal = normalize(world_from_object(sp.normal));
-    sp.shading_normal = normalize(world_from_object(sp.shading_normal));
+    const Vector3 m = to_vector(world_from_object(sp.shading_normal));
+    sp.shading_normal = Normal3(normalize(m));
+    if (sp.has_derivatives) {
+        sp.dpdu = world_from_object(sp.dpdu);
+        sp.dpdv = world_from_object(sp.dpdv);
+        // The normal is m / |m| with m = M^-T n: its change is M^-T dn less its part along the
+        // normal, over |m|.
+        const Vector3 n = to_vector(sp.shading_normal);
+        const float inverse_length = 1 / length(m);
+        auto normal_change = [&](Vector3 dn) {
+            const Vector3 dm = to_vector(world_from_object(Normal3(dn)));
+            return (dm - n * dot(n, dm)) * inverse_length;
+        };
+        sp.dndu = normal_change(sp.dndu);
+        sp.dndv = normal_change(sp.dndv);
+    }
     return sp;
 }
 

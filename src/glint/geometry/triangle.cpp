@@ -3,6 +3,7 @@
 
 #include <cmath>
 
+#include "glint/geometry/triangle_derivatives.h"
 #include "glint/geometry/watertight_triangle.h"
 #include "glint/sampling/warp.h"
 
@@ -31,6 +32,11 @@ SurfacePoint Triangle::surface_at(const Ray&, const ShapeHit& hit) const {
     sp.shading_normal = sp.normal;
     sp.uv = {b0 * uvs[0].x + hit.u * uvs[1].x + hit.v * uvs[2].x,
              b0 * uvs[0].y + hit.u * uvs[1].y + hit.v * uvs[2].y};
+    const UvDerivatives dp = uv_derivatives(
+        {to_vector(vertices[0]), to_vector(vertices[1]), to_vector(vertices[2])}, uvs);
+    sp.dpdu = dp.du;
+    sp.dpdv = dp.dv;
+    sp.has_derivatives = true;
     return sp;
 }
 

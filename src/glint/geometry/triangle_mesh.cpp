@@ -8,6 +8,7 @@
 #include <string>
 
 #include "glint/geometry/triangle.h"
+#include "glint/geometry/triangle_derivatives.h"
 
 namespace glint {
 
@@ -220,7 +221,7 @@ bool TriangleMesh::occluded(const Ray& ray, Interval t_range) const {
                         });
 }
 
-SurfacePoint TriangleMesh::surface_at(const Ray&, const ShapeHit& hit) const {
+SurfacePoint TriangleMesh::surface_at(const Ray&, const ShapeHit& hit, Uv uv) const {
     const MeshData& mesh = *data;
     const auto& tri = mesh.triangles[hit.part];
     const float b0 = 1 - hit.u - hit.v;
@@ -243,12 +244,26 @@ SurfacePoint TriangleMesh::surface_at(const Ray&, const ShapeHit& hit) const {
             sp.shading_normal = Normal3(side > 0 ? unit : -unit);
         }
     }
-    if (!mesh.uvs.empty()) {
-        const Point2 a = mesh.uvs[tri[0]], b = mesh.uvs[tri[1]], c = mesh.uvs[tri[2]];
-        sp.uv = {b0 * a.x + hit.u * b.x + hit.v * c.x, b0 * a.y + hit.u * b.y + hit.v * c.y};
-    } else {
-        sp.uv = {hit.u, hit.v};
+    std::array<Point2, 3> uvs{{{0, 0}, {1, 0}, {0, 1}}};
+    if (!mesh.uvs.empty()) uvs = {mesh.uvs[tri[0]], mesh.uvs[tri[1]], mesh.uvs[tri[2]]};
+    sp.uv = {b0 * uvs[0].x + hit.u * uvs[1].x + hit.v * uvs[2].x,
+             b0 * uvs[0].y + hit.u * uvs[1].y + hit.v * uvs[2].y};
+    if (uv == Uv::skip) return sp;
+    const UvDerivatives dp = uv_derivatives({to_vector(p0), to_vector(p1), to_vector(p2)}, uvs);
+    sp.dpdu = dp.du;
+    sp.dpdv = dp.dv;
+    // The interpolated normal's change, left unnormalised (as pbrt does): enough for a pencil's
+    // spread, and zero on a flat-shaded mesh.
+    if (!mesh.normals.empty()) {
+        const float side = dot(sp.normal, sp.shading_normal) < 0 ? -1.0f : 1.0f;
+        const UvDerivatives dn = uv_derivatives(
+            {to_vector(mesh.normals[tri[0]]) * side, to_vector(mesh.normals[tri[1]]) * side,
+             to_vector(mesh.normals[tri[2]]) * side},
+            uvs);
+        sp.dndu = dn.du;
+        sp.dndv = dn.dv;
     }
+    sp.has_derivatives = true;
     return sp;
 }
 

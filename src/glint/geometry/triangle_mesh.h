@@ -98,7 +98,8 @@ struct TriangleMesh {
     // The normal follows the triangle's winding; the shading normal interpolates the vertex
     // normals when there are any (turned to the normal's side); uv interpolates the vertex uvs,
     // or is the barycentric (u, v) without them.
-    SurfacePoint surface_at(const Ray& ray, const ShapeHit& hit) const;
+    // uv is always found (it is cheap); its derivatives only when asked for (Uv::compute).
+    SurfacePoint surface_at(const Ray& ray, const ShapeHit& hit, Uv uv = Uv::compute) const;
     // The sum of its triangles' areas. Points are drawn on it through its triangles, picked by
     // area from a table that whoever samples it keeps (SurfaceSampler).
     float area() const;

@@ -2,8 +2,11 @@
 // pixel, lens and shutter numbers: what the render loop and `glint explain` both start from.
 #pragma once
 
+#include <optional>
+
 #include "glint/camera/camera.h"
 #include "glint/math/ray.h"
+#include "glint/render/pencil.h"
 #include "glint/sampling/filter_sampling.h"
 #include "glint/sampling/sampler.h"
 #include "glint/scene/scene.h"
@@ -26,12 +29,16 @@ struct EyeSample {
     float time_u;   // the time dimension's number; 0, none drawn, when the shutter is closed
     float time;     // the moment; the shutter's opening when it does not move
     Ray ray;
+    // The ray's pencil (pencil.h), when the render asks for one.
+    std::optional<RayDifferential> pencil;
+    const RayDifferential* pencil_or_null() const { return pencil ? &*pencil : nullptr; }
 };
 
 // With `filter`, the pixel's numbers are drawn through filter importance sampling, and the
-// film position may lie in a neighbouring pixel or beyond the image's edge.
+// film position may lie in a neighbouring pixel or beyond the image's edge. A pencil_scale above
+// 0 gives the ray its pencil, that fraction of the pixel's (eye_pencil_scale).
 inline EyeSample eye_sample(const Camera& camera, const SampleStream& stream, int x, int y,
-                            const FilterSampling* filter = nullptr) {
+                            const FilterSampling* filter = nullptr, float pencil_scale = 0) {
     EyeSample e;
     e.offset = stream.get_2d(kPixelDimension);
     e.film = {float(x) + e.offset.x, float(y) + e.offset.y};
@@ -50,6 +57,8 @@ inline EyeSample eye_sample(const Camera& camera, const SampleStream& stream, in
         e.time = camera.shutter_time(e.time_u);
     }
     e.ray = camera.generate_ray(e.film, e.lens, e.time);
+    if (pencil_scale > 0)
+        e.pencil = eye_pencil(camera, e.ray, e.film, e.lens, e.time, pencil_scale);
     return e;
 }
 

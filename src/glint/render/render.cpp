@@ -56,6 +56,8 @@ void render_tile(const Tile& tile, Pass pass, const RenderInputs<Integrator>& in
     const Camera& camera = world.camera();
     const RenderSettings& settings = world.settings();
     const int width = settings.width;
+    const float pencil_scale =
+        world.carries_pencils() ? eye_pencil_scale(settings.samples_per_pixel) : 0;
     Integrator integrator(world, in.shared);  // one per tile: it holds per-thread caches
     FilmTile film_tile = state.film.make_tile(tile);
     // Output variables come from a recorder on the integrator, which then runs its recording
@@ -82,13 +84,14 @@ void render_tile(const Tile& tile, Pass pass, const RenderInputs<Integrator>& in
                     error.relative_error() < settings.adaptive->threshold)
                     break;
                 SampleStream stream(patterns, std::uint32_t(s));
-                const EyeSample eye = eye_sample(camera, stream, x, y, filter);
+                const EyeSample eye = eye_sample(camera, stream, x, y, filter, pencil_scale);
                 TraversalCounters before;
                 if constexpr (kAovs) {
                     recorder.start();
                     before = traversal_counters;
                 }
-                const Color c = integrator.trace_eye_ray(eye.ray, stream, totals.rays);
+                const Color c =
+                    integrator.trace_eye_ray(eye.ray, eye.pencil_or_null(), stream, totals.rays);
                 if (is_valid_sample(c)) {
                     if (filter)
                         film_tile.add_to_pixel(x, y, eye.weight, c);

@@ -55,6 +55,9 @@ public:
     std::int32_t object_light_index(std::uint32_t primitive) const {
         return object_light_of_.empty() ? -1 : object_light_of_[primitive];
     }
+    // Whether eye rays carry their pencils (pencil.h): some material's image texture filters
+    // over the footprint of a pixel (trilinear or ewa).
+    bool carries_pencils() const { return carries_pencils_; }
     // What the user should know about the world as built ("an emitting torus cannot light").
     const std::vector<std::string>& warnings() const { return warnings_; }
     // The refracting objects eye rays start in (eye_media.h), at their own indices: vacuum for
@@ -126,6 +129,7 @@ private:
     ShadowAcceleration shadows_;
     std::vector<std::unique_ptr<LightBuffer>> light_buffers_;  // per light; null for none
     std::vector<std::optional<ShadowMap>> shadow_maps_;        // per light, with shadows: map
+    bool carries_pencils_ = false;
     float scene_scale_ = 1;  // largest coordinate magnitude of bounded geometry
     float scene_radius_ = 1;
     Point3 scene_center_;

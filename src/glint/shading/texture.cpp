@@ -32,7 +32,7 @@ struct Evaluate {
                              : odd_cell(sp.p.x, sp.p.y, sp.p.z, checker.size);
         return odd ? checker.odd : checker.even;
     }
-    Color operator()(const ImageTexture& image) const { return sample(image, sp.uv); }
+    Color operator()(const ImageTexture& image) const { return sample(image, sp.uv, sp.footprint); }
     Color operator()(const NoiseTexture& noise) const { return glint::evaluate(noise, sp.p); }
 };
 

@@ -21,7 +21,11 @@ RayTree explain(const World& world, const PixelSample& which) {
     SampleStream stream(patterns, std::uint32_t(which.sample));
     std::optional<FilterSampling> filter;
     if (importance_samples_filter(settings)) filter.emplace(filter_of(settings));
-    const EyeSample eye = eye_sample(camera, stream, which.x, which.y, filter ? &*filter : nullptr);
+    // The eye ray carries its pencil whether or not the render's does, to tell how wide each
+    // ray's is: a footprint changes only the lookups of textures filtered over one, which make
+    // the render carry it too.
+    const EyeSample eye = eye_sample(camera, stream, which.x, which.y, filter ? &*filter : nullptr,
+                                     eye_pencil_scale(settings.samples_per_pixel));
 
     RayTree tree;
     tree.x = which.x;
@@ -47,7 +51,7 @@ RayTree explain(const World& world, const PixelSample& which) {
         Integrator integrator(world, shared);
         integrator.record_into(&recorder);
         RayStats stats;
-        return integrator.trace_eye_ray(eye.ray, stream, stats);
+        return integrator.trace_eye_ray(eye.ray, eye.pencil_or_null(), stream, stats);
     });
     if (settings.integrator == IntegratorKind::light)
         tree.particles = particle_report(world, which);

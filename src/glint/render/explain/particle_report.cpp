@@ -71,8 +71,9 @@ ParticleReport particle_report(const World& world, const PixelSample& which) {
             PixelPatterns patterns(sampler, pixel);
             SampleStream stream(patterns, std::uint32_t(which.sample));
             const EyeSample eye = eye_sample(camera, stream, x, y, filter ? &*filter : nullptr);
-            // The eye ray draws its numbers first; the particle's follow them.
-            integrator.trace_eye_ray(eye.ray, stream, stats);
+            // The eye ray draws its numbers first; the particle's follow them. Its pencil would
+            // change no number the particles draw.
+            integrator.trace_eye_ray(eye.ray, nullptr, stream, stats);
             current.from_x = x;
             current.from_y = y;
             integrator.trace_particle(stream, unused, stats);

@@ -13,6 +13,7 @@
 #include "glint/math/color.h"
 #include "glint/math/ray.h"
 #include "glint/math/vector.h"
+#include "glint/render/pencil.h"
 #include "glint/render/ray_stats.h"
 
 namespace glint {
@@ -135,6 +136,9 @@ struct RayNode {
     Point3 point;
     Vector3 geometric_normal, shading_normal;  // turned towards the ray
     bool entering = false;                     // met the front (outward) side
+    // The ray's pencil where it meets the surface (pencil.h); none when it carries none (past a
+    // rough surface, or a shape that does not say how its normal bends).
+    std::optional<PencilAtSurface> pencil;
     // A dispersive surface's refracted ray takes one wavelength (nm), drawn from u.
     std::optional<float> wavelength, wavelength_u;
     Color background;  // what a missed ray brings

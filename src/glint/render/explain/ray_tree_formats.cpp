@@ -141,6 +141,13 @@ private:
                               ? ""
                               : ", shading normal " + read(n.shading_normal)) +
                          (n.entering ? ", entering (front side)" : ", leaving (back side)"));
+        if (n.pencil) {
+            const UvFootprint& f = n.pencil->footprint;
+            line(in + 1, "pencil " + read(pencil_width(*n.pencil)) + " wide: steps " +
+                             read(n.pencil->dpdx) + " across, " + read(n.pencil->dpdy) +
+                             " down a pixel; uv footprint (" + read(f.dudx) + ", " + read(f.dvdx) +
+                             ") across, (" + read(f.dudy) + ", " + read(f.dvdy) + ") down");
+        }
         if (n.path) {
             write_path_vertex(*n.path, in);
             line(in, "local term (emission + light) " + read(local(n)) + ", contributes " +
@@ -424,6 +431,17 @@ std::string node_json(const RayTree& tree, int index) {
         hit.add("point", exact(n.point)).add("geometric_normal", exact(n.geometric_normal));
         hit.add("shading_normal", exact(n.shading_normal));
         hit.add("entering", n.entering ? "true" : "false");
+        if (n.pencil) {
+            const UvFootprint& fp = n.pencil->footprint;
+            Fields pencil;
+            pencil.add("width", exact(pencil_width(*n.pencil)));
+            pencil.add("dpdx", exact(n.pencil->dpdx)).add("dpdy", exact(n.pencil->dpdy));
+            pencil.add("footprint", "[" + exact(fp.dudx) + ", " + exact(fp.dvdx) + ", " +
+                                        exact(fp.dudy) + ", " + exact(fp.dvdy) + "]");
+            hit.add("pencil", pencil.object());
+        } else {
+            hit.add("pencil", "null");
+        }
         f.add("hit", hit.object());
         f.add("emission", exact(n.emission)).add("ambient", exact(n.ambient));
         f.add("lights", array(n.lights, light_json)).add("direct", exact(n.direct));

@@ -59,6 +59,7 @@ void RayTreeRecorder::hit(const SurfaceContext& c, const Hit& hit) {
     n.geometric_normal = to_vector(c.ng);
     n.shading_normal = to_vector(c.n);
     n.entering = c.entering;
+    n.pencil = c.pencil;
     n.emission = c.emission;
     n.ambient = ambient_term(m, c.color, world_.ambient());
 }

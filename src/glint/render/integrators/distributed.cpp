@@ -23,45 +23,49 @@ std::optional<Point2> lobe_draw(float roughness, Point2 u) {
 
 }  // namespace
 
-Color DistributedIntegrator::trace_eye_ray(const Ray& ray, SampleStream& stream, RayStats& stats) {
+Color DistributedIntegrator::trace_eye_ray(const Ray& ray, const RayDifferential* pencil,
+                                           SampleStream& stream, RayStats& stats) {
     stats.count(RayKind::primary);
-    return trace(ray, 1, 1, stream, stats, world_.eye_media());
+    return trace(ray, 1, 1, stream, stats, world_.eye_media(), pencil);
 }
 
 // shade() and what it calls are compiled twice: with kRecord, telling the recorder every event;
 // without, the renderer's own code, with no trace of the recorder in it.
 
 Color DistributedIntegrator::trace(const Ray& ray, int depth, float weight, SampleStream& stream,
-                                   RayStats& stats, const MediumStack& media) {
+                                   RayStats& stats, const MediumStack& media,
+                                   const RayDifferential* pencil) {
     if (recorder_) [[unlikely]]
-        return trace_recorded(ray, depth, weight, stream, stats, media);
-    return shade<false>(ray, depth, weight, stream, stats, media);
+        return trace_recorded(ray, depth, weight, stream, stats, media, pencil);
+    return shade<false>(ray, depth, weight, stream, stats, media, pencil);
 }
 
 template <bool kRecord>
 Color DistributedIntegrator::trace_ray(const Ray& ray, int depth, float weight,
                                        SampleStream& stream, RayStats& stats,
-                                       const MediumStack& media) {
+                                       const MediumStack& media, const RayDifferential* pencil) {
     if constexpr (kRecord)
-        return trace_recorded(ray, depth, weight, stream, stats, media);
+        return trace_recorded(ray, depth, weight, stream, stats, media, pencil);
     else
-        return shade<false>(ray, depth, weight, stream, stats, media);
+        return shade<false>(ray, depth, weight, stream, stats, media, pencil);
 }
 
 // Out of line: the renderer's code stays as small as it was without a recorder.
 [[gnu::noinline]] Color DistributedIntegrator::trace_recorded(const Ray& ray, int depth,
                                                               float weight, SampleStream& stream,
                                                               RayStats& stats,
-                                                              const MediumStack& media) {
+                                                              const MediumStack& media,
+                                                              const RayDifferential* pencil) {
     recorder_->begin_ray(ray, depth, weight);
-    const Color color = shade<true>(ray, depth, weight, stream, stats, media);
+    const Color color = shade<true>(ray, depth, weight, stream, stats, media, pencil);
     recorder_->end_ray(color);
     return color;
 }
 
 template <bool kRecord>
 Color DistributedIntegrator::shade(const Ray& ray, int depth, float weight, SampleStream& stream,
-                                   RayStats& stats, const MediumStack& media) {
+                                   RayStats& stats, const MediumStack& media,
+                                   const RayDifferential* pencil) {
     const RenderSettings& settings = world_.settings();
     const auto hit = world_.intersect(ray, {0, kInfinity}, kVisibleToCameraRays);
     if (!hit) {
@@ -71,7 +75,7 @@ Color DistributedIntegrator::shade(const Ray& ray, int depth, float weight, Samp
     }
     if (depth == 1) ++stats.primary_hits;
 
-    const SurfaceContext c = surface_context(world_, ray, *hit);
+    const SurfaceContext c = surface_context(world_, ray, *hit, pencil);
     if constexpr (kRecord) recorder_->hit(c, *hit);
     const Material& m = *c.material;
     Color color = c.emission + ambient_term(m, c.color, world_.ambient());
@@ -102,7 +106,10 @@ Color DistributedIntegrator::shade(const Ray& ray, int depth, float weight, Samp
             const Ray r = spawn_from(world_, c, ray, d);
             if constexpr (kRecord)
                 recorder_->branch(RayKind::reflected, Color::gray(b.kr), lobe_draw(c.roughness, u));
-            color += b.kr * trace_ray<kRecord>(r, depth + 1, weight * b.kr, stream, stats, media);
+            const auto r_pencil = c.roughness < kMirrorRoughness ? mirror_pencil(c, ray, pencil)
+                                                                 : std::optional<RayDifferential>{};
+            color += b.kr * trace_ray<kRecord>(r, depth + 1, weight * b.kr, stream, stats, media,
+                                               or_null(r_pencil));
         } else if constexpr (kRecord) {
             recorder_->blocked(RayKind::reflected, u);
         }
@@ -117,8 +124,12 @@ Color DistributedIntegrator::shade(const Ray& ray, int depth, float weight, Samp
             const Color factor = b.kt * spectral_weight;
             if constexpr (kRecord)
                 recorder_->branch(RayKind::refracted, factor, lobe_draw(c.transmit_roughness, u));
+            const auto t_pencil = c.transmit_roughness < kMirrorRoughness
+                                      ? refraction_pencil(c, ray, pencil, b.eta, b.refracted)
+                                      : std::optional<RayDifferential>{};
             color += factor * trace_ray<kRecord>(t, depth + 1, weight * b.kt, stream, stats,
-                                                 media_beyond(c, b, media, parent.wavelength));
+                                                 media_beyond(c, b, media, parent.wavelength),
+                                                 or_null(t_pencil));
         } else if constexpr (kRecord) {
             recorder_->blocked(RayKind::refracted, u);
         }

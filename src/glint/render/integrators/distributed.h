@@ -30,14 +30,17 @@ public:
     explicit DistributedIntegrator(const World& world) : world_(world), feelers_(world) {}
     DistributedIntegrator(const World& world, const Shared&) : DistributedIntegrator(world) {}
 
-    // The colour one sample sees along an eye ray, drawing its numbers from the stream. Counts
-    // every ray it traces, the eye ray included.
-    Color trace_eye_ray(const Ray& ray, SampleStream& stream, RayStats& stats);
+    // The colour one sample sees along an eye ray, which may carry its pencil (pencil.h; null:
+    // none), drawing its numbers from the stream. Counts every ray it traces, the eye ray
+    // included.
+    Color trace_eye_ray(const Ray& ray, const RayDifferential* pencil, SampleStream& stream,
+                        RayStats& stats);
 
     // The colour seen along a ray at the given depth (eye rays are 1) and weight (the product
-    // of kr and kt above it), travelling through the given media.
+    // of kr and kt above it), travelling through the given media. The pencil follows the ray
+    // through mirrors and clear glass; a rough surface's spread drops it.
     Color trace(const Ray& ray, int depth, float weight, SampleStream& stream, RayStats& stats,
-                const MediumStack& media = kVacuum);
+                const MediumStack& media = kVacuum, const RayDifferential* pencil = nullptr);
 
     // Records every ray it traces from now on into `recorder` (glint explain, output variables);
     // null stops.
@@ -46,13 +49,13 @@ public:
 private:
     // A ray traced and told to the recorder.
     Color trace_recorded(const Ray& ray, int depth, float weight, SampleStream& stream,
-                         RayStats& stats, const MediumStack& media);
+                         RayStats& stats, const MediumStack& media, const RayDifferential* pencil);
     template <bool kRecord>
     Color trace_ray(const Ray& ray, int depth, float weight, SampleStream& stream, RayStats& stats,
-                    const MediumStack& media);
+                    const MediumStack& media, const RayDifferential* pencil);
     template <bool kRecord>
     Color shade(const Ray& ray, int depth, float weight, SampleStream& stream, RayStats& stats,
-                const MediumStack& media);
+                const MediumStack& media, const RayDifferential* pencil);
     // color plus the local term of each light at the surface of c in turn, each area light and
     // emitting object sampled by its shadow rays. (By value: a colour added to through a
     // reference waits on its own stores.)

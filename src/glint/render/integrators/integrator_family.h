@@ -7,7 +7,7 @@
 //   using Shared = ...;                                // what its tiles share, built once
 //   static Shared prepare(const World&);               // before the first pass
 //   Integrator(const World&, const Shared&);           // one per tile: per-thread caches
-//   Color trace_eye_ray(const Ray&, SampleStream&, RayStats&);
+//   Color trace_eye_ray(const Ray&, const RayDifferential* pencil, SampleStream&, RayStats&);
 //   void record_into(RayRecorder*);                    // explain, the output variables
 // and, when it needs them, the hooks the render loop then calls:
 //   static void begin_pass(Shared&, const World&, int sample, seed, RayStats&);

@@ -14,16 +14,18 @@
 
 namespace glint {
 
-Color LightIntegrator::trace_eye_ray(const Ray& ray, SampleStream& stream, RayStats& stats) {
+Color LightIntegrator::trace_eye_ray(const Ray& ray, const RayDifferential* pencil,
+                                     SampleStream& stream, RayStats& stats) {
     stats.count(RayKind::primary);
     if (recorder_) [[unlikely]]
-        return eye_ray<true>(ray, 1, world_.eye_media(), stream, stats);
-    return eye_ray<false>(ray, 1, world_.eye_media(), stream, stats);
+        return eye_ray<true>(ray, 1, world_.eye_media(), stream, pencil, stats);
+    return eye_ray<false>(ray, 1, world_.eye_media(), stream, pencil, stats);
 }
 
 template <bool kRecord>
 Color LightIntegrator::eye_ray(const Ray& ray, int depth, const MediumStack& media,
-                               SampleStream& stream, RayStats& stats) {
+                               SampleStream& stream, const RayDifferential* pencil,
+                               RayStats& stats) {
     const RenderSettings& settings = world_.settings();
     if constexpr (kRecord) recorder_->begin_ray(ray, depth, 1);
     const auto hit = world_.intersect(ray, {0, kInfinity}, kVisibleToCameraRays);
@@ -36,7 +38,7 @@ Color LightIntegrator::eye_ray(const Ray& ray, int depth, const MediumStack& med
         return sky;
     }
     if (depth == 1) ++stats.primary_hits;
-    const SurfaceContext c = surface_context(world_, ray, *hit);
+    const SurfaceContext c = surface_context(world_, ray, *hit, pencil);
     if constexpr (kRecord) recorder_->hit(c, *hit);
     PathVertexRecord record;
     record.le = c.emission;
@@ -61,7 +63,8 @@ Color LightIntegrator::eye_ray(const Ray& ray, int depth, const MediumStack& med
     const Color spectral_weight = split.weight;
     if constexpr (kRecord)
         if (split.drawn) recorder_->wavelength(split.u, wavelength);
-    const Bsdf bsdf(bsdf_inputs(c, snell_indices(c, media, wavelength)));
+    const SnellIndices eta = snell_indices(c, media, wavelength);
+    const Bsdf bsdf(bsdf_inputs(c, eta));
     const float u_lobe = stream.next_1d();
     const Point2 u = stream.next_2d();
     const std::optional<BsdfSample> s = bsdf.sample(u_lobe, u);
@@ -87,7 +90,11 @@ Color LightIntegrator::eye_ray(const Ray& ray, int depth, const MediumStack& med
         recorder_->path_vertex(c, record);
         recorder_->branch(kind, factor, std::nullopt);
     }
-    color += factor * eye_ray<kRecord>(next, depth + 1, beyond, stream, stats);
+    const auto next_pencil = s->transmitted
+                                 ? refraction_pencil(c, ray, pencil, eta.n1 / eta.n2, s->wi)
+                                 : mirror_pencil(c, ray, pencil);
+    color +=
+        factor * eye_ray<kRecord>(next, depth + 1, beyond, stream, or_null(next_pencil), stats);
     if constexpr (kRecord) recorder_->end_ray(color);
     return color;
 }

@@ -46,7 +46,8 @@ public:
         : world_(world), shared_(shared), feelers_(world, /*opaque=*/true) {}
 
     // What the eye sees of emitters and the sky, straight or through mirrors and clear glass.
-    Color trace_eye_ray(const Ray& ray, SampleStream& stream, RayStats& stats);
+    Color trace_eye_ray(const Ray& ray, const RayDifferential* pencil, SampleStream& stream,
+                        RayStats& stats);
     // One particle, its numbers from the sample's stream after the eye ray's; each surface it
     // reaches adds its share to `film`.
     void trace_particle(SampleStream& stream, SplatFilm& film, RayStats& stats);
@@ -58,7 +59,7 @@ public:
 private:
     template <bool kRecord>
     Color eye_ray(const Ray& ray, int depth, const MediumStack& media, SampleStream& stream,
-                  RayStats& stats);
+                  const RayDifferential* pencil, RayStats& stats);
     const World& world_;
     const Shared& shared_;
     ShadowFeelers feelers_;

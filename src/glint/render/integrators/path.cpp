@@ -30,10 +30,12 @@ RayKind kind_of(BsdfLobe lobe) {
 
 }  // namespace
 
-Color PathIntegrator::trace_eye_ray(const Ray& ray, SampleStream& stream, RayStats& stats) {
+Color PathIntegrator::trace_eye_ray(const Ray& ray, const RayDifferential* pencil,
+                                    SampleStream& stream, RayStats& stats) {
     stats.count(RayKind::primary);
     PathState path;
     path.media = world_.eye_media();
+    if (pencil) path.pencil = *pencil;
     if (recorder_) [[unlikely]]
         return radiance<true>(ray, path, stream, stats);
     return radiance<false>(ray, path, stream, stats);
@@ -74,7 +76,7 @@ Color PathIntegrator::radiance(const Ray& ray, PathState path, SampleStream& str
         return sky;
     }
     if (path.depth == 1) ++stats.primary_hits;
-    const SurfaceContext c = surface_context(world_, ray, *hit);
+    const SurfaceContext c = surface_context(world_, ray, *hit, or_null(path.pencil));
     if constexpr (kRecord) recorder_->hit(c, *hit);
     const Material& m = *c.material;
     PathVertexRecord record;
@@ -107,7 +109,8 @@ Color PathIntegrator::radiance(const Ray& ray, PathState path, SampleStream& str
     const Color spectral_weight = split.weight;
     if constexpr (kRecord)
         if (split.drawn) recorder_->wavelength(split.u, wavelength);
-    const Bsdf bsdf(bsdf_inputs(c, snell_indices(c, path.media, wavelength)));
+    const SnellIndices eta = snell_indices(c, path.media, wavelength);
+    const Bsdf bsdf(bsdf_inputs(c, eta));
     if (bsdf.has_smooth_part())
         color += next_event_.estimate(c, bsdf, ray.time, stream, stats, /*weigh=*/true,
                                       kRecord ? &record : nullptr);
@@ -142,6 +145,10 @@ Color PathIntegrator::radiance(const Ray& ray, PathState path, SampleStream& str
     next.after_delta = s->delta;
     next.bsdf_pdf = s->pdf;
     next.from = c.sp.p;
+    if (s->delta)
+        next.pencil = s->transmitted
+                          ? refraction_pencil(c, ray, or_null(path.pencil), eta.n1 / eta.n2, s->wi)
+                          : mirror_pencil(c, ray, or_null(path.pencil));
     Ray scattered = world_.spawn_ray(c.sp.p, c.ng, s->wi, c.sp.error, ray.time);
     scattered.wavelength = s->transmitted ? wavelength : ray.wavelength;
     if (s->transmitted) {

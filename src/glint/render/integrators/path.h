@@ -37,7 +37,8 @@ public:
         : world_(world), next_event_(world, shared.lights) {}
 
     // The radiance one sample's path brings back along the eye ray. Counts every ray it traces.
-    Color trace_eye_ray(const Ray& ray, SampleStream& stream, RayStats& stats);
+    Color trace_eye_ray(const Ray& ray, const RayDifferential* pencil, SampleStream& stream,
+                        RayStats& stats);
 
     void record_into(RayRecorder* recorder) { recorder_ = recorder; }
 
@@ -52,6 +53,8 @@ private:
         float bsdf_pdf = 0;         // per steradian, when not after_delta
         Point3 from;                // where it left from
         MediumStack media;          // the media it travels in
+        // Its pencil (pencil.h): from the eye, kept through mirrors and clear glass only.
+        std::optional<RayDifferential> pencil;
     };
 
     template <bool kRecord>

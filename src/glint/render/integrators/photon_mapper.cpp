@@ -149,16 +149,18 @@ Color PhotonIntegrator::gather(const SurfaceContext& c, const Bsdf& bsdf, int& f
     return sum / (kPi * r * r * float(shared_.emitted));
 }
 
-Color PhotonIntegrator::trace_eye_ray(const Ray& ray, SampleStream& stream, RayStats& stats) {
+Color PhotonIntegrator::trace_eye_ray(const Ray& ray, const RayDifferential* pencil,
+                                      SampleStream& stream, RayStats& stats) {
     stats.count(RayKind::primary);
     if (recorder_) [[unlikely]]
-        return eye_ray<true>(ray, 1, world_.eye_media(), stream, stats);
-    return eye_ray<false>(ray, 1, world_.eye_media(), stream, stats);
+        return eye_ray<true>(ray, 1, world_.eye_media(), stream, pencil, stats);
+    return eye_ray<false>(ray, 1, world_.eye_media(), stream, pencil, stats);
 }
 
 template <bool kRecord>
 Color PhotonIntegrator::eye_ray(const Ray& ray, int depth, const MediumStack& media,
-                                SampleStream& stream, RayStats& stats) {
+                                SampleStream& stream, const RayDifferential* pencil,
+                                RayStats& stats) {
     const RenderSettings& settings = world_.settings();
     if constexpr (kRecord) recorder_->begin_ray(ray, depth, 1);
     const auto hit = world_.intersect(ray, {0, kInfinity}, kVisibleToCameraRays);
@@ -171,7 +173,7 @@ Color PhotonIntegrator::eye_ray(const Ray& ray, int depth, const MediumStack& me
         return sky;
     }
     if (depth == 1) ++stats.primary_hits;
-    const SurfaceContext c = surface_context(world_, ray, *hit);
+    const SurfaceContext c = surface_context(world_, ray, *hit, pencil);
     if constexpr (kRecord) recorder_->hit(c, *hit);
     PathVertexRecord record;
     record.le = c.emission;
@@ -193,7 +195,8 @@ Color PhotonIntegrator::eye_ray(const Ray& ray, int depth, const MediumStack& me
     const Color spectral_weight = split.weight;
     if constexpr (kRecord)
         if (split.drawn) recorder_->wavelength(split.u, wavelength);
-    const Bsdf bsdf(bsdf_inputs(c, snell_indices(c, media, wavelength)));
+    const SnellIndices eta = snell_indices(c, media, wavelength);
+    const Bsdf bsdf(bsdf_inputs(c, eta));
     if (bsdf.has_smooth_part()) {
         // The smooth parts: the lights straight, the rest from the photons.
         color += next_event_.estimate(c, bsdf, ray.time, stream, stats, /*weigh=*/false,
@@ -231,7 +234,11 @@ Color PhotonIntegrator::eye_ray(const Ray& ray, int depth, const MediumStack& me
         recorder_->path_vertex(c, record);
         recorder_->branch(kind, factor, std::nullopt);
     }
-    color += factor * eye_ray<kRecord>(next, depth + 1, beyond, stream, stats);
+    const auto next_pencil = s->transmitted
+                                 ? refraction_pencil(c, ray, pencil, eta.n1 / eta.n2, s->wi)
+                                 : mirror_pencil(c, ray, pencil);
+    color +=
+        factor * eye_ray<kRecord>(next, depth + 1, beyond, stream, or_null(next_pencil), stats);
     if constexpr (kRecord) recorder_->end_ray(color);
     return color;
 }

@@ -48,14 +48,15 @@ public:
     PhotonIntegrator(const World& world, const Shared& shared)
         : world_(world), shared_(shared), next_event_(world, shared.lights) {}
 
-    Color trace_eye_ray(const Ray& ray, SampleStream& stream, RayStats& stats);
+    Color trace_eye_ray(const Ray& ray, const RayDifferential* pencil, SampleStream& stream,
+                        RayStats& stats);
 
     void record_into(RayRecorder* recorder) { recorder_ = recorder; }
 
 private:
     template <bool kRecord>
     Color eye_ray(const Ray& ray, int depth, const MediumStack& media, SampleStream& stream,
-                  RayStats& stats);
+                  const RayDifferential* pencil, RayStats& stats);
     // The photons' estimate of the light reflected at c, and how many were found.
     Color gather(const struct SurfaceContext& c, const Bsdf& bsdf, int& found) const;
 

@@ -8,6 +8,7 @@
 #include "glint/math/color.h"
 #include "glint/math/ray.h"
 #include "glint/render/integrators/medium_stack.h"
+#include "glint/render/pencil.h"
 #include "glint/render/world.h"
 #include "glint/shading/bsdf.h"
 #include "glint/shading/material.h"
@@ -28,17 +29,25 @@ struct SurfaceContext {
     Vector3 to_viewer;  // -direction of the ray, V
     // The material's reflect, roughness and transmit_roughness at the point (maps evaluated).
     float reflect, roughness, transmit_roughness;
+    // The ray's pencil where it meets the surface, when the ray carries one (pencil.h).
+    std::optional<PencilAtSurface> pencil;
 };
 
 // The ray enters the surface when it meets the front side. Both normals are turned to face the
 // incoming ray: the geometric one places secondary rays on the right side of the surface, the
-// shading one (smooth for meshes) enters the formulas.
-inline SurfaceContext surface_context(const World& world, const Ray& ray, const Hit& hit) {
+// shading one (smooth for meshes) enters the formulas. A ray that carries its pencil gives the
+// texture lookup its footprint.
+inline SurfaceContext surface_context(const World& world, const Ray& ray, const Hit& hit,
+                                      const RayDifferential* pencil = nullptr) {
     SurfaceContext c;
     c.primitive = hit.primitive;
     c.material = &world.material_of(hit.primitive);
     const Material& m = *c.material;
-    c.sp = world.surface_at(ray, hit, uv_needed(m.color));
+    c.sp = world.surface_at(ray, hit, pencil ? Uv::compute : uv_needed(m.color));
+    if (pencil) {
+        c.pencil = pencil_at(ray, *pencil, hit.shape_hit.t, c.sp);
+        c.sp.footprint = c.pencil->footprint;
+    }
     c.color = evaluate(m.color, c.sp);
     c.reflect = m.reflect;
     c.roughness = m.roughness;
@@ -67,6 +76,25 @@ inline Ray spawn_from(const World& world, const SurfaceContext& c, const Ray& pa
     return r;
 }
 
+// The pencils of the rays that leave c as a mirror reflects and as glass refracts (eta = n1 / n2)
+// a ray that carried `pencil`: none when it carried none, or when the shape does not say how its
+// normal bends.
+inline std::optional<RayDifferential> mirror_pencil(const SurfaceContext& c, const Ray& ray,
+                                                    const RayDifferential* pencil) {
+    if (!pencil || !c.pencil || !c.pencil->bends_known) return std::nullopt;
+    return reflected_pencil(ray, *pencil, *c.pencil, c.n, c.entering ? 1.0f : -1.0f);
+}
+inline std::optional<RayDifferential> refraction_pencil(const SurfaceContext& c, const Ray& ray,
+                                                        const RayDifferential* pencil, float eta,
+                                                        Vector3 refracted) {
+    if (!pencil || !c.pencil || !c.pencil->bends_known) return std::nullopt;
+    return refracted_pencil(ray, *pencil, *c.pencil, c.n, c.entering ? 1.0f : -1.0f, eta,
+                            refracted);
+}
+inline const RayDifferential* or_null(const std::optional<RayDifferential>& pencil) {
+    return pencil ? &*pencil : nullptr;
+}
+
 // The weights of the reflected and refracted rays at the surface and the refracted direction:
 // kr and kt of the material, Snell's law with the indices of the media on both sides, and on
 // total internal reflection the transmitted weight moved to the reflected ray (Whitted 1980);
@@ -82,6 +110,7 @@ struct Branches {
     float kr = 0, kt = 0;
     Vector3 refracted;  // unit; when kt > 0
     bool entering;      // the refracted ray enters the object (else it leaves it)
+    float eta = 1;      // n1 / n2 of the refraction, when kt > 0
 };
 
 // Snell's law's indices at c: n1 on the ray's side, n2 beyond.
@@ -103,6 +132,7 @@ inline Branches branches_at(const SurfaceContext& c, Vector3 direction, const Me
         const auto [n1, n2] = snell_indices(c, media, wavelength);
         if (const auto t = refract(direction, c.n, n1 / n2)) {
             b.refracted = normalize(*t);
+            b.eta = n1 / n2;
             if (m.fresnel) {  // kt F of it reflects
                 const float reflected =
                     b.kt * fresnel_dielectric(-dot(direction, to_vector(c.n)), n1 / n2);

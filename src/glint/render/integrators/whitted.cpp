@@ -7,43 +7,44 @@
 
 namespace glint {
 
-Color WhittedIntegrator::trace_eye_ray(const Ray& ray, RayStats& stats) {
+Color WhittedIntegrator::trace_eye_ray(const Ray& ray, RayStats& stats,
+                                       const RayDifferential* pencil) {
     stats.count(RayKind::primary);
-    return trace(ray, 1, 1, stats, world_.eye_media());
+    return trace(ray, 1, 1, stats, world_.eye_media(), pencil);
 }
 
 // shade() and what it calls are compiled twice: with kRecord, telling the recorder every event;
 // without, the renderer's own code, with no trace of the recorder in it.
 
 Color WhittedIntegrator::trace(const Ray& ray, int depth, float weight, RayStats& stats,
-                               const MediumStack& media) {
+                               const MediumStack& media, const RayDifferential* pencil) {
     if (recorder_) [[unlikely]]
-        return trace_recorded(ray, depth, weight, stats, media);
-    return shade<false>(ray, depth, weight, stats, media);
+        return trace_recorded(ray, depth, weight, stats, media, pencil);
+    return shade<false>(ray, depth, weight, stats, media, pencil);
 }
 
 template <bool kRecord>
 Color WhittedIntegrator::trace_ray(const Ray& ray, int depth, float weight, RayStats& stats,
-                                   const MediumStack& media) {
+                                   const MediumStack& media, const RayDifferential* pencil) {
     if constexpr (kRecord)
-        return trace_recorded(ray, depth, weight, stats, media);
+        return trace_recorded(ray, depth, weight, stats, media, pencil);
     else
-        return shade<false>(ray, depth, weight, stats, media);
+        return shade<false>(ray, depth, weight, stats, media, pencil);
 }
 
 // Out of line: the renderer's code stays as small as it was without a recorder.
 [[gnu::noinline]] Color WhittedIntegrator::trace_recorded(const Ray& ray, int depth, float weight,
-                                                          RayStats& stats,
-                                                          const MediumStack& media) {
+                                                          RayStats& stats, const MediumStack& media,
+                                                          const RayDifferential* pencil) {
     recorder_->begin_ray(ray, depth, weight);
-    const Color color = shade<true>(ray, depth, weight, stats, media);
+    const Color color = shade<true>(ray, depth, weight, stats, media, pencil);
     recorder_->end_ray(color);
     return color;
 }
 
 template <bool kRecord>
 Color WhittedIntegrator::shade(const Ray& ray, int depth, float weight, RayStats& stats,
-                               const MediumStack& media) {
+                               const MediumStack& media, const RayDifferential* pencil) {
     const RenderSettings& settings = world_.settings();
     const auto hit = world_.intersect(ray, {0, kInfinity}, kVisibleToCameraRays);
     if (!hit) {
@@ -53,7 +54,7 @@ Color WhittedIntegrator::shade(const Ray& ray, int depth, float weight, RayStats
     }
     if (depth == 1) ++stats.primary_hits;
 
-    const SurfaceContext c = surface_context(world_, ray, *hit);
+    const SurfaceContext c = surface_context(world_, ray, *hit, pencil);
     if constexpr (kRecord) recorder_->hit(c, *hit);
     const Material& m = *c.material;
     Color color = c.emission + ambient_term(m, c.color, world_.ambient());
@@ -75,14 +76,16 @@ Color WhittedIntegrator::shade(const Ray& ray, int depth, float weight, RayStats
         stats.count(RayKind::reflected);
         const Ray r = spawn_from(world_, c, ray, normalize(reflect(ray.direction, c.n)));
         if constexpr (kRecord) recorder_->branch(RayKind::reflected, Color::gray(b.kr));
-        color += b.kr * trace_ray<kRecord>(r, depth + 1, weight * b.kr, stats, media);
+        color += b.kr * trace_ray<kRecord>(r, depth + 1, weight * b.kr, stats, media,
+                                           or_null(mirror_pencil(c, ray, pencil)));
     }
     if (b.kt > 0 && weight * b.kt >= settings.min_weight) {
         stats.count(RayKind::refracted);
         const Ray t = spawn_from(world_, c, ray, b.refracted);
         if constexpr (kRecord) recorder_->branch(RayKind::refracted, Color::gray(b.kt));
         color += b.kt *
-                 trace_ray<kRecord>(t, depth + 1, weight * b.kt, stats, media_beyond(c, b, media));
+                 trace_ray<kRecord>(t, depth + 1, weight * b.kt, stats, media_beyond(c, b, media),
+                                    or_null(refraction_pencil(c, ray, pencil, b.eta, b.refracted)));
     }
     return color;
 }

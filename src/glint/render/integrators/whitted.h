@@ -27,19 +27,22 @@ public:
     explicit WhittedIntegrator(const World& world) : world_(world), feelers_(world) {}
     WhittedIntegrator(const World& world, const Shared&) : WhittedIntegrator(world) {}
 
-    // The colour seen along an eye ray. Counts every ray it traces, the eye ray included.
-    Color trace_eye_ray(const Ray& ray, RayStats& stats);
+    // The colour seen along an eye ray, which may carry its pencil (pencil.h; null: none).
+    // Counts every ray it traces, the eye ray included.
+    Color trace_eye_ray(const Ray& ray, RayStats& stats, const RayDifferential* pencil = nullptr);
     // The render loop's form: Whitted's ray tracer draws no random numbers of its own. An area
     // light is a point light at its centre; objects that emit light only glow.
-    Color trace_eye_ray(const Ray& ray, SampleStream&, RayStats& stats) {
-        return trace_eye_ray(ray, stats);
+    Color trace_eye_ray(const Ray& ray, const RayDifferential* pencil, SampleStream&,
+                        RayStats& stats) {
+        return trace_eye_ray(ray, stats, pencil);
     }
 
     // The colour seen along a ray at the given depth of the ray tree (eye rays are depth 1)
     // whose contribution to the pixel is scaled by weight (the product of kr and kt above it),
     // travelling through the given media. Rough surfaces reflect and refract as mirrors do.
+    // The pencil, when the ray carries one, follows it through mirrors and glass.
     Color trace(const Ray& ray, int depth, float weight, RayStats& stats,
-                const MediumStack& media = kVacuum);
+                const MediumStack& media = kVacuum, const RayDifferential* pencil = nullptr);
 
     // Records every ray it traces from now on into `recorder` (glint explain, output variables);
     // null stops.
@@ -48,12 +51,13 @@ public:
 private:
     // A ray traced and told to the recorder.
     Color trace_recorded(const Ray& ray, int depth, float weight, RayStats& stats,
-                         const MediumStack& media);
+                         const MediumStack& media, const RayDifferential* pencil);
     template <bool kRecord>
     Color trace_ray(const Ray& ray, int depth, float weight, RayStats& stats,
-                    const MediumStack& media);
+                    const MediumStack& media, const RayDifferential* pencil);
     template <bool kRecord>
-    Color shade(const Ray& ray, int depth, float weight, RayStats& stats, const MediumStack& media);
+    Color shade(const Ray& ray, int depth, float weight, RayStats& stats, const MediumStack& media,
+                const RayDifferential* pencil);
 
     const World& world_;
     ShadowFeelers feelers_;

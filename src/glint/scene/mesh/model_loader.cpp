@@ -378,14 +378,14 @@ private:
             resolve);
     }
 
-    std::shared_ptr<const Image> texture_image(const aiScene& scene, const std::string& path,
-                                               const std::string& material_name) {
+    std::shared_ptr<const MipMap> texture_image(const aiScene& scene, const std::string& path,
+                                                const std::string& material_name) {
         const std::vector<std::string> notes{"the texture of material \"" + material_name + "\""};
         if (const aiTexture* embedded = scene.GetEmbeddedTexture(path.c_str())) {
             const std::string key = name_ + "[" + path + "]";
             if (auto it = textures_.find(key); it != textures_.end()) return it->second;
             try {
-                auto image = std::make_shared<const Image>(decode_embedded(*embedded, key));
+                auto image = std::make_shared<const MipMap>(decode_embedded(*embedded, key));
                 return textures_[key] = image;
             } catch (const ImageError& e) {
                 throw SceneError({name_, 0, 0}, "embedded texture " + path + ": " + e.detail,
@@ -417,7 +417,7 @@ private:
         if (auto it = textures_.find(key); it != textures_.end()) return it->second;
         try {
             record_read(sandbox_, *found);
-            return textures_[key] = std::make_shared<const Image>(
+            return textures_[key] = std::make_shared<const MipMap>(
                        load_texture_image(*found, sandbox_.file_limit(kMaxTextureFileBytes),
                                           sandbox_.limits.image_pixels));
         } catch (const ImageError& e) {
@@ -531,7 +531,7 @@ private:
     Model model_;
     std::map<PartKey, MeshData> arrays_;
     std::map<std::string, Matrix> node_transforms_;  // world from node, by node name
-    std::map<std::string, std::shared_ptr<const Image>> textures_;
+    std::map<std::string, std::shared_ptr<const MipMap>> textures_;
     std::vector<std::filesystem::path> material_libraries_;
     std::vector<std::string> undefined_materials_;
 };

@@ -24,7 +24,7 @@ constexpr NoisePattern kNoisePatterns[] = {NoisePattern::fbm, NoisePattern::gran
                                            NoisePattern::marble, NoisePattern::turbulence,
                                            NoisePattern::wood};
 constexpr std::string_view kWraps[] = {"clamp", "repeat"};
-constexpr std::string_view kFilters[] = {"bilinear", "nearest"};
+constexpr std::string_view kFilters[] = {"trilinear", "ewa", "bilinear", "nearest"};
 constexpr std::string_view kCheckerSpaces[] = {"solid", "uv"};
 constexpr std::string_view kHighlights[] = {"blinn", "phong"};
 constexpr std::string_view kEmissionSides[] = {"both", "front"};
@@ -56,7 +56,7 @@ Texture read_image_texture(const YamlSource& source, const ReadSandbox& sandbox,
     const auto path = scene_file_path(source, sandbox, file.value, name, "texture");
     try {
         record_read(sandbox, path);
-        texture.image = std::make_shared<const Image>(load_texture_image(
+        texture.image = std::make_shared<const MipMap>(load_texture_image(
             path, sandbox.file_limit(kMaxTextureFileBytes), sandbox.limits.image_pixels));
     } catch (const ImageError& e) {
         throw source.error_at(file.value, "cannot read texture " + quote(name) + ": " + e.detail,
@@ -66,9 +66,11 @@ Texture read_image_texture(const YamlSource& source, const ReadSandbox& sandbox,
     texture.wrap = map.choice("wrap", kWraps, "wrap mode", "wrap modes", "repeat") == "clamp"
                        ? TextureWrap::clamp
                        : TextureWrap::repeat;
-    texture.filter = map.choice("filter", kFilters, "filter", "filters", "bilinear") == "nearest"
-                         ? TextureFilter::nearest
-                         : TextureFilter::bilinear;
+    const std::string filter = map.choice("filter", kFilters, "filter", "filters", "trilinear");
+    texture.filter = filter == "ewa"        ? TextureFilter::ewa
+                     : filter == "bilinear" ? TextureFilter::bilinear
+                     : filter == "nearest"  ? TextureFilter::nearest
+                                            : TextureFilter::trilinear;
     return texture;
 }
 
