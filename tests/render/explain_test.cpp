@@ -258,6 +258,39 @@ TEST(Explain, SnellsLawValuesAtASurface) {
     EXPECT_EQ(eye.branches[0].k, 0.9f);
 }
 
+// Every hit tells how wide the ray's pencil is there: a pixel's step of the window at the
+// distance of the wall, and wider again after a convex mirror.
+TEST(Explain, EachHitTellsHowWideItsPencilIs) {
+    Scene scene;
+    scene.settings.width = scene.settings.height = 100;
+    scene.settings.filter = FilterSpec{FilterKind::box, 0.5f};
+    scene.camera.from = {0, 0, 0};
+    scene.camera.at = {0, 0, 1};
+    scene.camera.fov = 90;  // the window at distance 1 is 2 across: 0.02 a pixel
+    Material mirror;
+    mirror.reflect = 1;
+    scene.materials = {Material{}, mirror};
+    scene.objects.push_back({Plane{{0, 0, 5}, Normal3{0, 0, -1}}, 0});
+    scene.objects.push_back({Plane{{0, 0, -5}, Normal3{0, 0, 1}}, 0});  // behind the camera
+    scene.objects.push_back({Sphere{{0, 0, 2}, 0.5f}, 1});
+    const World world(scene);
+    // Beside the ball, at the wall 5 away: 5 x 0.02 a pixel (a little more off the centre).
+    const RayTree wall = explain(world, {10, 50, 0, 0});
+    ASSERT_TRUE(wall.nodes.at(0).pencil);
+    EXPECT_NEAR(pencil_width(*wall.nodes[0].pencil), 0.1f, 0.01f);
+    EXPECT_NE(ray_tree_text(wall).find("pencil 0.1"), std::string::npos) << ray_tree_text(wall);
+    EXPECT_NE(ray_tree_json(wall).find("\"pencil\": {\"width\": "), std::string::npos);
+    // Off the ball's mirror, back past the camera to the wall behind it: the convex mirror
+    // spreads the pencil many times wider than it met the ball.
+    const RayTree ball = explain(world, {53, 52, 0, 0});
+    ASSERT_GE(ball.nodes.size(), 2u);
+    const RayNode& reflected = ball.nodes[1];
+    EXPECT_EQ(reflected.kind, RayKind::reflected);
+    EXPECT_EQ(reflected.object, 1u);
+    ASSERT_TRUE(ball.nodes[0].pencil && reflected.pencil);
+    EXPECT_GT(pencil_width(*reflected.pencil), 10 * pencil_width(*ball.nodes[0].pencil));
+}
+
 // A hit on a mesh names its triangle, in the tree and in the text.
 TEST(Explain, AMeshHitNamesItsTriangle) {
     const Scene scene = small("scenes/features/meshes.yaml", 1);
