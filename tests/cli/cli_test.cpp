@@ -653,6 +653,28 @@ TEST_F(Cli, ShadowMapsFromTheCommandLineAreCheckedAsTheScenesAre) {
     EXPECT_NE(ok.out.find("shadow-map lookups"), std::string::npos) << ok.out;
 }
 
+// Cones are not rays: explain and the output variables refuse the cone integrator; a render and
+// glint info take it, info telling which objects it sees by their axis ray alone.
+TEST_F(Cli, TheConeIntegratorRendersAndExplainAndAovsRefuseIt) {
+    const Outcome explain =
+        run_glint("explain " + scene("features/cone-tracing.yaml") + " --pixel 10,10");
+    EXPECT_EQ(explain.exit_code, 2);
+    EXPECT_NE(explain.err.find("explain follows rays, and the cone integrator traces cones"),
+              std::string::npos)
+        << explain.err;
+    const Outcome aov =
+        run_glint("render " + scene("features/cone-tracing.yaml") + " --aov depth -q -o cone.exr");
+    EXPECT_EQ(aov.exit_code, 2);
+    EXPECT_NE(aov.err.find("--aov: the output variables follow rays"), std::string::npos)
+        << aov.err;
+    const Outcome ok = run_glint("render " + scene("features/cone-tracing.yaml") +
+                                 " --width 48 --height 27 -q -o cone.png");
+    EXPECT_EQ(ok.exit_code, 0) << ok.err;
+    const Outcome info = run_glint("info " + scene("features/cone-tracing.yaml"));
+    EXPECT_EQ(info.exit_code, 0) << info.err;
+    EXPECT_NE(info.out.find("object 8 (box): has no cone test"), std::string::npos) << info.out;
+}
+
 // The samples image: the counts themselves in a float format; in a PNG a linear ramp of grey,
 // the 8-bit value 255 count / most (not sRGB-encoded, which would show half the samples as 73%).
 TEST_F(Cli, TheSamplesImageIsALinearRampOfTheCounts) {

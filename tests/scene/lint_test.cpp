@@ -269,5 +269,25 @@ TEST(Lint, PhotonsAndNextEventWarnUnderIntegratorsThatIgnoreThem) {
     EXPECT_TRUE(of_rule(parse("path", "next_event: all"), "unused-setting").empty());
 }
 
+// Under the cone integrator, a note for each object it has no cone test for; none under others.
+TEST(Lint, ConeFallbackNotesTheObjectsTheConeSeesByItsAxis) {
+    const auto parse = [](const std::string& integrator) {
+        return parse_yaml_scene("image: {integrator: " + integrator + "}\n" +
+                                    "camera: {from: [0, 1, -5], at: [0, 0, 0], fov: 40}\n"
+                                    "lights: [{type: point, position: [0, 5, -3]}]\n"
+                                    "objects:\n"
+                                    "  - {type: sphere, center: [0, 0, 0], radius: 1}\n"
+                                    "  - {type: box, min: [1, 0, 0], max: [2, 1, 1]}\n",
+                                "lint.yaml");
+    };
+    const auto notes = of_rule(parse("cone"), "cone-fallback");
+    ASSERT_EQ(notes.size(), 1u);
+    EXPECT_EQ(notes[0].subject, "object 1 (box)");
+    EXPECT_TRUE(notes[0].note);
+    ASSERT_TRUE(notes[0].location);
+    EXPECT_EQ(notes[0].location->line, 6);
+    EXPECT_TRUE(of_rule(parse("whitted"), "cone-fallback").empty());
+}
+
 }  // namespace
 }  // namespace glint

@@ -45,11 +45,12 @@ World::World(Scene scene, AccelKind accel, ShadowAcceleration shadows)
         material_of_.push_back(object.material);
     }
     scene.objects = {};  // the moved-from shapes: freed before the structure is built
-    carries_pencils_ = std::any_of(materials_.begin(), materials_.end(), [](const Material& m) {
-        const auto* image = std::get_if<ImageTexture>(&m.color);
-        return image &&
-               (image->filter == TextureFilter::trilinear || image->filter == TextureFilter::ewa);
-    });
+    carries_pencils_ = settings_.integrator == IntegratorKind::cone ||
+                       std::any_of(materials_.begin(), materials_.end(), [](const Material& m) {
+                           const auto* image = std::get_if<ImageTexture>(&m.color);
+                           return image && (image->filter == TextureFilter::trilinear ||
+                                            image->filter == TextureFilter::ewa);
+                       });
     if (!lights_scene_.empty()) {
         lights_scene_.resize(primitives_.size(), 0);
         object_light_of_.resize(primitives_.size(), -1);

@@ -56,7 +56,8 @@ public:
         return object_light_of_.empty() ? -1 : object_light_of_[primitive];
     }
     // Whether eye rays carry their pencils (pencil.h): some material's image texture filters
-    // over the footprint of a pixel (trilinear or ewa).
+    // over the footprint of a pixel (trilinear or ewa), or the integrator traces cones as wide
+    // as the pixel.
     bool carries_pencils() const { return carries_pencils_; }
     // What the user should know about the world as built ("an emitting torus cannot light").
     const std::vector<std::string>& warnings() const { return warnings_; }

@@ -9,6 +9,11 @@ namespace {
 
 // Sorted by name, for the messages that list them.
 constexpr IntegratorInfo kIntegrators[] = {
+    // One cone a pixel through its centre, its own anti-aliasing: no filter beyond the pixel.
+    {IntegratorKind::cone, "cone", SamplerKind::regular, FilterSpec{}, false, false, 0,
+     "Amanatides' cone tracing (1984): a cone a pixel, as wide as the pixel, each shape "
+     "covering a fraction of it blended front to back; shadows by cones to the lights, glossy "
+     "reflection by cones widened with roughness"},
     {IntegratorKind::distributed, "distributed", SamplerKind::jittered,
      // The notes' "stochastic sampling with Gaussian weighting".
      FilterSpec{FilterKind::gaussian, 1.5f}, false, false, 0,

@@ -14,7 +14,7 @@
 
 namespace glint {
 
-enum class IntegratorKind { whitted, distributed, path, light, photon };
+enum class IntegratorKind { whitted, distributed, path, light, photon, cone };
 
 struct IntegratorInfo {
     IntegratorKind kind;

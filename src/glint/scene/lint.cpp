@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "glint/geometry/cone_coverage.h"
 #include "glint/geometry/point_inside.h"
 #include "glint/math/constants.h"
 #include "glint/scene/integrators.h"
@@ -252,6 +253,19 @@ void unused_setting(const Scene& scene, Warnings& out) {
                        at(scene.sources.next_event)});
 }
 
+// The cone integrator covers spheres, planes, polygons, triangles and disks by their outlines;
+// other objects it sees along the cone's axis only.
+void cone_fallback(const Scene& scene, Warnings& out) {
+    if (scene.settings.integrator != IntegratorKind::cone) return;
+    for (std::size_t i = 0; i < scene.objects.size(); ++i) {
+        if (has_cone_test(scene.objects[i].shape)) continue;
+        out.push_back({"cone-fallback", object_subject(scene, i),
+                       "has no cone test: the cone integrator sees it by the cone's axis ray, "
+                       "all of the cone or none, so its edges are not anti-aliased",
+                       located(scene, scene.sources.objects, i), /*note=*/true});
+    }
+}
+
 }  // namespace
 
 std::string object_subject(const Scene& scene, std::size_t index) {
@@ -270,6 +284,7 @@ std::vector<LintWarning> lint_scene(const Scene& scene) {
     unused_material(scene, out);
     out_of_view(scene, out);
     unused_setting(scene, out);
+    cone_fallback(scene, out);
     return out;
 }
 

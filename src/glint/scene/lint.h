@@ -27,8 +27,8 @@ struct LintWarning {
 
 // The rules' names, in the order lint_scene() applies them.
 inline constexpr std::string_view kLintRules[] = {
-    "no-lights", "camera-inside",   "light-inside", "energy",        "ambient",
-    "ior",       "unused-material", "out-of-view",  "unused-setting"};
+    "no-lights", "camera-inside",   "light-inside", "energy",         "ambient",
+    "ior",       "unused-material", "out-of-view",  "unused-setting", "cone-fallback"};
 
 // Every warning, rule by rule in kLintRules' order, then in scene order.
 std::vector<LintWarning> lint_scene(const Scene& scene);

@@ -2,6 +2,7 @@
 #include "glint/render/explain/explain.h"
 
 #include <optional>
+#include <stdexcept>
 
 #include "glint/render/explain/particle_report.h"
 #include "glint/render/explain/ray_tree_recorder.h"
@@ -13,6 +14,8 @@ namespace glint {
 
 RayTree explain(const World& world, const PixelSample& which) {
     const RenderSettings& settings = world.settings();
+    if (settings.integrator == IntegratorKind::cone)
+        throw std::invalid_argument("explain follows rays; the cone integrator traces cones");
     const Camera& camera = world.camera();
     const Sampler sampler(sampler_of(settings), settings.samples_per_pixel, which.seed);
     const std::uint64_t pixel =

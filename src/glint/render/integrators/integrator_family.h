@@ -16,6 +16,7 @@
 //       after each eye sample: particles that land anywhere on the film
 #pragma once
 
+#include "glint/render/integrators/cone_tracer.h"
 #include "glint/render/integrators/distributed.h"
 #include "glint/render/integrators/light_tracer.h"
 #include "glint/render/integrators/path.h"
@@ -39,6 +40,8 @@ decltype(auto) with_integrator(IntegratorKind kind, F&& f) {
             return f.template operator()<LightIntegrator>();
         case IntegratorKind::photon:
             return f.template operator()<PhotonIntegrator>();
+        case IntegratorKind::cone:
+            return f.template operator()<ConeIntegrator>();
     }
     __builtin_unreachable();  // every kind has a case: -Wswitch names one that has not
 }
