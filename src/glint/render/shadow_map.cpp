@@ -169,7 +169,9 @@ bool ShadowMap::blocks(const Texel& t, const Receiver& r) const {
     const float facing = dot(r.n, along);
     // A texel whose ray runs along the plane or away from it cannot shadow it.
     if (!(facing < 0)) return false;
-    return d + r.bias < dot(r.n, r.q - from) / facing;
+    // Depths are measured in steps of `along`, which is longer than a unit off a face's
+    // centre (up to sqrt(3) at its corners): the bias, a distance, in the same steps.
+    return d + r.bias / length(along) < dot(r.n, r.q - from) / facing;
 }
 
 float ShadowMap::lit_share(int face, float x, float y, const Receiver& r) const {
