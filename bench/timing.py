@@ -2,6 +2,7 @@
 
 import resource
 import subprocess
+import sys
 import time
 
 
@@ -20,3 +21,14 @@ def timed(cmd, timeout, cwd=None):
     r1 = resource.getrusage(resource.RUSAGE_CHILDREN)
     cpu = (r1.ru_utime - r0.ru_utime) + (r1.ru_stime - r0.ru_stime)
     return status, wall, cpu, stderr
+
+
+def fastest(cmd, repeat, timeout):
+    """The fastest wall time of `repeat` runs of cmd; exits with its error if any run fails."""
+    best = None
+    for _ in range(repeat):
+        status, wall, _, stderr = timed(cmd, timeout)
+        if status != "ok":
+            sys.exit("glint failed (%s): %s\n%s" % (status, " ".join(cmd), stderr))
+        best = wall if best is None else min(best, wall)
+    return best

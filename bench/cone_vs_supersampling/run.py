@@ -26,7 +26,7 @@ sys.path.insert(0, os.path.dirname(HERE))  # bench/, for timing and equal_error
 sys.dont_write_bytecode = True  # no __pycache__ in the source tree
 import images  # noqa: E402
 from equal_error import time_to_reach  # noqa: E402
-from timing import timed  # noqa: E402
+from timing import fastest  # noqa: E402
 
 
 def log(msg):
@@ -39,13 +39,7 @@ def render(args, integrator, spp, out):
            "--threads", "0", "--quiet"]
     if integrator == "distributed":
         cmd += ["--sampler", "jittered"]
-    best = None
-    for _ in range(args.repeat):
-        status, wall, _, stderr = timed(cmd, args.timeout)
-        if status != "ok":
-            sys.exit("glint failed (%s): %s\n%s" % (status, " ".join(cmd), stderr))
-        best = wall if best is None else min(best, wall)
-    return best
+    return fastest(cmd, args.repeat, args.timeout)
 
 
 def main():

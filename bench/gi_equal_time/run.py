@@ -35,7 +35,7 @@ sys.path.insert(0, os.path.dirname(HERE))  # bench/, for timing and equal_error
 sys.dont_write_bytecode = True  # no __pycache__ in the source tree
 import images  # noqa: E402
 from equal_error import time_to_reach  # noqa: E402
-from timing import timed  # noqa: E402
+from timing import fastest  # noqa: E402
 
 INTEGRATORS = ("path", "light", "photon")
 SEED, REFERENCE_SEED = 1, 2
@@ -49,13 +49,7 @@ def render(args, integrator, spp, seed, out):
     cmd = [args.glint, "render", args.scene, "-o", out, "--width", str(args.width), "--height",
            str(args.height), "--spp", str(spp), "--seed", str(seed), "--integrator", integrator,
            "--threads", "0", "--quiet"]
-    best = None
-    for _ in range(args.repeat):
-        status, wall, cpu, stderr = timed(cmd, args.timeout)
-        if status != "ok":
-            sys.exit("glint failed (%s): %s\n%s" % (status, " ".join(cmd), stderr))
-        best = wall if best is None else min(best, wall)
-    return best
+    return fastest(cmd, args.repeat, args.timeout)
 
 
 def side_by_side(pictures, gap=4):

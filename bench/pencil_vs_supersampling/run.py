@@ -26,7 +26,7 @@ sys.path.insert(0, os.path.dirname(HERE))  # bench/, for timing and equal_error
 sys.dont_write_bytecode = True  # no __pycache__ in the source tree
 import images  # noqa: E402
 from equal_error import time_to_reach  # noqa: E402
-from timing import timed  # noqa: E402
+from timing import fastest  # noqa: E402
 
 SCENE = os.path.join(REPO, "scenes", "features", "texture-filtering.yaml")
 
@@ -48,13 +48,7 @@ def variant(work, texture_filter):
 def render(args, scene, spp, out):
     cmd = [args.glint, "render", scene, "-o", out, "--width", str(args.width), "--height",
            str(args.height), "--spp", str(spp), "--threads", "0", "--quiet"]
-    best = None
-    for _ in range(args.repeat):
-        status, wall, _, stderr = timed(cmd, args.timeout)
-        if status != "ok":
-            sys.exit("glint failed (%s): %s\n%s" % (status, " ".join(cmd), stderr))
-        best = wall if best is None else min(best, wall)
-    return best
+    return fastest(cmd, args.repeat, args.timeout)
 
 
 def main():

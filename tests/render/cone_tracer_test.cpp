@@ -10,9 +10,13 @@
 
 #include "glint/math/constants.h"
 #include "glint/render/render.h"
+#include "reference_values.h"
 
 namespace glint {
 namespace {
+
+using testing::penumbra_by_integration;
+using testing::rms_difference;
 
 Material glowing(Color c) {
     Material m;
@@ -41,25 +45,6 @@ TEST(ConeTracer, APixelHalfCoveredByAnEdgeIsHalfItsColour) {
     EXPECT_NEAR(image.at(0, 1).r + image.at(2, 1).r, 1, 1e-3f);
 }
 
-// As distributed_test's: a disk light of radius 1 at height 4 facing down, an occluding disk of
-// radius 0.5 at height 2, a white floor (kd 1): the exact local term at (x, 0, 0) is the mean
-// over the light of visible (N.L).
-double penumbra_by_integration(float x) {
-    const int rings = 400, sectors = 400;
-    double sum = 0, area = 0;
-    for (int i = 0; i < rings; ++i)
-        for (int j = 0; j < sectors; ++j) {
-            const double r = (i + 0.5) / rings, phi = 2 * kPi * (j + 0.5) / sectors;
-            const double qx = r * std::cos(phi), qz = r * std::sin(phi);
-            const double dx = qx - x, dy = 4, dz = qz;
-            const double d = std::sqrt(dx * dx + dy * dy + dz * dz);
-            const double mx = x + dx / 2, mz = dz / 2;
-            area += r;
-            if (mx * mx + mz * mz >= 0.25) sum += r * dy / d;
-        }
-    return sum / area;
-}
-
 TEST(ConeTracer, SoftShadowOfADiskLightMatchesThePenumbraIntegral) {
     Scene scene;
     scene.settings.integrator = IntegratorKind::cone;
@@ -77,7 +62,8 @@ TEST(ConeTracer, SoftShadowOfADiskLightMatchesThePenumbraIntegral) {
         const Ray down{{x, 1, 0}, {0, -1, 0}};
         const Color c = cone.trace({down.origin, down.direction, 1e-4f, 0}, down,
                                    ConeIntegrator::kNone, 1, 1, stats, kVacuum);
-        // The cone sees the part of the light the occluder leaves, lit by N.L at its centre;
+        // The disk light and occluder of distributed_test's penumbra (reference_values.h). The cone
+        // sees the part of the light the occluder leaves, lit by N.L at its centre;
         // the integral weighs N.L across the light: within 0.02 (0.016 at x = 1.5).
         EXPECT_NEAR(c.r, penumbra_by_integration(x), 0.02) << "x = " << x;
     }
@@ -115,15 +101,6 @@ Scene spheres_and_polygons(IntegratorKind integrator, int samples) {
     light.position = {-3, 6, -4};
     scene.lights = {light};
     return scene;
-}
-
-float rms_difference(const Image& a, const Image& b) {
-    double sum = 0;
-    for (std::size_t i = 0; i < a.pixels.size(); ++i) {
-        const Color d = a.pixels[i] - b.pixels[i];
-        sum += double(d.r * d.r + d.g * d.g + d.b * d.b) / 3;
-    }
-    return float(std::sqrt(sum / double(a.pixels.size())));
 }
 
 TEST(ConeTracer, OneConeAPixelComesCloserToSupersamplingThanOneRay) {

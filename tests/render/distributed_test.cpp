@@ -9,9 +9,12 @@
 
 #include "glint/math/constants.h"
 #include "glint/render/integrators/whitted.h"
+#include "reference_values.h"
 
 namespace glint {
 namespace {
+
+using testing::penumbra_by_integration;
 
 // A white diffuse floor y = 0 (kd 1, nothing else), camera above, no ambient light.
 Scene floor_scene() {
@@ -39,28 +42,6 @@ float mean_on_floor(const World& world, float x, float z, int n) {
         sum += integrator.trace({{x, 0.01f, z}, {0, -1, 0}}, 2, 1, stream, stats).r;
     }
     return float(sum / n);
-}
-
-// The disk light of radius 1 at height 4 over the origin, facing down, and an occluding disk of
-// radius 0.5 at height 2: the exact local term at floor point p is the mean over the light's
-// area of visible(p, q) (N.L(q)), with IL = 1 and kd C = 1. Integrated on a fine polar grid.
-double penumbra_by_integration(float x) {
-    const int rings = 400, sectors = 400;
-    double sum = 0, area = 0;
-    for (int i = 0; i < rings; ++i)
-        for (int j = 0; j < sectors; ++j) {
-            const double r = (i + 0.5) / rings, phi = 2 * kPi * (j + 0.5) / sectors;
-            const double qx = r * std::cos(phi), qz = r * std::sin(phi);
-            const double dx = qx - x, dy = 4, dz = qz;
-            const double d = std::sqrt(dx * dx + dy * dy + dz * dz);
-            // Where the segment from p = (x, 0, 0) to q crosses y = 2: halfway.
-            const double mx = x + dx / 2, mz = dz / 2;
-            const bool blocked = mx * mx + mz * mz < 0.25;
-            const double weight = r;  // area element r dr dphi
-            area += weight;
-            if (!blocked) sum += weight * dy / d;
-        }
-    return sum / area;
 }
 
 TEST(Distributed, PenumbraOfADiskLightMatchesNumericalIntegration) {

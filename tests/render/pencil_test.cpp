@@ -13,9 +13,12 @@
 #include "glint/geometry/shape.h"
 #include "glint/render/render.h"
 #include "glint/shading/optics.h"
+#include "reference_values.h"
 
 namespace glint {
 namespace {
+
+using testing::rms_difference;
 
 void expect_near(Vector3 a, Vector3 b, float tolerance) {
     EXPECT_NEAR(a.x, b.x, tolerance) << "x";
@@ -247,16 +250,6 @@ Scene checkered_floor(TextureFilter filter, int samples) {
     scene.objects.push_back({Plane{{0, 0, 0}, {0, 1, 0}}, 0});
     scene.objects.push_back({Sphere{{0.8f, 0.5f, -3}, 0.5f}, 1});
     return scene;
-}
-
-// The root mean square difference of two images' grey.
-float rms_difference(const Image& a, const Image& b) {
-    double sum = 0;
-    for (std::size_t i = 0; i < a.pixels.size(); ++i) {
-        const Color d = a.pixels[i] - b.pixels[i];
-        sum += double(d.r * d.r + d.g * d.g + d.b * d.b) / 3;
-    }
-    return float(std::sqrt(sum / double(a.pixels.size())));
 }
 
 TEST(Pencil, FilteredTexturesAtOneSampleComeCloseToASupersampledImage) {
