@@ -83,10 +83,12 @@ int run_explain(const ExplainCommand& command) {
         apply_image_options(command.image, scene.settings);
         check_integrator_fits(scene);
         const RenderSettings& s = scene.settings;
-        if (s.integrator == IntegratorKind::cone)
-            throw UsageError{
-                "explain follows rays, and the cone integrator traces cones: explain the pixel "
-                "with --integrator whitted to see the rays its cone stands for"};
+        if (s.integrator == IntegratorKind::cone || s.integrator == IntegratorKind::beam) {
+            const std::string name(integrator_name(s.integrator));
+            throw UsageError{"explain follows rays, and the " + name + " integrator traces " +
+                             name + "s: explain the pixel with --integrator whitted to see the " +
+                             "rays its " + name + " stands for"};
+        }
         if (x >= s.width || y >= s.height)
             throw UsageError{"pixel (" + std::to_string(x) + ", " + std::to_string(y) +
                              ") is outside the image of " + std::to_string(s.width) + "x" +

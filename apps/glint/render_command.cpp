@@ -241,9 +241,12 @@ int run_render(const RenderCommand& command) {
             std::fprintf(stderr, "glint: warning: %s\n", warning.c_str());
         apply_image_options(command.image, scene.settings);
         check_integrator_fits(scene);
-        if (!aovs.list().empty() && scene.settings.integrator == IntegratorKind::cone)
-            throw UsageError{
-                "--aov: the output variables follow rays, and the cone integrator traces cones"};
+        if (const IntegratorKind k = scene.settings.integrator;
+            !aovs.list().empty() && (k == IntegratorKind::cone || k == IntegratorKind::beam)) {
+            const std::string name(integrator_name(k));
+            throw UsageError{"--aov: the output variables follow rays, and the " + name +
+                             " integrator traces " + name + "s"};
+        }
         const auto accel = accel_from_name(command.accel);
         if (!accel) throw UsageError{"unknown acceleration structure \"" + command.accel + "\""};
         check_memory(scene, *accel, command, aovs);

@@ -675,6 +675,52 @@ TEST_F(Cli, TheConeIntegratorRendersAndExplainAndAovsRefuseIt) {
     EXPECT_NE(info.out.find("object 8 (box): has no cone test"), std::string::npos) << info.out;
 }
 
+// Beams are not rays either; and a scene with a curved shape, a lens or Fresnel's weights is
+// refused for the beam integrator at its place in the file.
+TEST_F(Cli, TheBeamIntegratorRendersPolygonsAndRefusesWhatItCannotTrace) {
+    const Outcome ok = run_glint("render " + scene("features/beam-tracing.yaml") +
+                                 " --width 48 --height 30 -o beam.png");
+    EXPECT_EQ(ok.exit_code, 0) << ok.err;
+    EXPECT_NE(ok.out.find("reflected"), std::string::npos) << ok.out;  // beams, counted
+    const Outcome explain =
+        run_glint("explain " + scene("features/beam-tracing.yaml") + " --pixel 10,10");
+    EXPECT_EQ(explain.exit_code, 2);
+    EXPECT_NE(explain.err.find("explain follows rays, and the beam integrator traces beams"),
+              std::string::npos)
+        << explain.err;
+    const Outcome aov =
+        run_glint("render " + scene("features/beam-tracing.yaml") + " --aov depth -q -o b.exr");
+    EXPECT_EQ(aov.exit_code, 2);
+    EXPECT_NE(aov.err.find("the beam integrator traces beams"), std::string::npos) << aov.err;
+
+    const std::string head =
+        "image: {width: 8, height: 8, integrator: beam}\n"
+        "camera: {from: [0, 0, -5], at: [0, 0, 0]}\n";
+    const fs::path curved = write_scene(
+        "curved.yaml", head +
+                           "materials:\n  m: {color: [1, 1, 1]}\nobjects:\n"
+                           "  - {type: polygon, vertices: [[0, 0, 0], [1, 0, 0], [0, 1, 0]], "
+                           "material: m}\n"
+                           "  - {type: sphere, center: [0, 0, 1], radius: 1, material: m}\n");
+    const Outcome sphere = run_glint("render '" + curved.string() + "' -o c.png");
+    EXPECT_EQ(sphere.exit_code, 2);
+    EXPECT_NE(sphere.err.find("curved.yaml:7:5: error: object 1 is a sphere, which is curved"),
+              std::string::npos)
+        << sphere.err;
+    EXPECT_FALSE(fs::exists(dir_ / "c.png"));
+    const fs::path fresnel = write_scene(
+        "fresnel.yaml", head +
+                            "materials:\n  glass: {transmit: 0.9, ior: 1.5, fresnel: true}\n"
+                            "objects:\n"
+                            "  - {type: box, min: [0, 0, 0], max: [1, 1, 1], "
+                            "material: glass}\n");
+    const Outcome glass = run_glint("render '" + fresnel.string() + "' -o f.png");
+    EXPECT_EQ(glass.exit_code, 2);
+    EXPECT_NE(glass.err.find("fresnel.yaml:4:3: error: material 'glass' has fresnel: true"),
+              std::string::npos)
+        << glass.err;
+}
+
 // The samples image: the counts themselves in a float format; in a PNG a linear ramp of grey,
 // the 8-bit value 255 count / most (not sRGB-encoded, which would show half the samples as 73%).
 TEST_F(Cli, TheSamplesImageIsALinearRampOfTheCounts) {

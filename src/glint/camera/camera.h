@@ -37,6 +37,17 @@ public:
 
     Point3 eye() const { return eye_; }
 
+    // A static perspective camera's pinhole frame: the eye, the unit right, up and forward
+    // directions, and the half-size of the window at distance 1. The film position of a point p
+    // at d = p - eye is ((d.u / d.n / half_width + 1) width / 2, (1 - d.v / d.n / half_height)
+    // height / 2): what beam tracing projects polygons with.
+    struct Pinhole {
+        Point3 eye;
+        Vector3 u, v, n;
+        float half_width, half_height;
+    };
+    Pinhole pinhole() const { return {eye_, u_, v_, n_, half_width_, half_height_}; }
+
     // What a point seen by the camera needs to be splatted onto the film (light tracing): the
     // film position the ray from a point of the lens through it lands on, that lens point, and
     // We / pdf, the camera's importance for the direction over the density of the lens point as

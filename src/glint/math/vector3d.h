@@ -23,5 +23,8 @@ struct Vector3d {
     }
 };
 constexpr double dot(Vector3d a, Vector3d b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
+constexpr Vector3d cross(Vector3d a, Vector3d b) {
+    return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
+}
 
 }  // namespace glint

@@ -52,6 +52,23 @@ template <class Integrator, bool kAovs>
 void render_tile(const Tile& tile, Pass pass, const RenderInputs<Integrator>& in,
                  RenderState& state, TileTotals& totals) {
     const World& world = in.world;
+    // An integrator that draws whole tiles (beam tracing) draws each once, in the first pass;
+    // its pixels count every sample as taken.
+    if constexpr (requires(Integrator & i, FilmTile & f, RayStats & r) {
+                      i.draw_tile(tile, f, r);
+                  }) {
+        if (pass.begin == 0) {
+            Integrator integrator(world, in.shared);
+            FilmTile film_tile = state.film.make_tile(tile);
+            integrator.draw_tile(tile, film_tile, totals.rays);
+            state.film.merge(film_tile);
+        }
+        for (int y = tile.y0; y < tile.y1; ++y)
+            for (int x = tile.x0; x < tile.x1; ++x)
+                state.samples[std::size_t(y) * std::size_t(world.settings().width) +
+                              std::size_t(x)] = std::uint32_t(pass.end);
+        return;
+    }
     const FilterSampling* filter = in.filter;
     const Camera& camera = world.camera();
     const RenderSettings& settings = world.settings();

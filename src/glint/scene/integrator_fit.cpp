@@ -1,4 +1,5 @@
-// The checks of the particles' integrators: finite power for every light, a lens to reach.
+// The checks of the particles' integrators (finite power for every light, a lens to reach) and
+// of the beam integrator (planar polygons, a pinhole, one kr and kt a polygon).
 #include "glint/scene/integrator_fit.h"
 
 #include <cstdio>
@@ -40,9 +41,73 @@ std::string line_of(const SourceLocation& where) {
     return in ? line : std::string();
 }
 
+SourceLocation place_of(const Scene& scene, const std::vector<TextPosition>& places,
+                        std::size_t i) {
+    if (i < places.size()) return {scene.sources.file, places[i].line, places[i].column};
+    return {scene.sources.file, 0, 0};
+}
+
+// Beam tracing sweeps beams through planar polygons seen through a pinhole, and weighs each
+// reflected and refracted beam by one kr and kt over the whole polygon.
+void check_beam_fits(const Scene& scene) {
+    const CameraSpec& camera = scene.camera;
+    const SourceLocation file{scene.sources.file, 0, 0};
+    if (camera.projection != Projection::perspective || camera.lens.radius > 0 ||
+        !camera.motion.empty())
+        throw SceneError(file,
+                         "the beam integrator needs a still pinhole camera: its beams are "
+                         "pyramids from one eye, and a lens, an orthographic view or a moving "
+                         "camera has many",
+                         {"render it with the whitted or distributed integrator"});
+    for (std::size_t i = 0; i < scene.objects.size(); ++i) {
+        const auto unfit = beam_unfit_part(scene.objects[i].shape);
+        if (!unfit) continue;
+        const SourceLocation where =
+            i < scene.sources.objects.size()
+                ? SourceLocation{scene.sources.file, scene.sources.objects[i].line,
+                                 scene.sources.objects[i].column}
+                : file;
+        throw SceneError(where,
+                         "object " + std::to_string(i) + " is " + *unfit +
+                             ": the beam integrator traces scenes of planar polygons (polygons, "
+                             "triangles, meshes and boxes), whose reflections are linear maps",
+                         {"make it of polygons or a mesh, or render with the whitted integrator"},
+                         line_of(where));
+    }
+    for (std::size_t i = 0; i < scene.materials.size(); ++i) {
+        const Material& m = scene.materials[i];
+        const bool varies = m.fresnel || (m.maps && m.maps->reflect);
+        if (!varies) continue;
+        const SourceLocation where = place_of(scene, scene.sources.materials, i);
+        throw SceneError(where,
+                         "material '" + m.name + "' " +
+                             (m.fresnel ? "has fresnel: true" : "has a textured reflect") +
+                             ": the beam integrator weighs a polygon's reflected and refracted "
+                             "beams by one kr and kt across the whole polygon",
+                         {"give it constant reflect and transmit, or render with the whitted "
+                          "integrator"},
+                         line_of(where));
+    }
+}
+
 }  // namespace
 
+std::optional<std::string> beam_unfit_part(const Shape& shape) {
+    if (std::holds_alternative<Polygon>(shape) || std::holds_alternative<Triangle>(shape) ||
+        std::holds_alternative<TriangleMesh>(shape) || std::holds_alternative<Box>(shape))
+        return std::nullopt;
+    if (const auto* placed = std::get_if<Transformed>(&shape))
+        return beam_unfit_part(*placed->shape);
+    if (std::holds_alternative<Moving>(shape)) return std::string("a moving object");
+    if (std::holds_alternative<Plane>(shape)) return std::string("an infinite plane");
+    if (std::holds_alternative<Csg>(shape)) return std::string("a CSG object");
+    const std::string name(shape_name(shape));
+    const bool vowel = name.find_first_of("aeiou") == 0;
+    return (vowel ? "an " : "a ") + name + ", which is curved";
+}
+
 void check_integrator_fits(const Scene& scene) {
+    if (scene.settings.integrator == IntegratorKind::beam) return check_beam_fits(scene);
     const IntegratorInfo& integrator = integrator_info(scene.settings.integrator);
     if (!integrator.traces_particles) return;
     const std::string name(integrator.name);

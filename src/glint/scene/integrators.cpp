@@ -9,6 +9,11 @@ namespace {
 
 // Sorted by name, for the messages that list them.
 constexpr IntegratorInfo kIntegrators[] = {
+    // Exact coverage of each pixel: a box of one pixel, the area it covers.
+    {IntegratorKind::beam, "beam", SamplerKind::regular, FilterSpec{}, false, false, 0,
+     "Heckbert and Hanrahan's beam tracing (1984), for planar polygons: the view pyramid swept "
+     "through the scene as beams, polygons clipped from them front to back, mirrors and glass "
+     "starting new beams; each pixel drawn from the exact areas of the beam tree's fragments"},
     // One cone a pixel through its centre, its own anti-aliasing: no filter beyond the pixel.
     {IntegratorKind::cone, "cone", SamplerKind::regular, FilterSpec{}, false, false, 0,
      "Amanatides' cone tracing (1984): a cone a pixel, as wide as the pixel, each shape "

@@ -14,7 +14,7 @@
 
 namespace glint {
 
-enum class IntegratorKind { whitted, distributed, path, light, photon, cone };
+enum class IntegratorKind { whitted, distributed, path, light, photon, cone, beam };
 
 struct IntegratorInfo {
     IntegratorKind kind;

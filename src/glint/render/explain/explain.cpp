@@ -14,8 +14,10 @@ namespace glint {
 
 RayTree explain(const World& world, const PixelSample& which) {
     const RenderSettings& settings = world.settings();
-    if (settings.integrator == IntegratorKind::cone)
-        throw std::invalid_argument("explain follows rays; the cone integrator traces cones");
+    if (settings.integrator == IntegratorKind::cone || settings.integrator == IntegratorKind::beam)
+        throw std::invalid_argument(
+            "explain follows rays; the " + std::string(integrator_name(settings.integrator)) +
+            " integrator traces " + std::string(integrator_name(settings.integrator)) + "s");
     const Camera& camera = world.camera();
     const Sampler sampler(sampler_of(settings), settings.samples_per_pixel, which.seed);
     const std::uint64_t pixel =

@@ -10,12 +10,15 @@
 //   Color trace_eye_ray(const Ray&, const RayDifferential* pencil, SampleStream&, RayStats&);
 //   void record_into(RayRecorder*);                    // explain, the output variables
 // and, when it needs them, the hooks the render loop then calls:
+//   void draw_tile(const Tile&, FilmTile&, RayStats&);
+//       instead of tracing eye rays: draws the whole tile, once (beam tracing)
 //   static void begin_pass(Shared&, const World&, int sample, seed, RayStats&);
 //       before the pass of one sample index (its pass_size in the table is 1): photon maps
 //   void trace_particle(SampleStream&, SplatFilm&, RayStats&);
 //       after each eye sample: particles that land anywhere on the film
 #pragma once
 
+#include "glint/render/integrators/beam_tracer.h"
 #include "glint/render/integrators/cone_tracer.h"
 #include "glint/render/integrators/distributed.h"
 #include "glint/render/integrators/light_tracer.h"
@@ -42,6 +45,8 @@ decltype(auto) with_integrator(IntegratorKind kind, F&& f) {
             return f.template operator()<PhotonIntegrator>();
         case IntegratorKind::cone:
             return f.template operator()<ConeIntegrator>();
+        case IntegratorKind::beam:
+            return f.template operator()<BeamIntegrator>();
     }
     __builtin_unreachable();  // every kind has a case: -Wswitch names one that has not
 }
