@@ -12,31 +12,31 @@
 #include "glint/render/render.h"
 #include "glint/scene/integrator_fit.h"
 #include "reference_values.h"
+#include "scene_parts.h"
 
 namespace glint {
 namespace {
 
 using testing::rms_difference;
 
-Material glowing(Color c) {
-    Material m;
-    m.ka = m.kd = m.ks = 0;
-    m.emission = c;
-    return m;
-}
+using testing::glowing;
+using testing::polygon;
 
-Polygon polygon(std::vector<Point3> corners) {
-    return std::get<Polygon>(make_polygon(std::move(corners), InsideTest::even_odd));
-}
-
-// A camera at the origin looking down +z, a white square's edge at x = x_edge on black.
-Scene edge_scene(int size, float x_edge) {
+// The beam integrator's square image of size pixels from a camera at the origin looking down
+// +z, on black.
+Scene looking_down_z(int size) {
     Scene scene;
     scene.settings.width = scene.settings.height = size;
     scene.settings.integrator = IntegratorKind::beam;
     scene.settings.background = {0, 0, 0};
     scene.camera.from = {0, 0, 0};
     scene.camera.at = {0, 0, 1};
+    return scene;
+}
+
+// A white square's edge at x = x_edge.
+Scene edge_scene(int size, float x_edge) {
+    Scene scene = looking_down_z(size);
     scene.materials = {glowing({1, 1, 1})};
     scene.objects.push_back(
         {polygon({{x_edge, -5, 5}, {-5, -5, 5}, {-5, 5, 5}, {x_edge, 5, 5}}), 0});
@@ -68,12 +68,7 @@ TEST(BeamTracer, GlassSlabShowsASquareAtItsParaxialApparentDistance) {
     // A slab of glass (n = 1.5) from z = 2 to 3 in front of a glowing square of half-width 1 at
     // z = 5. Paraxially, depth beyond a plane appears scaled by n1 / n2: the square appears at
     // 2 + (1 + 2 * 1.5) / 1.5 = 4.667, not 5, and so wider.
-    Scene scene;
-    scene.settings.width = scene.settings.height = 64;
-    scene.settings.integrator = IntegratorKind::beam;
-    scene.settings.background = {0, 0, 0};
-    scene.camera.from = {0, 0, 0};
-    scene.camera.at = {0, 0, 1};
+    Scene scene = looking_down_z(64);
     scene.camera.fov = 60;
     Material glass;
     glass.ka = glass.kd = glass.ks = 0;

@@ -11,6 +11,7 @@
 #include "glint/math/constants.h"
 #include "glint/render/render.h"
 #include "reference_values.h"
+#include "scene_parts.h"
 
 namespace glint {
 namespace {
@@ -18,16 +19,8 @@ namespace {
 using testing::penumbra_by_integration;
 using testing::rms_difference;
 
-Material glowing(Color c) {
-    Material m;
-    m.ka = m.kd = m.ks = 0;
-    m.emission = c;
-    return m;
-}
-
-Polygon polygon(std::vector<Point3> corners) {
-    return std::get<Polygon>(make_polygon(std::move(corners), InsideTest::even_odd));
-}
+using testing::glowing;
+using testing::polygon;
 
 TEST(ConeTracer, APixelHalfCoveredByAnEdgeIsHalfItsColour) {
     // A white square whose edge runs down the middle of pixel (1, 1) of a 3 x 3 image, on black.

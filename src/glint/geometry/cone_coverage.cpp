@@ -187,8 +187,11 @@ std::optional<ConeCoverage> cone_coverage(const RayCone& cone, std::span<const P
     const ConeFrame f = frame_of(cone);
     // The corners in the cone's frame, clipped to in front of the apex.
     constexpr float kNear = 1e-6f;
-    std::vector<Vector3> local;
-    local.reserve(corners.size() + 2);
+    // Scratch kept by each thread: a cone tracer asks this of every polygon for every cone.
+    thread_local std::vector<Vector3> local;
+    thread_local std::vector<Point2> projected;
+    local.clear();
+    projected.clear();
     for (std::size_t i = 0; i < corners.size(); ++i) {
         const Vector3 a = f.local(corners[i]), b = f.local(corners[(i + 1) % corners.size()]);
         if (a.z >= kNear) local.push_back(a);
@@ -198,8 +201,6 @@ std::optional<ConeCoverage> cone_coverage(const RayCone& cone, std::span<const P
         }
     }
     if (local.size() < 3) return std::nullopt;
-    std::vector<Point2> projected;
-    projected.reserve(local.size());
     float nearest_z = kInfinity;
     for (const Vector3& v : local) {
         projected.push_back({v.x / v.z, v.y / v.z});

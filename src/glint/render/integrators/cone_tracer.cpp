@@ -97,7 +97,10 @@ void ConeIntegrator::gather(const RayCone& cone, const Ray& axis, std::uint32_t 
 
 Color ConeIntegrator::trace(const RayCone& cone, const Ray& axis, std::uint32_t self, int depth,
                             float weight, RayStats& stats, const MediumStack& media) {
-    std::vector<ConeHit> hits;
+    // Deeper than the scene's depth only through a caller's own depth: a list of its own.
+    std::vector<ConeHit> own;
+    std::vector<ConeHit>& hits =
+        std::size_t(depth) < hits_by_depth_.size() ? hits_by_depth_[std::size_t(depth)] : own;
     gather(cone, axis, self, kInfinity, kVisibleToCameraRays, hits);
     if (depth == 1 && !hits.empty()) ++stats.primary_hits;
     // Front to back, each shape covers its fraction of what the ones before it left uncovered.
@@ -199,22 +202,14 @@ Color ConeIntegrator::shade(const RayCone& cone, const Ray& ray, const Hit& hit,
 }
 
 float ConeIntegrator::light_visible(const SurfaceContext& c, std::uint32_t self, Vector3 to_light,
-                                    float distance, float spread, float time,
-                                    RayStats& stats) const {
+                                    float distance, float spread, float time, RayStats& stats) {
     stats.count(RayKind::shadow);
     const Ray feeler = world_.spawn_ray(c.sp.p, c.ng, to_light, c.sp.error, time);
-    const RayCone cone{feeler.origin, to_light, spread, time};
-    std::vector<ConeHit> hits;
-    gather(cone, feeler, self, distance, kVisibleToShadowRays, hits);
-    // Occluders taken as covering independent parts of the light (Amanatides' assumption).
-    float visible = 1;
-    for (const ConeHit& hit : hits) visible *= 1 - hit.coverage.fraction;
-    return visible;
+    return uncovered_share({feeler.origin, to_light, spread, time}, feeler, self, distance);
 }
 
 float ConeIntegrator::footprint_lit(const SurfaceContext& c, std::uint32_t self, Vector3 to_light,
-                                    float distance, float width, float time,
-                                    RayStats& stats) const {
+                                    float distance, float width, float time, RayStats& stats) {
     stats.count(RayKind::shadow);
     // From the light (or, for a directional one, from far along its direction) to the point,
     // as wide as the footprint there; what lies between covers part of it.
@@ -225,12 +220,15 @@ float ConeIntegrator::footprint_lit(const SurfaceContext& c, std::uint32_t self,
     const Ray feeler = world_.spawn_ray(c.sp.p, c.ng, to_light, c.sp.error, time);
     const float end = reach - length(feeler.origin - c.sp.p);
     const RayCone cone{light, -to_light, std::max(width / reach, 1e-9f), time};
-    const Ray axis{light, -to_light, time};
-    std::vector<ConeHit> hits;
-    gather(cone, axis, self, end, kVisibleToShadowRays, hits);
-    float visible = 1;
-    for (const ConeHit& hit : hits) visible *= 1 - hit.coverage.fraction;
-    return visible;
+    return uncovered_share(cone, {light, -to_light, time}, self, end);
+}
+
+float ConeIntegrator::uncovered_share(const RayCone& cone, const Ray& axis, std::uint32_t self,
+                                      float end) {
+    gather(cone, axis, self, end, kVisibleToShadowRays, shadow_hits_);
+    float uncovered = 1;
+    for (const ConeHit& hit : shadow_hits_) uncovered *= 1 - hit.coverage.fraction;
+    return uncovered;
 }
 
 }  // namespace glint

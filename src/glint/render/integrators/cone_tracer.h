@@ -28,7 +28,9 @@ public:
     struct Shared {};
     static Shared prepare(const World&) { return {}; }
 
-    explicit ConeIntegrator(const World& world) : world_(world) {}
+    // Keeps scratch lists of hits, one per depth of the cone tree: one integrator per thread.
+    explicit ConeIntegrator(const World& world)
+        : world_(world), hits_by_depth_(std::size_t(world.settings().max_depth) + 1) {}
     ConeIntegrator(const World& world, const Shared&) : ConeIntegrator(world) {}
 
     // The colour the cone around the eye ray sees; its spread is the pixel's (or a sample's
@@ -63,13 +65,19 @@ private:
     // The part of an area light a cone from the surface point to its centre sees, 1 - each
     // occluder's coverage in turn.
     float light_visible(const struct SurfaceContext& c, std::uint32_t self, Vector3 to_light,
-                        float distance, float spread, float time, RayStats& stats) const;
+                        float distance, float spread, float time, RayStats& stats);
     // The part of the footprint (of radius `width` across the light's direction) that a light
     // at a point, or a directional one, reaches: a cone from the light through it.
     float footprint_lit(const struct SurfaceContext& c, std::uint32_t self, Vector3 to_light,
-                        float distance, float width, float time, RayStats& stats) const;
+                        float distance, float width, float time, RayStats& stats);
+    // The part of a shadow cone that what casts shadows between its axis's origin and `end`
+    // leaves uncovered, occluders taken as covering independent parts of it (Amanatides'
+    // assumption).
+    float uncovered_share(const RayCone& cone, const Ray& axis, std::uint32_t self, float end);
 
     const World& world_;
+    std::vector<std::vector<ConeHit>> hits_by_depth_;  // sized once: trace() holds references
+    std::vector<ConeHit> shadow_hits_;                 // shadow cones never nest
 };
 
 }  // namespace glint
