@@ -96,8 +96,10 @@ LightReach reach_of(const LightPlace& light, std::size_t receiver,
         height = plane.at(light.point);
         if (height < 0) plane = plane.flipped(), height = -height;
     }
-    // A light in the plane grazes it and lights nothing that the shading would not zero.
-    if (height <= (light.direction ? 1e-9 : tolerance)) return {};
+    // A light in the plane grazes it and lights nothing that the shading would not zero. (A
+    // directional light within a millionth of the plane would also throw shadows a million
+    // times their height, beyond what the integer coordinates hold.)
+    if (height <= (light.direction ? 1e-6 : tolerance)) return {};
     const PlaneD above{plane.n, plane.d + tolerance};
     // Below the light, by a margin that keeps projected points finite.
     const std::optional<PlaneD> below =

@@ -34,7 +34,9 @@ struct BeamIntegrator::TileDrawing {
     std::vector<Color> sums;
     CoverageGrid fragment;
     std::vector<CoverageGrid> lit;
-    std::vector<float> lit_share;  // of the light whose area lit[] holds; -1: every light reaches
+    // For the fragment being drawn, light by light: -1 the light reaches all of it, 0 none of
+    // it, 1 a part, whose area in each pixel lit[] holds.
+    std::vector<float> lit_share;
     Color& sum(int x, int y) {
         return sums[std::size_t(y - tile.y0) * std::size_t(tile.x1 - tile.x0) +
                     std::size_t(x - tile.x0)];
