@@ -15,6 +15,7 @@
 #include "glint/accel/make_aggregate.h"
 #include "glint/render/accel_benchmark.h"
 #include "glint/render/json_string.h"
+#include "glint/render/memory_estimate.h"
 #include "glint/render/ray_sets.h"
 #include "glint/render/world.h"
 #include "glint/scene/load_scene.h"
@@ -37,15 +38,6 @@ struct Row {
     double bytes_per_prim = 0;
     std::uint64_t hits = 0;
 };
-
-std::string with_thousands(std::uint64_t n) {
-    std::string digits = std::to_string(n), out;
-    for (std::size_t i = 0; i < digits.size(); ++i) {
-        if (i > 0 && (digits.size() - i) % 3 == 0) out += ',';
-        out += digits[i];
-    }
-    return out;
-}
 
 void print_json(const Row& r, const std::string& scene, std::size_t primitives) {
     std::printf(

@@ -21,9 +21,9 @@
 #include "glint/image/image_format.h"
 #include "glint/image/image_io.h"
 #include "glint/image/srgb.h"
-#include "glint/render/film/aov_picture.h"
 #include "glint/render/memory_estimate.h"
 #include "glint/render/render.h"
+#include "glint/render/render_output.h"
 #include "glint/render/resume_file.h"
 #include "glint/render/world.h"
 #include "glint/scene/integrator_fit.h"
@@ -55,32 +55,14 @@ std::string default_output(const std::string& scene) {
     return std::filesystem::path(scene).stem().string() + ".png";
 }
 
-std::string with_thousands(std::uint64_t n) {
-    std::string digits = std::to_string(n), out;
-    for (std::size_t i = 0; i < digits.size(); ++i) {
-        if (i > 0 && (digits.size() - i) % 3 == 0) out += ',';
-        out += digits[i];
-    }
-    return out;
-}
-
 // Refuses a render whose structures, film and images would not fit, before building them.
 void check_memory(const Scene& scene, AccelKind accel, const RenderCommand& c, AovSet aovs) {
     const MemoryEstimate need = estimate_render_memory(
         scene, accel,
         RenderExtras{
             .samples_image = !c.samples_image.empty(), .resuming = c.resume, .aovs = aovs});
-    const std::optional<std::uint64_t> room = c.max_memory ? c.max_memory : available_memory();
-    if (!room || need.total() <= *room) return;
-    const RenderSettings& s = scene.settings;
-    throw UsageError{"the render needs about " + format_bytes(need.total()) + " of memory (the " +
-                     std::string(accel_name(accel)) + " " + format_bytes(need.acceleration) +
-                     " for " + with_thousands(need.references) +
-                     " primitives and triangles, the film " + format_bytes(need.film) + " for " +
-                     std::to_string(s.width) + "x" + std::to_string(s.height) +
-                     " pixels), more than the " + format_bytes(*room) +
-                     (c.max_memory ? " --max-memory allows" : " this machine has available") +
-                     "; render fewer pixels, or set the limit with --max-memory SIZE"};
+    if (auto refusal = memory_refusal(scene, accel, need, c.max_memory, "--max-memory"))
+        throw UsageError{std::move(*refusal)};
 }
 
 void print_summary(const std::string& output, const RenderSettings& s, const RenderResult& r) {
@@ -183,38 +165,6 @@ bool is_exr(const std::filesystem::path& path) {
     return format_from_extension(path) == ImageFormat::exr;
 }
 
-// Where a variable's PNG goes when the output is not an EXR file: "out.png" gives
-// "out.depth.png".
-std::filesystem::path aov_png_path(const std::filesystem::path& output, Aov aov) {
-    std::filesystem::path p = output;
-    p.replace_filename(output.stem().string() + "." + std::string(aov_info(aov).name) + ".png");
-    return p;
-}
-
-// The image, with the output variables as its layers for an EXR output; else the image and a PNG
-// picture of each variable beside it.
-void write_image_and_aovs(const std::filesystem::path& output, const RenderResult& result,
-                          bool ppm_ascii) {
-    if (is_exr(output)) {
-        const std::vector<ExrLayer> layers = aov_exr_layers(result.aovs);
-        write_image(output, result.image, WriteOptions{.exr_layers = layers});
-        return;
-    }
-    write_image(output, result.image, WriteOptions{ppm_ascii});
-    for (const AovImage& layer : result.aovs)
-        write_image(aov_png_path(output, layer.aov), aov_picture(layer), WriteOptions{});
-}
-
-// The image so far beside the output, and the state to continue from: at a checkpoint and when
-// interrupted. The image first: a resume file always has an image of at most its samples.
-// The image so far (the state's film resolved) and the state.
-void save_progress(const std::filesystem::path& partial, const std::filesystem::path& resume,
-                   const RenderIdentity& identity, const RenderState& state, const Image& image,
-                   bool ppm_ascii) {
-    write_image(partial, image, WriteOptions{ppm_ascii});
-    write_resume_file(resume, identity, state);
-}
-
 }  // namespace
 
 int run_render(const RenderCommand& command) {
@@ -234,7 +184,8 @@ int run_render(const RenderCommand& command) {
         const AovSet aovs = requested_aovs(command);
         if (!is_exr(output))
             for (const Aov a : aovs.list())
-                if (const auto reason = unwritable_image_reason(aov_png_path(output, a).string()))
+                if (const auto reason =
+                        unwritable_image_reason(aov_picture_path(output, a).string()))
                     throw UsageError{*reason};
         Scene scene = load_scene(command.scene, command.reading.load_options());
         for (const std::string& warning : scene.warnings)

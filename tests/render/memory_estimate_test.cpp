@@ -105,6 +105,27 @@ TEST(MemoryEstimate, SizesAsUsersWriteThem) {
     EXPECT_EQ(format_bytes(3u << 29), "1.5 GiB");
 }
 
+TEST(MemoryEstimate, ARenderBeyondTheLimitIsRefusedWithItsParts) {
+    Scene scene;
+    scene.settings.width = 16000;
+    scene.settings.height = 12000;
+    MemoryEstimate need;
+    need.references = 1234567;
+    need.acceleration = 1 << 20;
+    need.film = std::uint64_t(14) << 30;
+    const auto refusal =
+        memory_refusal(scene, AccelKind::bvh, need, std::uint64_t(1) << 30, "--max-memory");
+    ASSERT_TRUE(refusal);
+    EXPECT_EQ(*refusal,
+              "the render needs about 14 GiB of memory (the bvh 1.0 MiB for 1,234,567 primitives "
+              "and triangles, the film 14 GiB for 16000x12000 pixels), more than the 1.0 GiB "
+              "--max-memory allows; render fewer pixels, or set the limit with --max-memory SIZE");
+    EXPECT_FALSE(memory_refusal(scene, AccelKind::bvh, need, std::uint64_t(15) << 30, "limit"));
+    EXPECT_EQ(with_thousands(0), "0");
+    EXPECT_EQ(with_thousands(999), "999");
+    EXPECT_EQ(with_thousands(1000), "1,000");
+}
+
 TEST(MemoryEstimate, TheMachineHasSomeMemoryAvailable) {
     const auto available = available_memory();
     ASSERT_TRUE(available);  // Linux: /proc/meminfo

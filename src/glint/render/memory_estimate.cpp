@@ -129,6 +129,32 @@ std::optional<std::uint64_t> available_memory() {
     return available;
 }
 
+std::optional<std::string> memory_refusal(const Scene& scene, AccelKind accel,
+                                          const MemoryEstimate& need,
+                                          std::optional<std::uint64_t> limit,
+                                          std::string_view limit_setting) {
+    const std::optional<std::uint64_t> room = limit ? limit : available_memory();
+    if (!room || need.total() <= *room) return std::nullopt;
+    const RenderSettings& s = scene.settings;
+    const std::string setting(limit_setting);
+    return "the render needs about " + format_bytes(need.total()) + " of memory (the " +
+           std::string(accel_name(accel)) + " " + format_bytes(need.acceleration) + " for " +
+           with_thousands(need.references) + " primitives and triangles, the film " +
+           format_bytes(need.film) + " for " + std::to_string(s.width) + "x" +
+           std::to_string(s.height) + " pixels), more than the " + format_bytes(*room) +
+           (limit ? " " + setting + " allows" : std::string(" this machine has available")) +
+           "; render fewer pixels, or set the limit with " + setting + " SIZE";
+}
+
+std::string with_thousands(std::uint64_t n) {
+    std::string digits = std::to_string(n), out;
+    for (std::size_t i = 0; i < digits.size(); ++i) {
+        if (i > 0 && (digits.size() - i) % 3 == 0) out += ',';
+        out += digits[i];
+    }
+    return out;
+}
+
 std::string format_bytes(std::uint64_t bytes) {
     const char* units[] = {"KiB", "MiB", "GiB", "TiB", "PiB"};
     if (bytes < 1024) return std::to_string(bytes) + " bytes";

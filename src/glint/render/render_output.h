@@ -1,0 +1,28 @@
+// What a render writes, for every front end: the image with its output variables (layers of an
+// EXR file, or a PNG picture of each beside any other image), and the progress of a render that
+// stops before its end (the image so far beside the output, and the state to continue from).
+#pragma once
+
+#include <filesystem>
+
+#include "glint/render/render.h"
+#include "glint/render/resume_file.h"
+
+namespace glint {
+
+// Where an output variable's picture goes beside a non-EXR output: "out.png" gives
+// "out.depth.png".
+std::filesystem::path aov_picture_path(const std::filesystem::path& output, Aov aov);
+
+// The image, with the output variables as its layers for an EXR output; else the image and a
+// picture of each variable beside it. Each file is written atomically; throws ImageError.
+void write_image_and_aovs(const std::filesystem::path& output, const RenderResult& result,
+                          bool ppm_ascii = false);
+
+// The image so far at `partial` and the state at `resume`: at a checkpoint and when stopped.
+// The image first: a resume file always has an image of at most its samples.
+void save_progress(const std::filesystem::path& partial, const std::filesystem::path& resume,
+                   const RenderIdentity& identity, const RenderState& state, const Image& image,
+                   bool ppm_ascii = false);
+
+}  // namespace glint
