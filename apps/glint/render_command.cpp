@@ -5,11 +5,14 @@
 
 #include <tbb/info.h>
 
+#include <atomic>
 #include <chrono>
 #include <cmath>
 #include <csignal>
 #include <cstdio>
 #include <filesystem>
+#include <functional>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -23,6 +26,7 @@
 #include "glint/image/srgb.h"
 #include "glint/render/memory_estimate.h"
 #include "glint/render/render.h"
+#include "glint/render/render_job.h"
 #include "glint/render/render_output.h"
 #include "glint/render/resume_file.h"
 #include "glint/render/world.h"
@@ -219,8 +223,8 @@ int run_render(const RenderCommand& command) {
             identify_render(command.scene, files_read, s, options, GLINT_VERSION);
         const std::filesystem::path resume = resume_path(output),
                                     partial = partial_output_path(output);
-        RenderState state =
-            command.resume ? read_resume_file(resume, identity, s) : initial_state(s, options);
+        std::optional<RenderState> saved;
+        if (command.resume) saved = read_resume_file(resume, identity, s);
         using Clock = std::chrono::steady_clock;
         Clock::time_point last_checkpoint = Clock::now();
         if (command.checkpoint_minutes) {
@@ -233,8 +237,13 @@ int run_render(const RenderCommand& command) {
                 last_checkpoint = Clock::now();
             };
         }
-        RenderProgress progress;
-        options.after_tile = test_hold_from_environment(progress);
+        RenderJob job(world, options, std::move(saved));
+        RenderProgress& progress = job.progress();
+        // The tests' hold, after each piece of work when they set it.
+        const std::function<void(int)> hold = test_hold_from_environment(progress);
+        std::atomic<int> pieces_done{0};
+        std::function<void(const WorkPiece&)> observer;
+        if (hold) observer = [&](const WorkPiece&) { hold(++pieces_done); };
         RenderResult result;
         // Once the samples are in, a Ctrl-C or SIGTERM (a second one sent just as the render
         // ends) would only lose them halfway through writing the files, or turn a written
@@ -243,7 +252,7 @@ int run_render(const RenderCommand& command) {
         ignore_stop_signals();
         {
             const ProgressWatcher watcher(progress, !command.quiet);
-            result = render(world, options, &progress, &state);
+            result = job.run(observer);
         }
         report_bad_samples(result.bad_samples, command);
 
@@ -257,7 +266,7 @@ int run_render(const RenderCommand& command) {
             std::filesystem::remove(resume, ignored);
             std::filesystem::remove(partial, ignored);
         } else {
-            save_progress(partial, resume, identity, state, result.image, command.ppm_ascii);
+            save_progress(partial, resume, identity, job.state(), result.image, command.ppm_ascii);
         }
         if (!command.samples_image.empty())
             write_samples_image(command.samples_image, result.samples_taken, s.samples_per_pixel);
@@ -269,7 +278,8 @@ int run_render(const RenderCommand& command) {
         }
         if (!result.complete) {
             const int passes = progress.passes_total;
-            if (state.next_pass == 0)
+            const int next_pass = job.state().next_pass;
+            if (next_pass == 0)
                 std::fprintf(stderr,
                              "glint: interrupted in the first pass%s: the image so far is in %s "
                              "(the tiles not yet rendered are black)",
@@ -278,7 +288,7 @@ int run_render(const RenderCommand& command) {
             else
                 std::fprintf(stderr,
                              "glint: interrupted after %d of %d passes: the image so far is in %s",
-                             state.next_pass, passes, written.c_str());
+                             next_pass, passes, written.c_str());
             std::fprintf(stderr,
                          "; %s was not written\n"
                          "glint: to continue, with the same options: glint render %s -o %s "

@@ -45,6 +45,7 @@ struct RenderInputs {
     const Sampler& sampler;
     const FilterSampling* filter;  // under adaptive sampling (eye_sample.h); else null
     const typename Integrator::Shared& shared;
+    std::mutex& state_mutex;  // held to merge into the state's film and totals
 };
 
 // Compiled twice: with the output variables' code (kAovs) and without, the render's own loop.
@@ -61,6 +62,7 @@ void render_tile(const Tile& tile, Pass pass, const RenderInputs<Integrator>& in
             Integrator integrator(world, in.shared);
             FilmTile film_tile = state.film.make_tile(tile);
             integrator.draw_tile(tile, film_tile, totals.rays);
+            const std::lock_guard lock(in.state_mutex);
             state.film.merge(film_tile);
         }
         for (int y = tile.y0; y < tile.y1; ++y)
@@ -132,6 +134,7 @@ void render_tile(const Tile& tile, Pass pass, const RenderInputs<Integrator>& in
             }
             taken = std::uint32_t(s);
         }
+    const std::lock_guard lock(in.state_mutex);
     state.film.merge(film_tile);
     if constexpr (kAovs) state.aovs.merge(*aov_tile);
 }
@@ -148,9 +151,10 @@ bool render_passes(const World& world, const RenderOptions& options, const std::
     std::optional<FilterSampling> filter_sampling;
     if (importance_samples_filter(settings)) filter_sampling.emplace(filter_of(settings));
     typename Integrator::Shared shared = Integrator::prepare(world);
-    const RenderInputs<Integrator> inputs{world, sampler,
-                                          filter_sampling ? &*filter_sampling : nullptr, shared};
-    std::mutex totals_mutex;
+    std::mutex own_mutex;
+    std::mutex& state_mutex = options.state_mutex ? *options.state_mutex : own_mutex;
+    const RenderInputs<Integrator> inputs{
+        world, sampler, filter_sampling ? &*filter_sampling : nullptr, shared, state_mutex};
     std::atomic<int> tiles_finished{0};
     // An explicit thread count may exceed the cores (to check determinism, say): lift TBB's
     // default cap on workers for the duration of the render.
@@ -169,8 +173,10 @@ bool render_passes(const World& world, const RenderOptions& options, const std::
                 RayStats prepared;
                 Integrator::begin_pass(shared, world, pass.begin, options.seed, prepared);
                 if (std::none_of(state.tiles_done.begin(), state.tiles_done.end(),
-                                 [](std::uint8_t d) { return d != 0; }))
+                                 [](std::uint8_t d) { return d != 0; })) {
+                    const std::lock_guard lock(state_mutex);
                     state.rays += prepared;
+                }
             }
             // One tile per task: tiles are large enough to amortise scheduling.
             tbb::parallel_for(
@@ -188,13 +194,14 @@ bool render_passes(const World& world, const RenderOptions& options, const std::
                         else
                             render_tile<Integrator, true>(tiles[i], pass, inputs, state, totals);
                         {
-                            const std::lock_guard lock(totals_mutex);
+                            const std::lock_guard lock(state_mutex);
                             state.rays += totals.rays;
                             state.bad_samples += totals.bad;
                         }
                         state.tiles_done[i] = 1;  // tasks write distinct elements
                         if (progress) ++progress->tiles_done;
                         if (options.after_tile) options.after_tile(++tiles_finished);
+                        if (options.after_piece) options.after_piece(state.next_pass, int(i));
                     }
                 },
                 tbb::simple_partitioner());

@@ -7,6 +7,7 @@
 #include <atomic>
 #include <cstdint>
 #include <functional>
+#include <mutex>
 #include <vector>
 
 #include "glint/image/image.h"
@@ -31,6 +32,13 @@ struct RenderOptions {
     // Called on the render thread that finished a tile, with the tiles finished so far in this
     // call of render(), counting each tile once a pass; that thread waits for it. Concurrent.
     std::function<void(int tiles_finished)> after_tile;
+    // Likewise, with the piece of work it finished: the pass, and the tile's index in
+    // make_tiles order.
+    std::function<void(int pass, int tile)> after_piece;
+    // Held while a tile's samples are merged into the state's film and totals: holding it, other
+    // threads may read those while the render runs (RenderJob::image_so_far). Null: the
+    // render's own.
+    std::mutex* state_mutex = nullptr;
 };
 
 // Shared with a watcher thread (a progress bar) while render() runs.

@@ -1,0 +1,38 @@
+// The job over render(): its state kept, its merges under the job's lock so that the image can
+// be resolved while it runs.
+#include "glint/render/render_job.h"
+
+#include <utility>
+
+namespace glint {
+
+RenderJob::RenderJob(const World& world, RenderOptions options, std::optional<RenderState> state)
+    : world_(world),
+      options_(std::move(options)),
+      state_(state ? std::move(*state) : initial_state(world.settings(), options_)) {}
+
+RenderResult RenderJob::run(std::function<void(const WorkPiece&)> observer) {
+    progress_.stop_after_pass = false;
+    progress_.cancel = false;
+    RenderOptions options = options_;
+    options.state_mutex = &state_mutex_;
+    if (observer) {
+        // After the caller's own hook, if it has one.
+        options.after_piece = [&, hook = options_.after_piece](int pass, int tile) {
+            if (hook) hook(pass, tile);
+            observer(WorkPiece{pass, tile});
+        };
+    }
+    return render(world_, options, &progress_, &state_);
+}
+
+Image RenderJob::image_so_far() const {
+    const std::lock_guard lock(state_mutex_);
+    return resolve_image(state_);
+}
+
+bool RenderJob::done() const {
+    return state_.next_pass >= pass_count(world_.settings().samples_per_pixel, state_.pass_size);
+}
+
+}  // namespace glint

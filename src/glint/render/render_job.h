@@ -1,0 +1,58 @@
+// A render as a job of the library, for every front end: the command line now, and Python, the
+// browser page and MPI to come. It holds the render's state (the film, each pixel's samples,
+// how far the passes got) for a world, renders what is left of it, tells an observer of each
+// piece of work as it is done (a tile of a pass), stops after the pass in flight or at once
+// when asked from another thread, and resolves the image so far at any time. Its state is what
+// a resume file saves (resume_file.h), and a job continues from one.
+#pragma once
+
+#include <functional>
+#include <mutex>
+#include <optional>
+
+#include "glint/render/render.h"
+
+namespace glint {
+
+// A piece of a render's work: one tile (its index in make_tiles order) through one pass.
+struct WorkPiece {
+    int pass = 0;
+    int tile = 0;
+};
+
+class RenderJob {
+public:
+    // A render of `world`, which must outlive the job, with `options`: from its start, or from
+    // `state` (read from a resume file of this render).
+    RenderJob(const World& world, RenderOptions options, std::optional<RenderState> state = {});
+
+    // Renders what is left, until every pass is done or a stop; a stop asked for before the call
+    // is forgotten. Calls `observer` on the render thread that finished each piece, concurrently.
+    // The result's counts and time are the job's totals so far.
+    RenderResult run(std::function<void(const WorkPiece&)> observer = {});
+
+    // From any thread while run() runs: stop once the pass in flight is done (every pixel then
+    // has the same samples), or at once (tiles not yet started are skipped, those in flight
+    // finish).
+    void stop_after_pass() { progress_.stop_after_pass = true; }
+    void cancel() { progress_.cancel = true; }
+    // The counts of pieces and passes done, for a watcher thread (which may also set its stop
+    // flags, as the two calls above do).
+    RenderProgress& progress() { return progress_; }
+
+    // The image of the samples taken so far: from any thread, at any time.
+    Image image_so_far() const;
+    // The state, between runs: to save in a resume file, say.
+    const RenderState& state() const { return state_; }
+    // Whether every pass is done.
+    bool done() const;
+
+private:
+    const World& world_;
+    RenderOptions options_;
+    RenderState state_;
+    RenderProgress progress_;
+    mutable std::mutex state_mutex_;  // held while tiles merge into state_ (RenderOptions)
+};
+
+}  // namespace glint

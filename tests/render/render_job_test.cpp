@@ -1,0 +1,95 @@
+// The render job: its observer sees every piece of work once, a job cancelled and run again
+// gives the uninterrupted image bit for bit, and its image can be read while it renders.
+#include "glint/render/render_job.h"
+
+#include <gtest/gtest.h>
+
+#include <atomic>
+#include <mutex>
+#include <set>
+#include <thread>
+#include <utility>
+
+namespace glint {
+namespace {
+
+// 40 x 24 pixels in tiles of 16 (3 x 2 tiles), 4 samples in passes of 2.
+Scene small_scene() {
+    Scene scene;
+    scene.settings.width = 40;
+    scene.settings.height = 24;
+    scene.settings.samples_per_pixel = 4;
+    scene.settings.integrator = IntegratorKind::distributed;
+    scene.camera.from = {0, 0, -4};
+    scene.camera.at = {0, 0, 0};
+    scene.materials = {Material{}};
+    scene.objects.push_back({Sphere{{0, 0, 0}, 1}, 0});
+    scene.lights.push_back(PointLight{{-3, 4, -4}, {1, 1, 1}, {}});
+    return scene;
+}
+
+RenderOptions small_options() {
+    RenderOptions options;
+    options.tile_size = 16;
+    options.pass_size = 2;
+    options.seed = 3;
+    return options;
+}
+
+TEST(RenderJob, TheObserverSeesEveryPieceOnceAndTheImageIsRendersOwn) {
+    const World world(small_scene());
+    RenderJob job(world, small_options());
+    std::mutex lock;
+    std::multiset<std::pair<int, int>> pieces;
+    const RenderResult result = job.run([&](const WorkPiece& p) {
+        const std::lock_guard guard(lock);
+        pieces.insert({p.pass, p.tile});
+    });
+    EXPECT_TRUE(result.complete);
+    EXPECT_TRUE(job.done());
+    ASSERT_EQ(pieces.size(), 2u * 6u);
+    for (int pass = 0; pass < 2; ++pass)
+        for (int tile = 0; tile < 6; ++tile) EXPECT_EQ(pieces.count({pass, tile}), 1u);
+    EXPECT_EQ(result.image.pixels, render(world, small_options()).image.pixels);
+}
+
+TEST(RenderJob, CancelledAndRunAgainItGivesTheUninterruptedImage) {
+    const World world(small_scene());
+    RenderJob job(world, small_options());
+    std::atomic<int> seen{0};
+    const RenderResult stopped = job.run([&](const WorkPiece&) {
+        if (++seen == 3) job.cancel();
+    });
+    EXPECT_FALSE(stopped.complete);
+    EXPECT_FALSE(job.done());
+    const RenderResult finished = job.run();  // the stop is forgotten
+    EXPECT_TRUE(finished.complete);
+    const RenderResult whole = render(world, small_options());
+    EXPECT_EQ(finished.image.pixels, whole.image.pixels);
+    EXPECT_EQ(finished.rays.total(), whole.rays.total());
+}
+
+TEST(RenderJob, ItsImageCanBeReadWhileItRenders) {
+    const World world(small_scene());
+    RenderJob job(world, small_options());
+    std::atomic<bool> running{true};
+    std::atomic<int> reads{0};
+    std::thread reader([&] {
+        while (running) {
+            const Image so_far = job.image_so_far();
+            EXPECT_EQ(so_far.width, 40);
+            ++reads;
+        }
+    });
+    // The first piece done waits for a read, so that one comes while the job renders however
+    // the threads are scheduled.
+    const RenderResult result = job.run([&](const WorkPiece&) {
+        while (reads == 0) std::this_thread::yield();
+    });
+    running = false;
+    reader.join();
+    EXPECT_EQ(job.image_so_far().pixels, result.image.pixels);
+}
+
+}  // namespace
+}  // namespace glint
