@@ -8,6 +8,7 @@
 #include "glint/image/image_error.h"
 #include "glint/render/resume_file.h"
 #include "glint/scene/scene_error.h"
+#include "glint/scene/setting_overrides.h"
 #include "usage_error.h"
 
 namespace glint::cli {
@@ -20,6 +21,11 @@ int reporting_errors(const std::function<int()>& run) {
         return kExitBadInput;
     } catch (const UsageError& e) {
         std::fprintf(stderr, "glint: error: %s\n", e.message.c_str());
+        return kExitBadInput;
+    } catch (const SettingsError& e) {
+        std::fprintf(stderr, "glint: error: %s", e.what());
+        for (const std::string& note : e.notes()) std::fprintf(stderr, " (%s)", note.c_str());
+        std::fputs("\n", stderr);
         return kExitBadInput;
     } catch (const ResumeError& e) {
         std::fprintf(stderr, "glint: error: %s\n", e.what());

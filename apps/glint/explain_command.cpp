@@ -82,25 +82,11 @@ int run_explain(const ExplainCommand& command) {
             std::fprintf(stderr, "glint: warning: %s\n", warning.c_str());
         apply_image_options(command.image, scene.settings);
         check_integrator_fits(scene);
-        const RenderSettings& s = scene.settings;
-        if (s.integrator == IntegratorKind::cone || s.integrator == IntegratorKind::beam) {
-            const std::string name(integrator_name(s.integrator));
-            throw UsageError{"explain follows rays, and the " + name + " integrator traces " +
-                             name + "s: explain the pixel with --integrator whitted to see the " +
-                             "rays its " + name + " stands for"};
-        }
-        if (x >= s.width || y >= s.height)
-            throw UsageError{"pixel (" + std::to_string(x) + ", " + std::to_string(y) +
-                             ") is outside the image of " + std::to_string(s.width) + "x" +
-                             std::to_string(s.height) + " pixels (0,0 to " +
-                             std::to_string(s.width - 1) + "," + std::to_string(s.height - 1) +
-                             ")"};
-        if (command.sample >= s.samples_per_pixel)
-            throw UsageError{"sample " + std::to_string(command.sample) + " of a pixel of " +
-                             std::to_string(s.samples_per_pixel) +
-                             " samples: samples are numbered from 0"};
+        const PixelSample which{x, y, command.sample, command.seed};
+        // Before the world is built: a bad pixel should fail at once.
+        check_explainable(scene.settings, which);
         const World world(std::move(scene));
-        const RayTree tree = explain(world, {x, y, command.sample, command.seed});
+        const RayTree tree = explain(world, which);
         const std::string text = command.format == "json"  ? ray_tree_json(tree)
                                  : command.format == "dot" ? ray_tree_dot(tree)
                                                            : ray_tree_text(tree);

@@ -1,12 +1,7 @@
-// The image options: what each overrides, and the checks the scene's own settings also pass.
+// The image options as the command line takes them; the library applies and checks them.
 #include "image_options.h"
 
-#include <algorithm>
-#include <cmath>
-#include <cstdint>
-
 #include "glint/sampling/sampler.h"
-#include "glint/scene/settings_problem.h"
 #include "usage_error.h"
 #include "whole_number_option.h"
 
@@ -62,38 +57,12 @@ std::string image_options_arguments(const ImageOptions& o) {
 }
 
 void apply_image_options(const ImageOptions& c, RenderSettings& s) {
-    if (c.width && !c.height) {
-        s.height =
-            std::max(1, static_cast<int>(std::lround(double(*c.width) * s.height / s.width)));
-    } else if (c.height && !c.width) {
-        s.width =
-            std::max(1, static_cast<int>(std::lround(double(*c.height) * s.width / s.height)));
-    }
-    if (c.width) s.width = *c.width;
-    if (c.height) s.height = *c.height;
-    // What the command line asks is bounded by the ceilings alone (scene_limits.h).
-    if (std::int64_t(s.width) * s.height > kMaxRenderPixels || s.width > kMaxImageSide ||
-        s.height > kMaxImageSide)
-        throw UsageError{"image of " + std::to_string(s.width) + "x" + std::to_string(s.height) +
-                         " pixels is larger than the limit of " + std::to_string(kMaxRenderPixels) +
-                         " pixels"};
-    if (!c.integrator.empty()) s.integrator = *integrator_from_name(c.integrator);
-    if (!c.sampler.empty()) s.sampler = *sampler_from_name(c.sampler);
-    if (!c.filter.empty()) {
-        FilterSpec filter;
-        filter.kind = *filter_from_name(c.filter);
-        filter.radius = default_filter_radius(filter.kind);
-        s.filter = filter;
-    }
-    if (!c.shadows.empty())
-        s.shadows = c.shadows == "map" ? ShadowMethod::map : ShadowMethod::feelers;
-    if (c.spp) s.samples_per_pixel = *c.spp;
-    if (c.max_depth) s.max_depth = *c.max_depth;
-    // The scene file's own checks, on what the options made of its settings.
-    if (const std::optional<SettingsProblem> problem = settings_problem(s)) {
-        std::string text = "the scene's image settings with" + image_options_arguments(c) + ": " +
-                           problem->message;
-        for (const std::string& note : problem->notes) text += " (" + note + ")";
+    try {
+        apply_setting_overrides(c, s);
+    } catch (const SettingsError& e) {
+        std::string text =
+            "the scene's image settings with" + image_options_arguments(c) + ": " + e.what();
+        for (const std::string& note : e.notes()) text += " (" + note + ")";
         throw UsageError{text};
     }
 }

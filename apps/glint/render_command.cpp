@@ -197,7 +197,7 @@ int run_render(const RenderCommand& command) {
         apply_image_options(command.image, scene.settings);
         check_integrator_fits(scene);
         if (const IntegratorKind k = scene.settings.integrator;
-            !aovs.list().empty() && (k == IntegratorKind::cone || k == IntegratorKind::beam)) {
+            !aovs.list().empty() && !traces_rays(k)) {
             const std::string name(integrator_name(k));
             throw UsageError{"--aov: the output variables follow rays, and the " + name +
                              " integrator traces " + name + "s"};

@@ -69,4 +69,8 @@ std::optional<IntegratorKind> integrator_from_name(std::string_view name) {
 
 std::string_view integrator_name(IntegratorKind kind) { return integrator_info(kind).name; }
 
+bool traces_rays(IntegratorKind kind) {
+    return kind != IntegratorKind::cone && kind != IntegratorKind::beam;
+}
+
 }  // namespace glint

@@ -41,4 +41,8 @@ std::span<const std::string_view> integrator_names();
 std::optional<IntegratorKind> integrator_from_name(std::string_view name);
 std::string_view integrator_name(IntegratorKind kind);
 
+// Whether the integrator's samples are rays, which `explain` and the output variables follow:
+// the cone and beam integrators trace cones and beams.
+bool traces_rays(IntegratorKind kind);
+
 }  // namespace glint

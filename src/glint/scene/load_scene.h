@@ -29,4 +29,10 @@ struct LoadOptions {
 // other file it read.
 Scene load_scene(const std::filesystem::path& file, const LoadOptions& options = {});
 
+// A scene in glint's YAML format given as text (Python's dict scenes, say), read as if it were
+// the file `as_file`: its errors are located there, and it reads files as a scene in that
+// file's folder would, under the same options.
+Scene parse_scene_text(std::string_view yaml_text, const std::filesystem::path& as_file,
+                       const LoadOptions& options = {});
+
 }  // namespace glint

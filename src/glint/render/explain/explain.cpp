@@ -2,22 +2,41 @@
 #include "glint/render/explain/explain.h"
 
 #include <optional>
-#include <stdexcept>
+#include <string>
 
 #include "glint/render/explain/particle_report.h"
 #include "glint/render/explain/ray_tree_recorder.h"
 #include "glint/render/eye_sample.h"
 #include "glint/render/integrators/integrator_family.h"
 #include "glint/sampling/sampler.h"
+#include "glint/scene/setting_overrides.h"
 
 namespace glint {
 
+void check_explainable(const RenderSettings& s, const PixelSample& which) {
+    if (!traces_rays(s.integrator)) {
+        const std::string name(integrator_name(s.integrator));
+        throw SettingsError(
+            "integrator",
+            "explain follows rays, and the " + name + " integrator traces " + name + "s",
+            {"explain the pixel with the whitted integrator to see the rays its " + name +
+             " stands for"});
+    }
+    if (which.x < 0 || which.y < 0 || which.x >= s.width || which.y >= s.height)
+        throw SettingsError("pixel", "pixel (" + std::to_string(which.x) + ", " +
+                                         std::to_string(which.y) + ") is outside the image of " +
+                                         std::to_string(s.width) + "x" + std::to_string(s.height) +
+                                         " pixels (0,0 to " + std::to_string(s.width - 1) + "," +
+                                         std::to_string(s.height - 1) + ")");
+    if (which.sample < 0 || which.sample >= s.samples_per_pixel)
+        throw SettingsError("sample", "sample " + std::to_string(which.sample) + " of a pixel of " +
+                                          std::to_string(s.samples_per_pixel) +
+                                          " samples: samples are numbered from 0");
+}
+
 RayTree explain(const World& world, const PixelSample& which) {
     const RenderSettings& settings = world.settings();
-    if (settings.integrator == IntegratorKind::cone || settings.integrator == IntegratorKind::beam)
-        throw std::invalid_argument(
-            "explain follows rays; the " + std::string(integrator_name(settings.integrator)) +
-            " integrator traces " + std::string(integrator_name(settings.integrator)) + "s");
+    check_explainable(settings, which);
     const Camera& camera = world.camera();
     const Sampler sampler(sampler_of(settings), settings.samples_per_pixel, which.seed);
     const std::uint64_t pixel =

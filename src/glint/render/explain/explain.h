@@ -6,6 +6,7 @@
 
 #include "glint/render/explain/ray_tree.h"
 #include "glint/render/world.h"
+#include "glint/scene/scene.h"
 
 namespace glint {
 
@@ -15,7 +16,11 @@ struct PixelSample {
     std::uint64_t seed = 0;
 };
 
-// The tree of that sample; x, y and sample must lie within the world's image and sample count.
+// Throws SettingsError (key "pixel" or "sample") when the pixel lies outside the image or the
+// sample beyond the pixel's count, and (key "integrator") for an integrator that traces no rays.
+void check_explainable(const RenderSettings& settings, const PixelSample& which);
+
+// The tree of that sample, checked first as above.
 RayTree explain(const World& world, const PixelSample& which);
 
 }  // namespace glint
