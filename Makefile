@@ -5,7 +5,7 @@ BUILD := build/$(PRESET)
 JOBS ?= $(shell nproc)
 GLINT := $(BUILD)/apps/glint/glint
 
-.PHONY: all deps build demo test format format-check clean
+.PHONY: all deps build demo test python format format-check clean
 
 all: build
 
@@ -22,6 +22,12 @@ demo: deps build
 
 test: deps build
 	ctest --preset $(PRESET) -j $(JOBS)
+
+# The Python module alone, in $(BUILD)/python: PYTHONPATH=$(BUILD)/python python3 -c "import glint"
+python: deps
+	cmake --preset $(PRESET) >/dev/null
+	cmake --build --preset $(PRESET) -j $(JOBS) --target glint_python
+	@echo "glint for Python is in $(CURDIR)/$(BUILD)/python: PYTHONPATH=$(CURDIR)/$(BUILD)/python python3"
 
 format:
 	clang-format -i $$(git ls-files '*.h' '*.cpp')

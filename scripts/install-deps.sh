@@ -11,6 +11,8 @@ packages=(
     libassimp-dev libembree-dev libpolyclipping-dev
     libcli11-dev libgtest-dev libgmock-dev libbenchmark-dev
     graphviz  # the tests render `glint explain --format dot` with it
+    python3-dev pybind11-dev python3-numpy python3-pytest  # the Python module and its tests
+    jupyter-nbconvert python3-ipykernel python3-matplotlib  # the notebooks, run as tests
 )
 [ "${1:-}" = "--bench" ] && packages+=(povray blender)
 
