@@ -278,7 +278,7 @@ int run_render(const RenderCommand& command) {
         }
         if (!result.complete) {
             const int passes = progress.passes_total;
-            const int next_pass = job.state().next_pass;
+            const int next_pass = job.state().passes_done();
             if (next_pass == 0)
                 std::fprintf(stderr,
                              "glint: interrupted in the first pass%s: the image so far is in %s "

@@ -118,7 +118,7 @@ TEST(Passes, RenderStoppedBetweenTilesAndContinuedIsIdentical) {
         RenderState state = initial_state(c.scene.settings, options);
         // Each call renders at least three tiles: more stops than tiles would mean no progress.
         const std::size_t most_stops =
-            state.tiles_done.size() *
+            state.tile_passes.size() *
             std::size_t(pass_count(c.scene.settings.samples_per_pixel, state.pass_size));
         RenderResult r;
         std::size_t stops = 0;
@@ -138,7 +138,8 @@ TEST(Passes, RenderStoppedBetweenTilesAndContinuedIsIdentical) {
             stopper.join();
             if (!r.complete) {
                 ++stops;
-                for (const std::uint8_t tile : state.tiles_done) mid_pass += tile;
+                // Tiles ahead of the others: stopped between the tiles of a pass.
+                for (const int tile : state.tile_passes) mid_pass += tile - state.passes_done();
             }
             ASSERT_LE(stops, most_stops) << c.name;
         } while (!r.complete);
@@ -151,7 +152,7 @@ TEST(Passes, CheckpointsSeeEachPassButTheLast) {
     const Case c = cases()[1];
     RenderOptions options = options_of(2, 2);
     std::vector<int> seen;
-    options.after_pass = [&](const RenderState& state) { seen.push_back(state.next_pass); };
+    options.after_pass = [&](const RenderState& state) { seen.push_back(state.passes_done()); };
     EXPECT_TRUE(render(World(c.scene), options).complete);
     EXPECT_EQ(seen, (std::vector<int>{1, 2, 3}));  // 7 samples in 4 passes
 }

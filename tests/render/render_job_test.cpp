@@ -7,8 +7,11 @@
 #include <atomic>
 #include <mutex>
 #include <set>
+#include <stdexcept>
+#include <string>
 #include <thread>
 #include <utility>
+#include <vector>
 
 namespace glint {
 namespace {
@@ -89,6 +92,60 @@ TEST(RenderJob, ItsImageCanBeReadWhileItRenders) {
     running = false;
     reader.join();
     EXPECT_EQ(job.image_so_far().pixels, result.image.pixels);
+}
+
+}  // namespace
+}  // namespace glint
+
+namespace glint {
+namespace {
+
+// Tile after tile, each through every pass, from the last tile back, over two runs: the image and
+// the counts of one render() from the start, for a film that splats across tiles and for the
+// photon integrator, which builds a photon map for each pass.
+TEST(RenderJob, AWorkListInAnyOrderOfTilesGivesTheRendersImage) {
+    for (const IntegratorKind integrator : {IntegratorKind::distributed, IntegratorKind::photon}) {
+        Scene scene = small_scene();
+        scene.settings.integrator = integrator;
+        const World world(scene);
+        const RenderResult whole = render(world, small_options());
+        RenderJob job(world, small_options());
+        const int passes = integrator == IntegratorKind::photon ? 4 : 2;  // photon: 1 a pass
+        std::vector<WorkPiece> first, second;
+        for (int tile = 5; tile >= 0; --tile)
+            for (int pass = 0; pass < passes; ++pass)
+                (tile >= 3 ? first : second).push_back({pass, tile});
+        EXPECT_TRUE(job.run(first).complete);
+        EXPECT_FALSE(job.done());
+        EXPECT_EQ(job.state().passes_done(), 0);
+        EXPECT_EQ(job.progress().tiles_total, int(first.size()));
+        const RenderResult result = job.run(second);
+        EXPECT_TRUE(result.complete);
+        EXPECT_TRUE(job.done());
+        EXPECT_EQ(result.image.pixels, whole.image.pixels) << integrator_name(integrator);
+        EXPECT_EQ(result.rays, whole.rays) << integrator_name(integrator);
+    }
+}
+
+TEST(RenderJob, AWorkListMustTakeEachTilesPassesInTurnOnce) {
+    const World world(small_scene());
+    RenderJob job(world, small_options());
+    const auto refused = [&](std::vector<WorkPiece> work) {
+        try {
+            job.run(work);
+        } catch (const std::invalid_argument& e) {
+            return std::string(e.what());
+        }
+        return std::string("accepted");
+    };
+    EXPECT_NE(refused({{1, 0}}).find("tile 0 is at pass 0, not 1"), std::string::npos);
+    EXPECT_NE(refused({{0, 2}, {0, 2}}).find("tile 2 is at pass 1, not 0"), std::string::npos);
+    EXPECT_NE(refused({{0, 6}}).find("outside the render's 2 passes of 6 tiles"),
+              std::string::npos);
+    EXPECT_NE(refused({{2, 0}}).find("outside"), std::string::npos);
+    EXPECT_EQ(job.state().passes_done(), 0);  // nothing was rendered
+    EXPECT_EQ(refused({{1, 0}, {0, 0}}), "accepted");  // in any order within the list
+    EXPECT_EQ(job.state().tile_passes[0], 2);
 }
 
 }  // namespace

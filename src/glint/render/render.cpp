@@ -16,6 +16,7 @@
 #include <mutex>
 #include <optional>
 #include <stdexcept>
+#include <string>
 
 #include "glint/geometry/traversal_counters.h"
 #include "glint/render/eye_sample.h"
@@ -139,14 +140,40 @@ void render_tile(const Tile& tile, Pass pass, const RenderInputs<Integrator>& in
     if constexpr (kAovs) state.aovs.merge(*aov_tile);
 }
 
-// Renders the passes from state.next_pass on, until the last or a stop. Returns whether every
-// pass was done.
+// Checks a work list against the state (render() says what it takes) and puts it in the order it
+// is rendered: by pass, then by tile.
+std::vector<WorkPiece> ordered_work(std::span<const WorkPiece> work, const RenderState& state,
+                                    int passes) {
+    std::vector<WorkPiece> ordered(work.begin(), work.end());
+    std::sort(ordered.begin(), ordered.end(), [](const WorkPiece& a, const WorkPiece& b) {
+        return a.pass != b.pass ? a.pass < b.pass : a.tile < b.tile;
+    });
+    const int tiles = int(state.tile_passes.size());
+    std::vector<int> next(state.tile_passes);  // each tile's next pass, as the list goes
+    for (const WorkPiece& piece : ordered) {
+        if (piece.tile < 0 || piece.tile >= tiles || piece.pass < 0 || piece.pass >= passes)
+            throw std::invalid_argument("render: piece (pass " + std::to_string(piece.pass) +
+                                        ", tile " + std::to_string(piece.tile) +
+                                        ") is outside the render's " + std::to_string(passes) +
+                                        " passes of " + std::to_string(tiles) + " tiles");
+        if (piece.pass != next[std::size_t(piece.tile)])
+            throw std::invalid_argument(
+                "render: tile " + std::to_string(piece.tile) + " is at pass " +
+                std::to_string(next[std::size_t(piece.tile)]) + ", not " +
+                std::to_string(piece.pass) + ": each tile's passes come one after another, once");
+        ++next[std::size_t(piece.tile)];
+    }
+    return ordered;
+}
+
+// Renders the pieces of `work` (ordered_work's order), pass by pass, until the last or a stop.
+// Returns whether every piece was done.
 template <class Integrator>
-bool render_passes(const World& world, const RenderOptions& options, const std::vector<Tile>& tiles,
-                   RenderProgress* progress, RenderState& state) {
+bool render_work(const World& world, const RenderOptions& options, const std::vector<Tile>& tiles,
+                 std::span<const WorkPiece> work, RenderProgress* progress, RenderState& state) {
     const RenderSettings& settings = world.settings();
     const int spp = settings.samples_per_pixel;
-    const int size = state.pass_size, passes = pass_count(spp, size);
+    const int size = state.pass_size;
     const Sampler sampler(sampler_of(settings), spp, options.seed);
     std::optional<FilterSampling> filter_sampling;
     if (importance_samples_filter(settings)) filter_sampling.emplace(filter_of(settings));
@@ -162,64 +189,67 @@ bool render_passes(const World& world, const RenderOptions& options, const std::
     if (options.threads > 0)
         allow_threads.emplace(tbb::global_control::max_allowed_parallelism, options.threads);
     tbb::task_arena arena(options.threads > 0 ? options.threads : tbb::task_arena::automatic);
-    for (; state.next_pass < passes; ++state.next_pass) {
-        const Pass pass{state.next_pass * size, std::min(spp, (state.next_pass + 1) * size)};
+    for (std::size_t first = 0; first < work.size();) {
+        // This pass's pieces: work[first, last).
+        const int pass_index = work[first].pass;
+        std::size_t last = first;
+        while (last < work.size() && work[last].pass == pass_index) ++last;
+        const Pass pass{pass_index * size, std::min(spp, (pass_index + 1) * size)};
         std::atomic<bool> skipped{false};
         arena.execute([&] {
             if constexpr (requires(RayStats & r) {
                               Integrator::begin_pass(shared, world, 0, std::uint64_t(0), r);
                           }) {
-                // Counted once, though a pass continued after a stop prepares again.
+                // Counted once, by the first piece of the pass, though a pass continued after a
+                // stop prepares again.
                 RayStats prepared;
                 Integrator::begin_pass(shared, world, pass.begin, options.seed, prepared);
-                if (std::none_of(state.tiles_done.begin(), state.tiles_done.end(),
-                                 [](std::uint8_t d) { return d != 0; })) {
+                if (std::none_of(state.tile_passes.begin(), state.tile_passes.end(),
+                                 [&](int done) { return done > pass_index; })) {
                     const std::lock_guard lock(state_mutex);
                     state.rays += prepared;
                 }
             }
             // One tile per task: tiles are large enough to amortise scheduling.
             tbb::parallel_for(
-                tbb::blocked_range<std::size_t>(0, tiles.size(), 1),
+                tbb::blocked_range<std::size_t>(first, last, 1),
                 [&](const tbb::blocked_range<std::size_t>& range) {
                     for (std::size_t i = range.begin(); i != range.end(); ++i) {
-                        if (state.tiles_done[i]) continue;  // before the render was continued
+                        const int tile = work[i].tile;
                         if (progress && progress->cancel) {
                             skipped = true;
                             continue;
                         }
                         TileTotals totals;
                         if (state.aovs.empty())
-                            render_tile<Integrator, false>(tiles[i], pass, inputs, state, totals);
+                            render_tile<Integrator, false>(tiles[std::size_t(tile)], pass, inputs,
+                                                           state, totals);
                         else
-                            render_tile<Integrator, true>(tiles[i], pass, inputs, state, totals);
+                            render_tile<Integrator, true>(tiles[std::size_t(tile)], pass, inputs,
+                                                          state, totals);
                         {
                             const std::lock_guard lock(state_mutex);
                             state.rays += totals.rays;
                             state.bad_samples += totals.bad;
                         }
-                        state.tiles_done[i] = 1;  // tasks write distinct elements
+                        // Tasks write distinct elements.
+                        state.tile_passes[std::size_t(tile)] = pass_index + 1;
                         if (progress) ++progress->tiles_done;
                         if (options.after_tile) options.after_tile(++tiles_finished);
-                        if (options.after_piece) options.after_piece(state.next_pass, int(i));
+                        if (options.after_piece) options.after_piece(pass_index, tile);
                     }
                 },
                 tbb::simple_partitioner());
         });
         if (skipped) return false;
-        std::fill(state.tiles_done.begin(), state.tiles_done.end(), 0);
-        if (progress) ++progress->passes_done;
-        if (state.next_pass + 1 == passes) continue;
-        if (progress && (progress->stop_after_pass || progress->cancel)) {
-            ++state.next_pass;
-            return false;
-        }
-        if (options.after_pass) {
-            ++state.next_pass;  // the state as saved: this pass is done
+        first = last;
+        if (progress) progress->passes_done = state.passes_done();
+        if (first == work.size()) break;
+        if (progress && (progress->stop_after_pass || progress->cancel)) return false;
+        if (options.after_pass && state.passes_done() == pass_index + 1) {
             options.after_pass(state);
             // A stop asked for while it ran (a slow checkpoint) need not wait for another pass.
             if (progress && (progress->stop_after_pass || progress->cancel)) return false;
-            --state.next_pass;
         }
     }
     return true;
@@ -240,6 +270,14 @@ int pass_size_of(const RenderSettings& settings, const RenderOptions& options) {
     return options.pass_size > 0 ? options.pass_size : samples_per_pass(settings.samples_per_pixel);
 }
 
+std::vector<WorkPiece> remaining_work(const RenderState& state, int passes) {
+    std::vector<WorkPiece> work;
+    for (int pass = state.passes_done(); pass < passes; ++pass)
+        for (std::size_t tile = 0; tile < state.tile_passes.size(); ++tile)
+            if (state.tile_passes[tile] <= pass) work.push_back({pass, int(tile)});
+    return work;
+}
+
 RenderState initial_state(const RenderSettings& settings, const RenderOptions& options) {
     return RenderState(settings, options.tile_size, pass_size_of(settings, options), options.aovs);
 }
@@ -255,31 +293,34 @@ Image resolve_image(const RenderState& state) {
 }
 
 RenderResult render(const World& world, const RenderOptions& options, RenderProgress* progress,
-                    RenderState* state) {
+                    RenderState* state, std::span<const WorkPiece> work) {
     const auto start = std::chrono::steady_clock::now();
     const RenderSettings& settings = world.settings();
     const std::vector<Tile> tiles = make_tiles(settings.width, settings.height, options.tile_size);
     std::optional<RenderState> fresh;
     if (!state) state = &fresh.emplace(initial_state(settings, options));
     if (state->width != settings.width || state->height != settings.height ||
-        state->tiles_done.size() != tiles.size() ||
+        state->tile_passes.size() != tiles.size() ||
         state->pass_size != pass_size_of(settings, options) || state->aovs.set() != options.aovs)
         throw std::invalid_argument(
             "render: the state is of another image, tile or pass size, or other output variables");
+    const int passes = pass_count(settings.samples_per_pixel, state->pass_size);
+    const std::vector<WorkPiece> pieces =
+        work.empty() ? remaining_work(*state, passes) : ordered_work(work, *state, passes);
     if (progress) {
-        const int passes = pass_count(settings.samples_per_pixel, state->pass_size);
-        int done = state->next_pass * int(tiles.size());
-        for (const std::uint8_t d : state->tiles_done) done += d;
+        int done = 0;
+        if (work.empty())  // the whole render: what earlier calls did counts too
+            for (const int tile : state->tile_passes) done += tile;
         // Done before total: a watcher that sees the total sees the count it starts from.
         progress->tiles_done = done;
-        progress->passes_done = std::min(state->next_pass, passes);
+        progress->passes_done = state->passes_done();
         progress->passes_total = passes;
-        progress->tiles_total = static_cast<int>(tiles.size()) * passes;
+        progress->tiles_total = done + int(pieces.size());
     }
 
     RenderResult result;
     result.complete = with_integrator(settings.integrator, [&]<class Integrator>() {
-        return render_passes<Integrator>(world, options, tiles, progress, *state);
+        return render_work<Integrator>(world, options, tiles, pieces, progress, *state);
     });
     result.image = resolve_image(*state);
     if (options.record_samples_taken) result.samples_taken = samples_image(*state);

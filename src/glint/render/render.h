@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <functional>
 #include <mutex>
+#include <span>
 #include <vector>
 
 #include "glint/image/image.h"
@@ -18,6 +19,13 @@
 #include "glint/render/world.h"
 
 namespace glint {
+
+// A piece of a render's work: one tile (its index in make_tiles order) through one pass.
+struct WorkPiece {
+    int pass = 0;
+    int tile = 0;
+    bool operator==(const WorkPiece&) const = default;
+};
 
 struct RenderOptions {
     int threads = 0;  // 0: all cores
@@ -64,7 +72,7 @@ struct RenderResult {
     RayStats rays;
     BadSamples bad_samples;
     double seconds = 0;    // wall time, earlier calls on the same state included
-    bool complete = true;  // false when stopped before every pass was done
+    bool complete = true;  // false when stopped before every piece asked for was done
 };
 
 // The samples each pixel takes a pass, and a render's state before its first pass.
@@ -74,11 +82,18 @@ RenderState initial_state(const RenderSettings& settings, const RenderOptions& o
 // The image a state holds: its film resolved, and the light integrator's particles' film added.
 Image resolve_image(const RenderState& state);
 
+// Every piece left to do in `state`, pass by pass, tiles in make_tiles order within a pass.
+std::vector<WorkPiece> remaining_work(const RenderState& state, int passes);
+
 // Renders from `state` (which must be of this world's settings and options' tile and pass sizes,
-// as initial_state makes it), or from
-// the start without one, and leaves in it the state reached. The result's counts are the
-// render's totals, those of earlier calls on the state included.
+// as initial_state makes it), or from the start without one, and leaves in it the state
+// reached: the pieces of `work`, or without a list every piece left. A list may hold any pieces
+// in any order so long as each tile's are the passes that follow those it has done, one after
+// another (std::invalid_argument otherwise); they are rendered pass by pass. Progress counts
+// the list's pieces. The result's counts are the render's totals, those of earlier calls on the
+// state included.
 RenderResult render(const World& world, const RenderOptions& options,
-                    RenderProgress* progress = nullptr, RenderState* state = nullptr);
+                    RenderProgress* progress = nullptr, RenderState* state = nullptr,
+                    std::span<const WorkPiece> work = {});
 
 }  // namespace glint

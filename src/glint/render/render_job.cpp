@@ -12,6 +12,11 @@ RenderJob::RenderJob(const World& world, RenderOptions options, std::optional<Re
       state_(state ? std::move(*state) : initial_state(world.settings(), options_)) {}
 
 RenderResult RenderJob::run(std::function<void(const WorkPiece&)> observer) {
+    return run({}, std::move(observer));
+}
+
+RenderResult RenderJob::run(std::span<const WorkPiece> work,
+                            std::function<void(const WorkPiece&)> observer) {
     progress_.stop_after_pass = false;
     progress_.cancel = false;
     RenderOptions options = options_;
@@ -23,7 +28,7 @@ RenderResult RenderJob::run(std::function<void(const WorkPiece&)> observer) {
             observer(WorkPiece{pass, tile});
         };
     }
-    return render(world_, options, &progress_, &state_);
+    return render(world_, options, &progress_, &state_, work);
 }
 
 Image RenderJob::image_so_far() const {
@@ -32,7 +37,8 @@ Image RenderJob::image_so_far() const {
 }
 
 bool RenderJob::done() const {
-    return state_.next_pass >= pass_count(world_.settings().samples_per_pixel, state_.pass_size);
+    return state_.passes_done() >=
+           pass_count(world_.settings().samples_per_pixel, state_.pass_size);
 }
 
 }  // namespace glint

@@ -14,12 +14,6 @@
 
 namespace glint {
 
-// A piece of a render's work: one tile (its index in make_tiles order) through one pass.
-struct WorkPiece {
-    int pass = 0;
-    int tile = 0;
-};
-
 class RenderJob {
 public:
     // A render of `world`, which must outlive the job, with `options`: from its start, or from
@@ -30,6 +24,9 @@ public:
     // is forgotten. Calls `observer` on the render thread that finished each piece, concurrently.
     // The result's counts and time are the job's totals so far.
     RenderResult run(std::function<void(const WorkPiece&)> observer = {});
+    // Renders the pieces of `work` alone (render() says which lists it takes), likewise.
+    RenderResult run(std::span<const WorkPiece> work,
+                     std::function<void(const WorkPiece&)> observer = {});
 
     // From any thread while run() runs: stop once the pass in flight is done (every pixel then
     // has the same samples), or at once (tiles not yet started are skipped, those in flight

@@ -16,7 +16,7 @@ RenderState::RenderState(const RenderSettings& settings, int tile_size, int pass
       aovs(aov_set, settings.width, settings.height, filter_of(settings),
            importance_samples_filter(settings)),
       samples(std::size_t(settings.width) * settings.height, 0),
-      tiles_done(make_tiles(settings.width, settings.height, tile_size).size(), 0) {
+      tile_passes(make_tiles(settings.width, settings.height, tile_size).size(), 0) {
     if (settings.adaptive) errors.resize(samples.size());
     if (integrator_info(settings.integrator).traces_particles)
         splats.emplace(settings.width, settings.height, filter_of(settings));

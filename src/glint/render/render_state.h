@@ -46,10 +46,16 @@ struct RenderState {
     RayStats rays;
     BadSamples bad_samples;
     double seconds = 0;  // wall time of the render so far
-    int next_pass = 0;   // the pass in flight, or the pass count when the render is done
-    // Tiles (make_tiles order) that have finished the pass in flight: a render stopped between
-    // tiles continues with the others, since tiles within a pass are independent.
-    std::vector<std::uint8_t> tiles_done;
+    // The passes each tile (make_tiles order) has done. Tiles are independent, so a render may
+    // take them in any order as long as each tile's passes come one after another: a render
+    // stopped between tiles continues with the others, and a work list may run one tile
+    // through all its passes before the next.
+    std::vector<int> tile_passes;
+
+    // The passes every tile has done: the pass in flight, or the pass count when all are done.
+    int passes_done() const {
+        return tile_passes.empty() ? 0 : *std::min_element(tile_passes.begin(), tile_passes.end());
+    }
 };
 
 }  // namespace glint

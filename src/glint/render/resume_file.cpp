@@ -25,7 +25,7 @@ constexpr char kMagic[8] = {'G', 'L', 'I', 'N', 'T', 'R', 'E', 'S'};
 // 3: an adaptive render's film holds each pixel's own weighted samples (filter importance
 // sampling); 4: rays of five kinds (diffuse); 5: of six (particles), the particles' counts, and
 // the light integrator's film of particles; 6: the photons stored.
-constexpr std::uint32_t kFormatVersion = 6;
+constexpr std::uint32_t kFormatVersion = 7;
 
 class ByteWriter {
 public:
@@ -345,9 +345,8 @@ std::string difference(const RenderIdentity& was, const RenderIdentity& now) {
 }
 
 void encode_state(const RenderState& s, ByteWriter& out) {
-    out.i32(s.next_pass);
-    out.u32(std::uint32_t(s.tiles_done.size()));
-    out.raw(s.tiles_done.data(), s.tiles_done.size());
+    out.u32(std::uint32_t(s.tile_passes.size()));
+    for (const int passes : s.tile_passes) out.i32(passes);
     for (const std::uint64_t n : s.rays.traced) out.u64(n);
     out.u64(s.rays.primary_hits);
     out.u64(s.rays.particles);
@@ -385,16 +384,15 @@ void encode_state(const RenderState& s, ByteWriter& out) {
 
 // The bytes encode_state writes for s, worked out without writing them.
 std::uint64_t encoded_size(const RenderState& s) {
-    return 4 + 4 + s.tiles_done.size() + kRayKindCount * 8 + 5 * 8 + 8 + 1 + 3 * 4 + 8 +
+    return 4 + s.tile_passes.size() * 4 + kRayKindCount * 8 + 5 * 8 + 8 + 1 + 3 * 4 + 8 +
            s.samples.size() * 4 + s.errors.size() * (4 + 8 + 8) + s.film.box_sums().size() * 4 * 4 +
            s.film.sums().size() * 4 * 16 + (s.splats ? s.splats->size() * 8 : 0);
 }
 
 // Decodes into `s`, a fresh state of the expected image, whose sizes the data must have.
 void decode_state(ByteReader& in, RenderState& s, const std::string& corrupt) {
-    s.next_pass = in.i32();
-    if (in.u32() != s.tiles_done.size()) throw ResumeError(corrupt);
-    std::memcpy(s.tiles_done.data(), in.take(s.tiles_done.size()), s.tiles_done.size());
+    if (in.u32() != s.tile_passes.size()) throw ResumeError(corrupt);
+    for (int& passes : s.tile_passes) passes = in.i32();
     for (std::uint64_t& n : s.rays.traced) n = in.u64();
     s.rays.primary_hits = in.u64();
     s.rays.particles = in.u64();
@@ -535,9 +533,9 @@ RenderState read_resume_file(const std::filesystem::path& file, const RenderIden
         throw ResumeError(corrupt);
     ByteReader state_in(payload.data(), payload.size(), corrupt);
     decode_state(state_in, state, corrupt);
-    if (state.next_pass < 0 ||
-        state.next_pass > pass_count(settings.samples_per_pixel, state.pass_size))
-        throw ResumeError(corrupt);
+    const int passes = pass_count(settings.samples_per_pixel, state.pass_size);
+    for (const int done : state.tile_passes)
+        if (done < 0 || done > passes) throw ResumeError(corrupt);
     return state;
 }
 
