@@ -151,6 +151,9 @@ def explain(scene: Scene, *, pixel: Tuple[int, int], sample: int = 0, seed: int 
     given, as to `glint explain`, to see the sample that render computed."""
     if not isinstance(scene, Scene):
         raise TypeError(f"scene: expected a glint.Scene, got {type(scene).__name__}")
+    if (not isinstance(pixel, (tuple, list)) or len(pixel) != 2
+            or not all(isinstance(v, int) and not isinstance(v, bool) for v in pixel)):
+        raise TypeError(f"pixel: expected (x, y), two whole numbers, got {pixel!r}")
     x, y = pixel
     text = _glint.explain_json(
         scene._data, x=x, y=y, sample=sample, seed=seed,

@@ -48,3 +48,9 @@ def test_cones_are_not_explained():
     with pytest.raises(glint.SettingsError, match="follows rays") as caught:
         glint.explain(glint.Scene(sphere_scene()), pixel=(0, 0), integrator="cone")
     assert caught.value.key == "integrator"
+
+
+def test_a_pixel_that_is_not_two_whole_numbers_is_a_type_error():
+    for pixel in [(1,), (1.5, 2), "1,2", (1, 2, 3)]:
+        with pytest.raises(TypeError, match="pixel: expected \\(x, y\\)"):
+            glint.explain(glint.Scene(sphere_scene()), pixel=pixel)

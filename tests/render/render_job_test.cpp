@@ -143,7 +143,7 @@ TEST(RenderJob, AWorkListMustTakeEachTilesPassesInTurnOnce) {
     EXPECT_NE(refused({{0, 6}}).find("outside the render's 2 passes of 6 tiles"),
               std::string::npos);
     EXPECT_NE(refused({{2, 0}}).find("outside"), std::string::npos);
-    EXPECT_EQ(job.state().passes_done(), 0);  // nothing was rendered
+    EXPECT_EQ(job.state().passes_done(), 0);           // nothing was rendered
     EXPECT_EQ(refused({{1, 0}, {0, 0}}), "accepted");  // in any order within the list
     EXPECT_EQ(job.state().tile_passes[0], 2);
 }
