@@ -21,7 +21,6 @@
 #include "command_errors.h"
 #include "glint/image/atomic_file.h"
 #include "glint/image/file_io.h"
-#include "glint/image/image_format.h"
 #include "glint/image/image_io.h"
 #include "glint/image/srgb.h"
 #include "glint/render/memory_estimate.h"
@@ -165,10 +164,6 @@ AovSet requested_aovs(const RenderCommand& c) {
     return set;
 }
 
-bool is_exr(const std::filesystem::path& path) {
-    return format_from_extension(path) == ImageFormat::exr;
-}
-
 }  // namespace
 
 int run_render(const RenderCommand& command) {
@@ -186,7 +181,7 @@ int run_render(const RenderCommand& command) {
                 throw UsageError{*reason};
         }
         const AovSet aovs = requested_aovs(command);
-        if (!is_exr(output))
+        if (!holds_aov_layers(output))
             for (const Aov a : aovs.list())
                 if (const auto reason =
                         unwritable_image_reason(aov_picture_path(output, a).string()))

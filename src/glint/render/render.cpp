@@ -177,18 +177,20 @@ bool render_work(const World& world, const RenderOptions& options, const std::ve
     const Sampler sampler(sampler_of(settings), spp, options.seed);
     std::optional<FilterSampling> filter_sampling;
     if (importance_samples_filter(settings)) filter_sampling.emplace(filter_of(settings));
-    typename Integrator::Shared shared = Integrator::prepare(world);
-    std::mutex own_mutex;
-    std::mutex& state_mutex = options.state_mutex ? *options.state_mutex : own_mutex;
-    const RenderInputs<Integrator> inputs{
-        world, sampler, filter_sampling ? &*filter_sampling : nullptr, shared, state_mutex};
-    std::atomic<int> tiles_finished{0};
     // An explicit thread count may exceed the cores (to check determinism, say): lift TBB's
     // default cap on workers for the duration of the render.
     std::optional<tbb::global_control> allow_threads;
     if (options.threads > 0)
         allow_threads.emplace(tbb::global_control::max_allowed_parallelism, options.threads);
     tbb::task_arena arena(options.threads > 0 ? options.threads : tbb::task_arena::automatic);
+    // In the arena: what an integrator prepares in parallel (beam tracing's shadow polygons)
+    // keeps to the render's threads.
+    typename Integrator::Shared shared = arena.execute([&] { return Integrator::prepare(world); });
+    std::mutex own_mutex;
+    std::mutex& state_mutex = options.state_mutex ? *options.state_mutex : own_mutex;
+    const RenderInputs<Integrator> inputs{
+        world, sampler, filter_sampling ? &*filter_sampling : nullptr, shared, state_mutex};
+    std::atomic<int> tiles_finished{0};
     for (std::size_t first = 0; first < work.size();) {
         // This pass's pieces: work[first, last).
         const int pass_index = work[first].pass;

@@ -10,13 +10,9 @@
 
 namespace glint {
 
-namespace {
-
-bool is_exr(const std::filesystem::path& path) {
-    return format_from_extension(path) == ImageFormat::exr;
+bool holds_aov_layers(const std::filesystem::path& output) {
+    return format_from_extension(output) == ImageFormat::exr;
 }
-
-}  // namespace
 
 std::filesystem::path aov_picture_path(const std::filesystem::path& output, Aov aov) {
     std::filesystem::path p = output;
@@ -26,7 +22,7 @@ std::filesystem::path aov_picture_path(const std::filesystem::path& output, Aov 
 
 void write_image_and_aovs(const std::filesystem::path& output, const RenderResult& result,
                           bool ppm_ascii) {
-    if (is_exr(output)) {
+    if (holds_aov_layers(output)) {
         const std::vector<ExrLayer> layers = aov_exr_layers(result.aovs);
         write_image(output, result.image, WriteOptions{.exr_layers = layers});
         return;

@@ -10,6 +10,10 @@
 
 namespace glint {
 
+// Whether an output holds the output variables as its layers (an EXR file) rather than as
+// pictures beside it.
+bool holds_aov_layers(const std::filesystem::path& output);
+
 // Where an output variable's picture goes beside a non-EXR output: "out.png" gives
 // "out.depth.png".
 std::filesystem::path aov_picture_path(const std::filesystem::path& output, Aov aov);

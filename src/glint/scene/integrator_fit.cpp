@@ -41,8 +41,9 @@ std::string line_of(const SourceLocation& where) {
     return in ? line : std::string();
 }
 
-SourceLocation place_of(const Scene& scene, const std::vector<TextPosition>& places,
-                        std::size_t i) {
+// The place of the i-th material, light or object where the loader kept it, else the file's.
+template <class Places>
+SourceLocation place_of(const Scene& scene, const Places& places, std::size_t i) {
     if (i < places.size()) return {scene.sources.file, places[i].line, places[i].column};
     return {scene.sources.file, 0, 0};
 }
@@ -62,11 +63,7 @@ void check_beam_fits(const Scene& scene) {
     for (std::size_t i = 0; i < scene.objects.size(); ++i) {
         const auto unfit = beam_unfit_part(scene.objects[i].shape);
         if (!unfit) continue;
-        const SourceLocation where =
-            i < scene.sources.objects.size()
-                ? SourceLocation{scene.sources.file, scene.sources.objects[i].line,
-                                 scene.sources.objects[i].column}
-                : file;
+        const SourceLocation where = place_of(scene, scene.sources.objects, i);
         throw SceneError(where,
                          "object " + std::to_string(i) + " is " + *unfit +
                              ": the beam integrator traces scenes of planar polygons (polygons, "
