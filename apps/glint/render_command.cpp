@@ -220,18 +220,11 @@ int run_render(const RenderCommand& command) {
                                     partial = partial_output_path(output);
         std::optional<RenderState> saved;
         if (command.resume) saved = read_resume_file(resume, identity, s);
-        using Clock = std::chrono::steady_clock;
-        Clock::time_point last_checkpoint = Clock::now();
-        if (command.checkpoint_minutes) {
-            const std::chrono::duration<double> interval(*command.checkpoint_minutes * 60);
-            // The interval by value: it goes out of scope before the render calls this.
-            options.after_pass = [&, interval](const RenderState& so_far) {
-                if (Clock::now() - last_checkpoint < interval) return;
-                save_progress(partial, resume, identity, so_far, resolve_image(so_far),
-                              command.ppm_ascii);
-                last_checkpoint = Clock::now();
-            };
-        }
+        if (command.checkpoint_minutes)
+            options.after_pass =
+                checkpoint_hook({partial, resume, identity,
+                                 std::chrono::duration<double>(*command.checkpoint_minutes * 60),
+                                 command.ppm_ascii});
         RenderJob job(world, options, std::move(saved));
         RenderProgress& progress = job.progress();
         // The tests' hold, after each piece of work when they set it.

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "glint/image/file_io.h"
+#include "glint/render/render_output.h"
 #include "glint/scene/yaml/yaml_scene_loader.h"
 
 namespace glint {
@@ -257,6 +258,38 @@ TEST_F(ResumeFile, MissingTruncatedCorruptAndForeignFilesAreRefused) {
 
 TEST(ResumePath, IsTheOutputWithResumeAppended) {
     EXPECT_EQ(resume_path("out/image.png"), std::filesystem::path("out/image.png.resume"));
+}
+
+}  // namespace
+}  // namespace glint
+
+namespace glint {
+namespace {
+
+// A checkpoint at every pass but the last: the files hold the render as it was after the one
+// before the last, and a render continued from them gives the uninterrupted image.
+TEST_F(ResumeFile, CheckpointsSaveEachPassButTheLastAndContinueToTheSameImage) {
+    const World world(scene_);
+    const fs::path partial = dir_ / "image.partial.png", resume = dir_ / "image.png.resume";
+    RenderOptions options = options_;
+    options.after_pass = checkpoint_hook({partial, resume, identity(), {}, false});
+    const RenderResult whole = render(world, options);
+    ASSERT_TRUE(fs::exists(partial));
+    RenderState saved = read_resume_file(resume, identity(), scene_.settings);
+    EXPECT_EQ(saved.passes_done(), 2);  // 6 samples in passes of 2
+    const RenderResult continued = render(world, options_, nullptr, &saved);
+    EXPECT_EQ(continued.image.pixels, whole.image.pixels);
+}
+
+// With an interval longer than the render, nothing is saved.
+TEST_F(ResumeFile, NoCheckpointBeforeItsInterval) {
+    const fs::path partial = dir_ / "image.partial.png", resume = dir_ / "image.png.resume";
+    RenderOptions options = options_;
+    options.after_pass =
+        checkpoint_hook({partial, resume, identity(), std::chrono::hours(1), false});
+    render(World(scene_), options);
+    EXPECT_FALSE(fs::exists(partial));
+    EXPECT_FALSE(fs::exists(resume));
 }
 
 }  // namespace

@@ -1,6 +1,7 @@
 // The image and its output variables, and the state of a stopped render, written to files.
 #include "glint/render/render_output.h"
 
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -37,6 +38,18 @@ void save_progress(const std::filesystem::path& partial, const std::filesystem::
                    bool ppm_ascii) {
     write_image(partial, image, WriteOptions{ppm_ascii});
     write_resume_file(resume, identity, state);
+}
+
+std::function<void(const RenderState&)> checkpoint_hook(CheckpointPolicy policy) {
+    using Clock = std::chrono::steady_clock;
+    // Shared by the hook's copies (a job copies its options for each run).
+    auto last = std::make_shared<Clock::time_point>(Clock::now());
+    return [policy = std::move(policy), last](const RenderState& so_far) {
+        if (Clock::now() - *last < policy.interval) return;
+        save_progress(policy.partial, policy.resume, policy.identity, so_far, resolve_image(so_far),
+                      policy.ppm_ascii);
+        *last = Clock::now();
+    };
 }
 
 }  // namespace glint

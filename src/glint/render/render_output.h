@@ -3,7 +3,9 @@
 // stops before its end (the image so far beside the output, and the state to continue from).
 #pragma once
 
+#include <chrono>
 #include <filesystem>
+#include <functional>
 
 #include "glint/render/render.h"
 #include "glint/render/resume_file.h"
@@ -28,5 +30,18 @@ void write_image_and_aovs(const std::filesystem::path& output, const RenderResul
 void save_progress(const std::filesystem::path& partial, const std::filesystem::path& resume,
                    const RenderIdentity& identity, const RenderState& state, const Image& image,
                    bool ppm_ascii = false);
+
+// Saving a render's progress while it renders, so that a crash or a kill loses at most one
+// interval: at the end of each pass but the last, once `interval` has passed since the last save
+// (or the start), save_progress to `partial` and `resume`.
+struct CheckpointPolicy {
+    std::filesystem::path partial, resume;
+    RenderIdentity identity;
+    std::chrono::duration<double> interval{0};
+    bool ppm_ascii = false;
+};
+
+// The RenderOptions::after_pass hook that carries the policy out; its clock starts now.
+std::function<void(const RenderState&)> checkpoint_hook(CheckpointPolicy policy);
 
 }  // namespace glint
