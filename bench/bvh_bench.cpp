@@ -23,8 +23,7 @@
 #include "glint/geometry/wide_bvh_traversal.h"
 #include "glint/render/ray_sets.h"
 #include "glint/render/world.h"
-#include "glint/scene/mesh/model_scene.h"
-#include "glint/scene/nff/nff_to_scene.h"
+#include "glint/scene/load_scene.h"
 
 namespace glint {
 namespace {
@@ -64,7 +63,7 @@ Subject* subject(const std::string& file) {
     const std::filesystem::path path = kData / file;
     if (!std::filesystem::exists(path)) return nullptr;
     auto s = std::make_unique<Subject>();
-    s->scene = is_model_file(path) ? load_model_scene(path) : load_nff_scene(path);
+    s->scene = load_scene(path);
     s->world = std::make_unique<World>(s->scene);
     s->sets = make_ray_sets(*s->world, kRaysPerSet);
     Bounds3 all;

@@ -19,6 +19,7 @@
 #include "glint/render/ray_sets.h"
 #include "glint/render/world.h"
 #include "glint/scene/load_scene.h"
+#include "glint/scene/scene_formats.h"
 #include "scene_read_options.h"
 #include "usage_error.h"
 
@@ -80,8 +81,7 @@ bool chosen(const std::vector<std::string>& names, std::string_view set) {
 CLI::App* add_bench_command(CLI::App& app, BenchCommand& c) {
     CLI::App* bench = app.add_subcommand(
         "bench", "Measure every acceleration structure on the same rays of a scene");
-    bench->add_option("scene", c.scene, "Scene file (.yaml, .nff, or a model: .obj, .ply, ...)")
-        ->required();
+    bench->add_option("scene", c.scene, "Scene file: " + scene_formats_text())->required();
     bench->add_flag("--json", c.json, "One JSON object a line (keys in docs/cli.md)");
     std::vector<std::string> names;
     for (const std::string_view name : accel_names()) names.emplace_back(name);

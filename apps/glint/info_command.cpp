@@ -8,6 +8,7 @@
 #include "glint/accel/make_aggregate.h"
 #include "glint/render/world.h"
 #include "glint/scene/load_scene.h"
+#include "glint/scene/scene_formats.h"
 #include "info_report.h"
 
 namespace glint::cli {
@@ -17,10 +18,7 @@ namespace {}  // namespace
 CLI::App* add_info_command(CLI::App& app, InfoCommand& c) {
     CLI::App* info = app.add_subcommand(
         "info", "Count what a scene holds, describe its acceleration structure, and lint it");
-    info->add_option("scene", c.scene,
-                     "Scene file: .yaml or .yml, .nff or .nff.gz, or a model file (.obj, .ply, "
-                     ".gltf, .glb, .stl)")
-        ->required();
+    info->add_option("scene", c.scene, "Scene file: " + scene_formats_text())->required();
     std::vector<std::string> accels;
     for (const std::string_view name : accel_names()) accels.emplace_back(name);
     info->add_option("--accel", c.accel,

@@ -10,6 +10,7 @@
 #include "explain_command.h"
 #include "glint/accel/make_aggregate.h"
 #include "glint/scene/scene.h"
+#include "glint/scene/scene_formats.h"
 #include "info_command.h"
 #include "render_command.h"
 #include "scene_read_options.h"
@@ -41,11 +42,7 @@ Examples:
 
 void add_render_command(CLI::App& app, glint::cli::RenderCommand& c) {
     CLI::App* render = app.add_subcommand("render", "Render a scene to an image");
-    render
-        ->add_option("scene", c.scene,
-                     "Scene file: .yaml or .yml (glint's format), .nff or .nff.gz (NFF), or a "
-                     "model file (.obj, .ply, .gltf, .glb, .stl)")
-        ->required();
+    render->add_option("scene", c.scene, "Scene file: " + glint::scene_formats_text())->required();
     render->add_option("-o,--output", c.output,
                        "Image to write: .png (sRGB, 8-bit), .ppm, .pfm or .exr (linear float); "
                        "default: the scene's name with .png");

@@ -1,13 +1,11 @@
-// The scene formats by extension: YAML, NFF (also gzipped) and the model files Assimp reads.
+// A scene file loaded by its format's row of the table (scene_formats.h), or scene text as YAML.
 #include "glint/scene/load_scene.h"
 
-#include <algorithm>
 #include <string>
 
-#include "glint/scene/mesh/model_scene.h"
-#include "glint/scene/nff/nff_to_scene.h"
 #include "glint/scene/read_sandbox.h"
 #include "glint/scene/scene_error.h"
+#include "glint/scene/scene_formats.h"
 #include "glint/scene/yaml/yaml_scene_loader.h"
 
 namespace glint {
@@ -25,23 +23,14 @@ void note_files_read(Scene& scene, const ReadSandbox& sandbox,
 }  // namespace
 
 Scene load_scene(const std::filesystem::path& file, const LoadOptions& options) {
-    std::string extension = file.extension().string();
-    std::transform(extension.begin(), extension.end(), extension.begin(),
-                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-    const bool yaml = extension == ".yaml" || extension == ".yml";
-    const bool nff =
-        extension == ".nff" || (extension == ".gz" && file.stem().extension() == ".nff");
-    if (!yaml && !nff && !is_model_file(file)) {
-        throw SceneError(
-            {file.string()}, "unknown scene format \"" + extension + "\"",
-            {"scene formats are: .yaml, .yml (glint), .nff, .nff.gz (Haines' NFF), and "
-             ".obj, .ply, .gltf, .glb, .stl (models)"});
-    }
+    const SceneFormat* format = scene_format_of(file);
+    if (!format)
+        throw SceneError({file.string()},
+                         "unknown scene format \"" + file.extension().string() + "\"",
+                         {"scene formats are: " + scene_formats_text()});
     ReadSandbox sandbox = make_read_sandbox(file, options.allow_read, options.max_file_bytes);
     sandbox.limits = options.limits;
-    // An NFF file names no other files: only its own size is checked.
-    if (nff) return load_nff_scene(file, sandbox.file_limit(kMaxNffFileBytes), options.limits);
-    Scene scene = yaml ? load_yaml_scene(file, sandbox) : load_model_scene(file, sandbox);
+    Scene scene = format->load(file, sandbox);
     note_files_read(scene, sandbox, file);
     return scene;
 }

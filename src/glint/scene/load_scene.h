@@ -22,8 +22,9 @@ struct LoadOptions {
     SceneLimits limits;
 };
 
-// .yaml and .yml (glint's format), .nff and .nff.gz (Haines' NFF), and the model files Assimp
-// reads (.obj, .ply, .gltf, .glb, .stl). Throws SceneError for unknown formats and for whatever
+// Any format of scene_formats.h, picked by the file's extension: .yaml and .yml (glint's
+// format), .nff and .nff.gz (Haines' NFF), and the model files Assimp reads (.obj, .ply, .gltf,
+// .glb, .stl). Throws SceneError for unknown formats and for whatever
 // the loader rejects, including a file the scene names outside the folders it may read. Without
 // options a scene reads only under its own folder. The scene's sources.files_read lists every
 // other file it read.

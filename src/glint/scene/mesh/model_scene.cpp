@@ -62,12 +62,4 @@ Scene load_model_scene(const std::filesystem::path& file) {
     return model_to_scene(load_model(file));
 }
 
-bool is_model_file(const std::filesystem::path& file) {
-    std::string extension = file.extension().string();
-    std::transform(extension.begin(), extension.end(), extension.begin(),
-                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-    return extension == ".obj" || extension == ".ply" || extension == ".gltf" ||
-           extension == ".glb" || extension == ".stl";
-}
-
 }  // namespace glint

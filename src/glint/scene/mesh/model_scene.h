@@ -17,7 +17,4 @@ Scene model_to_scene(const Model& model);
 Scene load_model_scene(const std::filesystem::path& file, const ReadSandbox& sandbox);
 Scene load_model_scene(const std::filesystem::path& file);
 
-// Whether the file's extension names a model format load_model reads.
-bool is_model_file(const std::filesystem::path& file);
-
 }  // namespace glint
