@@ -116,9 +116,7 @@ RenderResult run_job(RenderJob& job, const py::object& progress) {
 py::object render(const std::shared_ptr<const Scene>& scene_data, const SettingOverrides& overrides,
                   std::uint64_t seed, int threads, const std::vector<std::string>& aov_names,
                   const std::string& accel_name, const py::object& progress) {
-    if (threads < 0 || threads > 4096)
-        throw SettingsError("threads", "threads: expected a whole number from 0 to 4096, got " +
-                                           std::to_string(threads));
+    check_whole_number("threads", threads, 0, 4096);
     Scene scene = *scene_data;
     apply_setting_overrides(overrides, scene.settings);
     check_integrator_fits(scene);

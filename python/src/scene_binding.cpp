@@ -25,9 +25,7 @@ namespace {
 template <typename T>
 T within(const char* key, std::optional<T> value, T fallback, T most) {
     if (!value) return fallback;
-    if (*value < 1 || *value > most)
-        throw SettingsError(key, std::string(key) + ": expected a whole number from 1 to " +
-                                     std::to_string(most) + ", got " + std::to_string(*value));
+    check_whole_number(key, *value, 1, most);
     return *value;
 }
 

@@ -18,9 +18,7 @@ namespace glint {
 namespace {
 
 void check_range(const char* key, const std::optional<int>& value, int most) {
-    if (value && (*value < 1 || *value > most))
-        throw SettingsError(key, std::string(key) + ": expected a whole number from 1 to " +
-                                     std::to_string(most) + ", got " + std::to_string(*value));
+    if (value) check_whole_number(key, *value, 1, most);
 }
 
 // An empty name or one of `names`, else the error that lists them.
@@ -33,6 +31,14 @@ void check_name(const char* key, const std::string& name, std::span<const std::s
 }
 
 }  // namespace
+
+void check_whole_number(const char* key, std::int64_t value, std::int64_t least,
+                        std::int64_t most) {
+    if (value < least || value > most)
+        throw SettingsError(key, std::string(key) + ": expected a whole number from " +
+                                     std::to_string(least) + " to " + std::to_string(most) +
+                                     ", got " + std::to_string(value));
+}
 
 void apply_setting_overrides(const SettingOverrides& o, RenderSettings& s) {
     check_range("width", o.width, kMaxImageSide);

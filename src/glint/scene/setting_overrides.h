@@ -3,6 +3,7 @@
 // its range and names, then the settings as a whole as a scene file's own are.
 #pragma once
 
+#include <cstdint>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -34,6 +35,10 @@ private:
     std::string key_;
     std::vector<std::string> notes_;
 };
+
+// Throws SettingsError for a value of `key` outside [least, most]:
+// "spp: expected a whole number from 1 to 16777216, got 0".
+void check_whole_number(const char* key, std::int64_t value, std::int64_t least, std::int64_t most);
 
 // The scene's settings with the overrides applied; a lone width or height keeps the scene's
 // aspect ratio. Throws SettingsError for a value out of its range or an unknown name, for an
