@@ -15,12 +15,13 @@
 #include <string>
 #include <vector>
 
+#include "glint/accel/bvh.h"
 #include "glint/accel/make_aggregate.h"
+#include "glint/accel/mesh_bvh.h"
 #include "glint/accel/rounding_margin.h"
-#include "glint/geometry/bvh.h"
+#include "glint/accel/wide_bvh.h"
+#include "glint/accel/wide_bvh_traversal.h"
 #include "glint/geometry/simd_path.h"
-#include "glint/geometry/wide_bvh.h"
-#include "glint/geometry/wide_bvh_traversal.h"
 #include "glint/render/ray_sets.h"
 #include "glint/render/world.h"
 #include "glint/scene/load_scene.h"
@@ -40,6 +41,7 @@ struct Subject {
     std::shared_ptr<const MeshData> mesh;
     std::vector<Bounds3> triangle_bounds;
     Bvh mesh_binary;
+    std::unique_ptr<MeshBvh> mesh_wide;
     // Top level: the bounded primitives' boxes, grown as BvhAggregate grows them.
     std::vector<std::uint32_t> bounded;
     std::vector<Bounds3> primitive_bounds;
@@ -87,6 +89,7 @@ Subject* subject(const std::string& file) {
     if (s->mesh) {
         s->triangle_bounds = triangle_boxes(*s->mesh);
         s->mesh_binary = build_bvh(s->triangle_bounds);
+        s->mesh_wide = std::make_unique<MeshBvh>(s->mesh);
     }
     slot = std::move(s);
     return slot.get();
@@ -118,7 +121,7 @@ std::size_t trace_mesh(const Bvh& bvh, const MeshData& mesh, const RaySet& set) 
 }
 
 // The same through the mesh's own wide tree, whose leaves test four triangles at a time.
-std::size_t trace_mesh(const TriangleMesh& mesh, const RaySet& set) {
+std::size_t trace_mesh(const MeshBvh& mesh, const RaySet& set) {
     std::size_t hits = 0;
     for (std::size_t i = 0; i < set.rays.size(); ++i) {
         hits += set.query == RayQuery::occluded
@@ -170,7 +173,7 @@ void traverse(benchmark::State& state, const std::string& file, bool mesh_level,
     for (auto _ : state) {
         if (mesh_level) {
             hits = tree == Tree::binary ? trace_mesh(s->mesh_binary, *s->mesh, set)
-                                        : trace_mesh(TriangleMesh{s->mesh}, set);
+                                        : trace_mesh(*s->mesh_wide, set);
         } else {
             hits = tree == Tree::binary ? trace_top(s->top_binary, *s, set)
                                         : trace_top(s->top_wide, *s, set);
@@ -186,12 +189,14 @@ void traverse(benchmark::State& state, const std::string& file, bool mesh_level,
         const std::size_t binary_bytes = s->mesh_binary.nodes.size() * sizeof(BvhNode) +
                                          s->mesh_binary.primitive_indices.size() * 4;
         state.counters["tree_bytes_per_tri"] =
-            double(tree == Tree::binary ? binary_bytes : m.bvh().memory_bytes()) / tris;
+            double(tree == Tree::binary ? binary_bytes : s->mesh_wide->tree().memory_bytes()) /
+            tris;
         // Everything the mesh takes: positions, normals, uvs, indices and the tree.
         const std::size_t arrays = m.positions.size() * sizeof(Point3) +
                                    m.normals.size() * sizeof(Normal3) +
                                    m.uvs.size() * sizeof(Point2) + m.triangles.size() * 12;
-        state.counters["all_bytes_per_tri"] = double(arrays + m.bvh().memory_bytes()) / tris;
+        state.counters["all_bytes_per_tri"] =
+            double(arrays + s->mesh_wide->tree().memory_bytes()) / tris;
     }
 }
 
@@ -222,15 +227,13 @@ void build(benchmark::State& state, const std::string& file, Build what, int thr
     }
     const std::span<const Primitive> prims = s->world->primitives();
     for (auto _ : state) {
-        MeshData unbuilt;  // a copy starts without its tree
-        if (what == Build::wide) unbuilt = *s->mesh;
         const double seconds = seconds_on(threads, [&] {
             switch (what) {
                 case Build::binary:
                     benchmark::DoNotOptimize(build_bvh(s->triangle_bounds).nodes.data());
                     break;
                 case Build::wide:
-                    benchmark::DoNotOptimize(unbuilt.bvh().nodes.data());
+                    benchmark::DoNotOptimize(MeshBvh(s->mesh).tree().nodes.data());
                     break;
                 case Build::scene_wide:
                     benchmark::DoNotOptimize(make_aggregate(AccelKind::bvh, prims).get());

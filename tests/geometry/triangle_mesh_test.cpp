@@ -1,5 +1,5 @@
 // Triangle meshes: building (validation, degenerate triangles), worked hits on a quad, smooth
-// and flat normals, the shared shape properties, and the BVH against brute force.
+// and flat normals, and the shared shape properties. Its BVH is tested in tests/accel.
 #include "glint/geometry/triangle_mesh.h"
 
 #include <gtest/gtest.h>
@@ -293,38 +293,6 @@ TEST(TriangleMesh, PropertiesOfANonConvexMesh) {
     options.gradient_mismatch_fraction = 0.02f;
     testing::expect_shape_properties(mesh, distance_to_surface,
                                      testing::RandomRays({0, 0.25f, 0}, 1), options);
-}
-
-TEST(TriangleMesh, ClosestHitMatchesBruteForceOverEveryTriangle) {
-    MeshData arrays;
-    std::mt19937 rng(11);
-    std::uniform_real_distribution<float> u(-1, 1);
-    for (std::uint32_t i = 0; i < 3000; ++i) {
-        const Vector3 c{u(rng) * 5, u(rng) * 5, u(rng) * 5};
-        for (int k = 0; k < 3; ++k) {
-            arrays.positions.push_back(to_point(c + Vector3{u(rng), u(rng), u(rng)} * 0.5f));
-        }
-        arrays.triangles.push_back({3 * i, 3 * i + 1, 3 * i + 2});
-    }
-    const TriangleMesh mesh = build(arrays);
-    for (int i = 0; i < 2000; ++i) {
-        const Ray ray{{u(rng) * 8, u(rng) * 8, u(rng) * 8},
-                      normalize(Vector3{u(rng), u(rng), u(rng) + 0.01f})};
-        std::optional<ShapeHit> expected;
-        Interval range;
-        for (std::uint32_t k = 0; k < mesh.data->triangles.size(); ++k) {
-            if (auto hit = intersect_triangle(*mesh.data, k, ray, range)) {
-                range.max = hit->t;
-                expected = hit;
-            }
-        }
-        const auto got = mesh.intersect(ray, {});
-        ASSERT_EQ(bool(expected), bool(got)) << "ray " << i;
-        if (expected) {
-            ASSERT_EQ(got->t, expected->t) << "ray " << i;
-        }
-        ASSERT_EQ(bool(expected), mesh.occluded(ray, {})) << "ray " << i;
-    }
 }
 
 }  // namespace

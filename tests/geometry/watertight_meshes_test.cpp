@@ -18,6 +18,7 @@
 #include <string>
 #include <vector>
 
+#include "glint/accel/mesh_bvh.h"
 #include "glint/geometry/triangle.h"
 #include "glint/geometry/triangle_mesh.h"
 
@@ -243,7 +244,9 @@ Tally shoot_at_edges_and_vertices(const Solid& s, int rays_per_vertex = 2) {
     EXPECT_TRUE(built.mesh) << built.error;
     EXPECT_TRUE(is_closed_surface(*built.mesh)) << s.name;
     EXPECT_EQ(built.degenerate_dropped, 0u);
-    const TriangleMesh mesh{built.mesh};
+    // Through the mesh's own BVH, as the renderer traces it: its leaves test four triangles at
+    // once.
+    const TriangleMesh mesh{built.mesh, std::make_shared<const MeshBvh>(built.mesh)};
     float radius = 0;
     for (const Point3 p : s.arrays.positions) radius = std::max(radius, distance(p, s.center));
     std::mt19937 rng(7);

@@ -9,6 +9,7 @@
 #include <map>
 #include <random>
 
+#include "glint/accel/mesh_bvh.h"
 #include "glint/scene/mesh/model_loader.h"
 #include "glint/scene/scene_error.h"
 
@@ -60,16 +61,14 @@ std::size_t count_lines(const std::filesystem::path& file, const std::string& pr
     return n;
 }
 
+// The mesh traced whole through its own BVH, as instances are.
+TriangleMesh traced_whole(std::shared_ptr<const MeshData> mesh) {
+    return {mesh, std::make_shared<const MeshBvh>(mesh)};
+}
+
 // The nearest hit over every triangle, without the BVH.
-std::optional<ShapeHit> brute_force(const MeshData& mesh, const Ray& ray, Interval range) {
-    std::optional<ShapeHit> nearest;
-    for (std::uint32_t k = 0; k < mesh.triangles.size(); ++k) {
-        if (auto hit = intersect_triangle(mesh, k, ray, range)) {
-            range.max = hit->t;
-            nearest = hit;
-        }
-    }
-    return nearest;
+std::optional<ShapeHit> brute_force(const TriangleMesh& mesh, const Ray& ray, Interval range) {
+    return TriangleMesh{mesh.data}.intersect(ray, range);
 }
 
 TEST_F(SharedMeshes, CountsAndBoundsMatchTheReadme) {
@@ -102,7 +101,7 @@ TEST_F(SharedMeshes, RaysHitWhereTheyShouldAndTheBvhMatchesBruteForce) {
         SCOPED_TRACE(e.file);
         const Model m = load_shared(e.file);
         ASSERT_FALSE(m.parts.empty());
-        const TriangleMesh mesh{m.parts[0].mesh};
+        const TriangleMesh mesh = traced_whole(m.parts[0].mesh);
         const MeshData& data = *mesh.data;
         const Point3 c = m.bounds.center();
         const float size = length(m.bounds.diagonal());
@@ -139,7 +138,7 @@ TEST_F(SharedMeshes, RaysHitWhereTheyShouldAndTheBvhMatchesBruteForce) {
             }
             if (i >= 100) continue;  // brute force is slow on the 69k-triangle bunny
             const Ray probe{o, d};
-            const auto expected = brute_force(data, probe, {});
+            const auto expected = brute_force(mesh, probe, {});
             const auto got = mesh.intersect(probe, {});
             ASSERT_EQ(bool(expected), bool(got)) << "probe " << i;
             if (expected) {
@@ -160,7 +159,7 @@ TEST_F(SharedMeshes, RaysHitWhereTheyShouldAndTheBvhMatchesBruteForce) {
 TEST_F(SharedMeshes, RaysThroughSharedEdgesOfAClosedMesh) {
     const Model m = load_shared("bunny_npm.obj");
     ASSERT_EQ(m.parts.size(), 1u);
-    const TriangleMesh mesh{m.parts[0].mesh};
+    const TriangleMesh mesh = traced_whole(m.parts[0].mesh);
     const MeshData& data = *mesh.data;
     std::map<std::pair<std::uint32_t, std::uint32_t>, int> edges;
     for (const auto& t : data.triangles) {
@@ -189,7 +188,7 @@ TEST_F(SharedMeshes, RaysThroughSharedEdgesOfAClosedMesh) {
                 ++misses;
                 midpoint_misses += i == 0;
                 // The BVH is not to blame: the triangles themselves let the ray through.
-                ASSERT_FALSE(brute_force(data, ray, {}));
+                ASSERT_FALSE(brute_force(mesh, ray, {}));
             }
         }
     }

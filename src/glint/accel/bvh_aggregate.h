@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "glint/accel/aggregate.h"
-#include "glint/geometry/wide_bvh_traversal.h"
+#include "glint/accel/wide_bvh_traversal.h"
 
 namespace glint {
 

@@ -55,19 +55,6 @@ struct CsgDepth {
     int operator()(const auto&) const { return 0; }
 };
 
-struct PrepareMeshes {
-    bool top_level;
-    void operator()(const TriangleMesh& m) const {
-        if (top_level) m.data->bvh();
-    }
-    void operator()(const Transformed& t) const { prepare_mesh_bvhs(*t.shape, true); }
-    void operator()(const Moving& m) const { prepare_mesh_bvhs(*m.shape, true); }
-    void operator()(const Csg& c) const {
-        prepare_mesh_bvhs(*c.a, true);
-        prepare_mesh_bvhs(*c.b, true);
-    }
-    void operator()(const auto&) const {}
-};
 }  // namespace
 
 std::string_view shape_name(const Shape& shape) { return std::visit(NameOf{}, shape); }
@@ -75,9 +62,5 @@ std::string_view shape_name(const Shape& shape) { return std::visit(NameOf{}, sh
 bool is_solid(const Shape& shape) { return std::visit(IsSolid{}, shape); }
 
 int csg_depth(const Shape& shape) { return std::visit(CsgDepth{}, shape); }
-
-void prepare_mesh_bvhs(const Shape& shape, bool top_level) {
-    std::visit(PrepareMeshes{top_level}, shape);
-}
 
 }  // namespace glint

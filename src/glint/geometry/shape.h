@@ -74,9 +74,4 @@ bool is_solid(const Shape& shape);
 // How many CSG levels the shape nests, through transforms and instances.
 int csg_depth(const Shape& shape);
 
-// Builds the own BVH of every mesh the shape holds inside transforms, instances and CSG, so that
-// rendering does not build them on first use; with top_level, also of the shape itself when it
-// is a mesh (which acceleration structures split into triangles, but light buffers test whole).
-void prepare_mesh_bvhs(const Shape& shape, bool top_level);
-
 }  // namespace glint

@@ -1,12 +1,11 @@
-// Building meshes (validation, degenerate triangles, BVH) and intersecting them.
+// Building meshes (validation, degenerate triangles) and intersecting them.
 #include "glint/geometry/triangle_mesh.h"
-
-#include <tbb/task_arena.h>
 
 #include <cmath>
 #include <numeric>
 #include <string>
 
+#include "glint/geometry/traversal_counters.h"
 #include "glint/geometry/triangle.h"
 #include "glint/geometry/triangle_derivatives.h"
 
@@ -111,7 +110,6 @@ MeshBuild build_mesh(MeshData arrays) {
     arrays.bounds = {};
     for (const auto& t : arrays.triangles)
         for (const std::uint32_t v : t) arrays.bounds = merge(arrays.bounds, arrays.positions[v]);
-    arrays.bvh_cache = {};
     result.mesh = std::make_shared<const MeshData>(std::move(arrays));
     return result;
 }
@@ -159,66 +157,27 @@ std::optional<ShapeHit> intersect_triangle(const MeshData& mesh, std::uint32_t i
     return hit;
 }
 
-const WideBvh& MeshBvhCache::get(const MeshData& mesh) const {
-    State& s = *state_;
-    if (s.built.load(std::memory_order_acquire)) return s.bvh;
-    std::call_once(s.once, [&] {
-        // Isolated: while this thread builds in parallel, it must not pick up a task of the
-        // caller's (another tile of the render) that would ask for this same BVH.
-        tbb::this_task_arena::isolate([&] {
-            std::vector<Bounds3> bounds(mesh.triangles.size());
-            for (std::size_t i = 0; i < bounds.size(); ++i) {
-                const auto& t = mesh.triangles[i];
-                bounds[i] = merge(Bounds3::of(mesh.positions[t[0]], mesh.positions[t[1]]),
-                                  mesh.positions[t[2]]);
-            }
-            s.bvh = build_wide_bvh(bounds, kWideBvhTriangleBuildOptions);
-            pack_block_leaves(s.bvh, [&](std::uint32_t i) -> std::optional<BlockTriangle> {
-                const auto& t = mesh.triangles[i];
-                return BlockTriangle{mesh.positions[t[0]], mesh.positions[t[1]],
-                                     mesh.positions[t[2]], i};
-            });
-        });
-        s.built.store(true, std::memory_order_release);
-    });
-    return s.bvh;
-}
-
 std::optional<ShapeHit> TriangleMesh::intersect(const Ray& ray, Interval t_range) const {
-    const WideBvh& bvh = data->bvh();
-    const BlockTester tester(ray);
-    ShapeHit nearest;
-    bool found = false;
-    bvh_closest_leaf(bvh, ray, t_range,
-                     [&](auto kernel, std::uint32_t leaf, std::uint32_t count, Interval& range)
-                         GLINT_INLINE_LEAF {
-                             for (const TriangleBlock& block : leaf_blocks(bvh, leaf, count)) {
-                                 const BlockHit hit = tester.nearest<decltype(kernel)::kSimd>(
-                                     block, range, kEveryLane);
-                                 if (!hit) continue;
-                                 const std::uint32_t part = block.id[hit.lane];
-                                 // At equal t the lower triangle, whatever the order of the leaves.
-                                 if (found && hit.t == nearest.t && part > nearest.part) continue;
-                                 nearest = ShapeHit{hit.t, hit.u, hit.v, part};
-                                 found = true;
-                                 range.max = hit.t;
-                             }
-                         });
-    if (!found) return std::nullopt;
+    if (accelerator) return accelerator->intersect(ray, t_range);
+    std::optional<ShapeHit> nearest;
+    for (std::uint32_t i = 0; i < data->triangles.size(); ++i) {
+        count_primitives();
+        // Strictly nearer only: at equal t the lower triangle stays.
+        if (auto hit = intersect_triangle(*data, i, ray, t_range)) {
+            t_range.max = hit->t;
+            if (!nearest || hit->t < nearest->t) nearest = hit;
+        }
+    }
     return nearest;
 }
 
 bool TriangleMesh::occluded(const Ray& ray, Interval t_range) const {
-    const WideBvh& bvh = data->bvh();
-    const BlockTester tester(ray);
-    return bvh_any_leaf(bvh, ray, t_range,
-                        [&](auto kernel, std::uint32_t leaf, std::uint32_t count,
-                            Interval range) GLINT_INLINE_LEAF {
-                            for (const TriangleBlock& block : leaf_blocks(bvh, leaf, count))
-                                if (tester.any<decltype(kernel)::kSimd>(block, range, kEveryLane))
-                                    return true;
-                            return false;
-                        });
+    if (accelerator) return accelerator->occluded(ray, t_range);
+    for (std::uint32_t i = 0; i < data->triangles.size(); ++i) {
+        count_primitives();
+        if (intersect_triangle(*data, i, ray, t_range)) return true;
+    }
+    return false;
 }
 
 SurfacePoint TriangleMesh::surface_at(const Ray&, const ShapeHit& hit, Uv uv) const {

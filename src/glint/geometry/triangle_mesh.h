@@ -1,50 +1,23 @@
-// A triangle mesh: shared, immutable vertex and index arrays with a BVH over the triangles, and
-// the shape that intersects it. Building validates the arrays and drops degenerate triangles.
+// A triangle mesh: shared, immutable vertex and index arrays, and the shape that intersects
+// them. Building validates the arrays and drops degenerate triangles. The BVH that traces a mesh
+// whole is not here but in accel/mesh_bvh.h: a scene's meshes are plain data.
 #pragma once
 
 #include <array>
-#include <atomic>
 #include <cstddef>
 #include <cstdint>
 #include <memory>
-#include <mutex>
 #include <optional>
 #include <string>
 #include <vector>
 
 #include "glint/geometry/surface_point.h"
-#include "glint/geometry/wide_bvh_traversal.h"
 #include "glint/math/bounds.h"
 #include "glint/math/huge_page_allocator.h"
 #include "glint/math/interval.h"
 #include "glint/math/ray.h"
 
 namespace glint {
-
-struct MeshData;
-
-// Where a mesh keeps its own BVH once built. A copy starts unbuilt: its arrays may still change.
-class MeshBvhCache {
-public:
-    MeshBvhCache() = default;
-    MeshBvhCache(const MeshBvhCache&) {}
-    MeshBvhCache& operator=(const MeshBvhCache&) {
-        state_ = std::make_unique<State>();
-        return *this;
-    }
-
-    // Builds it on the first call, once, whichever threads ask.
-    const WideBvh& get(const MeshData& mesh) const;
-    bool built() const { return state_->built.load(std::memory_order_acquire); }
-
-private:
-    struct State {
-        std::once_flag once;
-        std::atomic<bool> built{false};
-        WideBvh bvh;
-    };
-    std::unique_ptr<State> state_ = std::make_unique<State>();
-};
 
 // Immutable once built; shared by every object that uses it. Triangles run counter-clockwise
 // seen from their front side, as for Triangle.
@@ -54,13 +27,6 @@ struct MeshData {
     LargeVector<Point2> uvs;       // one per position; or empty
     LargeVector<std::array<std::uint32_t, 3>> triangles;
     Bounds3 bounds;  // of the triangles; set by build_mesh
-
-    // The mesh's own BVH over its triangles (in blocks of four; lanes name triangle indices),
-    // for tracing it as one shape: instances, transformed meshes, CSG operands, light buffers.
-    // Built on first use, or ahead of rendering by prepare_mesh_bvhs (shape.h). A mesh placed
-    // directly in a scene is traced through the scene's own structure and never builds it.
-    const WideBvh& bvh() const { return bvh_cache.get(*this); }
-    MeshBvhCache bvh_cache;
 };
 
 // Whether every edge joins exactly two triangles that run along it in opposite directions
@@ -70,8 +36,9 @@ bool is_closed_surface(const MeshData& mesh);
 
 // Coordinates beyond this magnitude are refused: products of such edges overflow a float.
 inline constexpr float kMaxMeshCoordinate = 1e16f;
-// More triangles or vertices than this are refused: what a wide BVH can index.
-inline constexpr std::size_t kMaxMeshElements = kWideBvhMaxPrimitives;
+// More triangles or vertices than this are refused: what a wide BVH can index (accel/wide_bvh.h,
+// which checks that it does).
+inline constexpr std::size_t kMaxMeshElements = 0x1fffffff;
 
 struct MeshBuild {
     std::shared_ptr<const MeshData> mesh;  // null on error
@@ -85,13 +52,27 @@ struct MeshBuild {
 // Errors are messages, never exceptions: "triangle 7 uses vertex 12 but there are 10 vertices".
 MeshBuild build_mesh(MeshData arrays);
 
+// What traces one mesh whole, faster than triangle by triangle, with the same answers: the BVH
+// over its triangles that the world builds for a mesh inside an instance, a transform, a CSG
+// operand or a light buffer (accel/mesh_bvh.h). One indirect call a ray that reaches the mesh,
+// which then traverses a tree over all its triangles.
+class MeshAccelerator {
+public:
+    virtual ~MeshAccelerator() = default;
+    virtual std::optional<ShapeHit> intersect(const Ray& ray, Interval t_range) const = 0;
+    virtual bool occluded(const Ray& ray, Interval t_range) const = 0;
+};
+
 struct TriangleMesh {
     std::shared_ptr<const MeshData> data;  // built by build_mesh; never null
+    // Set by the world for the meshes it traces whole (bind_mesh_bvhs); null in a Scene, where
+    // the mesh is tested triangle by triangle: right, and only slow for big meshes.
+    std::shared_ptr<const MeshAccelerator> accelerator;
 
     Bounds3 bounds() const { return data->bounds; }
-    // Nearest hit: the mesh's BVH, then the watertight test on its triangles, four at a time
-    // (as Triangle tests one). hit.part is the triangle's index (the lower one at equal t),
-    // hit.u and hit.v the barycentric weights of its vertices 1 and 2.
+    // Nearest hit, through the accelerator or triangle by triangle, with the watertight test (as
+    // Triangle's). hit.part is the triangle's index (the lower one at equal t), hit.u and hit.v
+    // the barycentric weights of its vertices 1 and 2.
     std::optional<ShapeHit> intersect(const Ray& ray, Interval t_range) const;
     // Whether any triangle is hit within t_range; stops at the first.
     bool occluded(const Ray& ray, Interval t_range) const;

@@ -12,6 +12,8 @@
 #include <optional>
 #include <unordered_set>
 
+#include "glint/accel/mesh_bvh.h"
+
 namespace glint {
 
 namespace {
@@ -96,7 +98,8 @@ std::size_t mesh_bvh_bytes(std::span<const Primitive> primitives) {
     for (const Primitive& p : primitives) {
         const auto* mesh = std::get_if<TriangleMesh>(&p.shape);
         if (!mesh || !seen.insert(mesh->data.get()).second) continue;
-        if (mesh->data->bvh_cache.built()) bytes += mesh->data->bvh().memory_bytes();
+        if (const auto* bvh = dynamic_cast<const MeshBvh*>(mesh->accelerator.get()))
+            bytes += bvh->tree().memory_bytes();
     }
     return bytes;
 }

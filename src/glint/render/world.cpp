@@ -6,6 +6,7 @@
 #include <cmath>
 #include <utility>
 
+#include "glint/accel/mesh_bvh.h"
 #include "glint/math/constants.h"
 #include "glint/render/integrators/eye_media.h"
 
@@ -45,6 +46,16 @@ World::World(Scene scene, AccelKind accel, ShadowAcceleration shadows)
         material_of_.push_back(object.material);
     }
     scene.objects = {};  // the moved-from shapes: freed before the structure is built
+    // The two-level structure's lower level first, before anything traces the shapes: the own
+    // BVH of each mesh traced whole (inside instances, transforms and CSG, and the small ones
+    // that light buffers list), rather than triangle by triangle.
+    const auto buffered = [&](const Light& light) {
+        return shadows.light_buffer && std::holds_alternative<PointLight>(light);
+    };
+    const bool any_buffer = std::any_of(lights_.begin(), lights_.end(), buffered);
+    bind_mesh_bvhs(primitives_, [&](const Shape& shape) {
+        return any_buffer && LightBuffer::tests_whole(shape);
+    });
     carries_pencils_ = settings_.integrator == IntegratorKind::cone ||
                        std::any_of(materials_.begin(), materials_.end(), [](const Material& m) {
                            const auto* image = std::get_if<ImageTexture>(&m.color);
@@ -70,18 +81,12 @@ World::World(Scene scene, AccelKind accel, ShadowAcceleration shadows)
         scene_center_ = bounded.min + bounded.diagonal() / 2;
     }
     shadows_ = shadows;
-    bool any_buffer = false;
     for (const Light& light : lights_) {
-        const auto* point = std::get_if<PointLight>(&light);
-        any_buffer |= point && shadows.light_buffer;
-        light_buffers_.push_back(point && shadows.light_buffer
-                                     ? std::make_unique<LightBuffer>(point->position, primitives_)
-                                     : nullptr);
+        light_buffers_.push_back(
+            buffered(light)
+                ? std::make_unique<LightBuffer>(std::get<PointLight>(light).position, primitives_)
+                : nullptr);
     }
-    // Meshes that are traced whole (inside instances, transforms and CSG, or small ones that
-    // light buffers list) get their own BVH now rather than on a render thread's first ray.
-    for (const Primitive& p : primitives_)
-        prepare_mesh_bvhs(p.shape, any_buffer && LightBuffer::tests_whole(p.shape));
     if (settings_.shadows == ShadowMethod::map) build_shadow_maps();
 }
 

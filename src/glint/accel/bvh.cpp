@@ -1,7 +1,7 @@
 // Parallel binned-SAH construction of the binary BVH, deterministic for any thread count: large
 // nodes are binned and partitioned in blocks of a fixed size and their results combined in block
 // order, and large subtrees are built as tasks into chunks that are laid out in a fixed order.
-#include "glint/geometry/bvh.h"
+#include "glint/accel/bvh.h"
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>

@@ -10,10 +10,10 @@
 #include <span>
 #include <utility>
 
-#include "glint/geometry/bvh.h"
+#include "glint/accel/bvh.h"
+#include "glint/accel/wide_bvh.h"
+#include "glint/accel/wide_bvh_node_test.h"
 #include "glint/geometry/simd_path.h"
-#include "glint/geometry/wide_bvh.h"
-#include "glint/geometry/wide_bvh_node_test.h"
 #include "glint/math/interval.h"
 #include "glint/math/ray.h"
 

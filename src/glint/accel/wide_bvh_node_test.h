@@ -9,8 +9,8 @@
 #include <cstdint>
 #include <cstring>
 
-#include "glint/geometry/bvh.h"
-#include "glint/geometry/wide_bvh.h"
+#include "glint/accel/bvh.h"
+#include "glint/accel/wide_bvh.h"
 #include "glint/math/ray.h"
 
 namespace glint::wide_bvh {

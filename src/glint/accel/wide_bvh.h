@@ -11,7 +11,7 @@
 #include <span>
 #include <vector>
 
-#include "glint/geometry/bvh.h"
+#include "glint/accel/bvh.h"
 #include "glint/geometry/sphere_block.h"
 #include "glint/geometry/triangle_block.h"
 #include "glint/math/bounds.h"

@@ -1,6 +1,6 @@
 // The BVH: structure invariants of the build (degenerate inputs included) and traversal against
 // brute force on random triangle soups.
-#include "glint/geometry/bvh.h"
+#include "glint/accel/bvh.h"
 
 #include <gtest/gtest.h>
 

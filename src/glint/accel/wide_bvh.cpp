@@ -1,6 +1,6 @@
 // Collapsing the binary BVH into wide nodes, and packing leaves of triangles and spheres into
 // blocks.
-#include "glint/geometry/wide_bvh.h"
+#include "glint/accel/wide_bvh.h"
 
 #include <algorithm>
 #include <array>

@@ -1,7 +1,7 @@
 // The wide BVH: collapse invariants, a build that is the same for any thread count, node tests
 // that agree bit for bit across SIMD paths, and traversal against brute force on random and
 // adversarial rays on every path.
-#include "glint/geometry/wide_bvh.h"
+#include "glint/accel/wide_bvh.h"
 
 #include <gtest/gtest.h>
 #include <tbb/global_control.h>
@@ -18,8 +18,8 @@
 #include <vector>
 
 #include "common/under_sanitizer.h"
+#include "glint/accel/wide_bvh_traversal.h"
 #include "glint/geometry/simd_path.h"
-#include "glint/geometry/wide_bvh_traversal.h"
 
 namespace glint {
 namespace {
