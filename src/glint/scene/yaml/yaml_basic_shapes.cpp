@@ -8,7 +8,7 @@
 namespace glint {
 
 Shape parse_sphere(const MapReader& object, ShapeReader&) {
-    return Sphere{object.point("center"), object.number("radius", kPositive)};
+    return Sphere{object.point("center"), object.number("radius")};
 }
 
 Shape parse_plane(const MapReader& object, ShapeReader&) {

@@ -60,7 +60,7 @@ Shape parse_implicit(const MapReader& object, ShapeReader&) {
                                        "implicit min must be less than max on every axis");
     }
     surface.f = read_function(object);
-    surface.tolerance = object.number("tolerance", kPositive, 1e-4f * extent);
+    surface.tolerance = object.number_or("tolerance", 1e-4f * extent);
     surface.max_segments = object.integer("max_segments", {1, 1 << 24}, surface.max_segments);
     return checked(object, surface);
 }
@@ -74,24 +74,24 @@ Shape parse_julia(const MapReader& object, ShapeReader&) {
         julia.c[i] =
             read_number(object.source(), items[i], {object.what(), "c[" + std::to_string(i) + "]"});
     }
-    julia.slice_w = object.number("slice_w", kAnyNumber, 0);
+    julia.slice_w = object.number("slice_w");
     julia.center = object.point("center", Point3{0, 0, 0});
-    julia.scale = object.number("scale", kPositive, 1);
+    julia.scale = object.number("scale");
     julia.max_iterations = object.integer("iterations", {1, 1000}, julia.max_iterations);
-    julia.epsilon = object.number("epsilon", kPositive, 1e-3f * julia.scale);
-    julia.bailout = object.number("bailout", kPositive, julia.bailout);
+    julia.epsilon = object.number_or("epsilon", 1e-3f * julia.scale);
+    julia.bailout = object.number("bailout");
     julia.max_steps = object.integer("max_steps", {1, 1 << 20}, julia.max_steps);
     return checked(object, julia);
 }
 
 Shape parse_mandelbulb(const MapReader& object, ShapeReader&) {
     Mandelbulb bulb;
-    bulb.power = object.number("power", {1, 64, true}, bulb.power);
+    bulb.power = object.number("power");
     bulb.center = object.point("center", Point3{0, 0, 0});
-    bulb.scale = object.number("scale", kPositive, 1);
+    bulb.scale = object.number("scale");
     bulb.max_iterations = object.integer("iterations", {1, 1000}, bulb.max_iterations);
-    bulb.epsilon = object.number("epsilon", kPositive, 1e-3f * bulb.scale);
-    bulb.bailout = object.number("bailout", kPositive, bulb.bailout);
+    bulb.epsilon = object.number_or("epsilon", 1e-3f * bulb.scale);
+    bulb.bailout = object.number("bailout");
     bulb.max_steps = object.integer("max_steps", {1, 1 << 20}, bulb.max_steps);
     return checked(object, bulb);
 }

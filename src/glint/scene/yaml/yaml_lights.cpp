@@ -16,7 +16,7 @@ namespace {
 constexpr Color kWhite{1, 1, 1};
 
 Color read_emitted(const MapReader& map) {
-    return map.color("color", kWhite) * map.number("intensity", kNonNegative, 1.0f);
+    return map.color("color", kWhite) * map.number("intensity");
 }
 
 Attenuation read_attenuation(const MapReader& map) {
@@ -72,8 +72,8 @@ LightEntry parse_spot(const MapReader& map) {
         }
         light.direction = *axis;
     }
-    const float cone = map.number("cone_angle", {0, 90, true, false}, 30.0f);
-    const float falloff = map.number("falloff", {0, 90}, std::min(5.0f, cone));
+    const float cone = map.number("cone_angle");
+    const float falloff = map.number_or("falloff", std::min(5.0f, cone));
     if (falloff > cone) {
         throw source.error_at(
             map.require("falloff").value,
@@ -109,13 +109,13 @@ LightEntry area_light(const MapReader& map, AreaLight light) {
 
 LightEntry parse_sphere(const MapReader& map) {
     const Point3 center = map.point("center");
-    return area_light(map, sphere_light(center, map.number("radius", kPositive)));
+    return area_light(map, sphere_light(center, map.number("radius")));
 }
 
 LightEntry parse_disk(const MapReader& map) {
     const Point3 center = map.point("center");
     const Normal3 normal(map.direction("normal", Vector3{0, -1, 0}));
-    return area_light(map, disk_light(center, normal, map.number("radius", kPositive)));
+    return area_light(map, disk_light(center, normal, map.number("radius")));
 }
 
 LightEntry parse_rectangle(const MapReader& map) {
@@ -134,29 +134,16 @@ LightEntry parse_rectangle(const MapReader& map) {
     return area_light(map, std::move(*light));
 }
 
+// Their keys are the lights' schemas (scene/schema/light_schemas.cpp).
 struct LightType {
     std::string_view name;
-    std::vector<std::string_view> keys;  // besides type
     LightEntry (*parse)(const MapReader& map);
 };
 
-// An area light's keys: its shape's, then those every area light takes.
-std::vector<std::string_view> area_keys(std::vector<std::string_view> shape_keys) {
-    shape_keys.insert(shape_keys.end(),
-                      {"color", "intensity", "attenuation", "shadow_rays", "visible"});
-    return shape_keys;
-}
-
 // Sorted by name.
 const LightType kLightTypes[] = {
-    {"directional", {"direction", "color", "intensity"}, parse_directional},
-    {"disk", area_keys({"center", "normal", "radius"}), parse_disk},
-    {"point", {"position", "color", "intensity", "attenuation"}, parse_point},
-    {"rectangle", area_keys({"center", "u", "v"}), parse_rectangle},
-    {"sphere", area_keys({"center", "radius"}), parse_sphere},
-    {"spot",
-     {"position", "direction", "at", "cone_angle", "falloff", "color", "intensity", "attenuation"},
-     parse_spot},
+    {"directional", parse_directional}, {"disk", parse_disk},     {"point", parse_point},
+    {"rectangle", parse_rectangle},     {"sphere", parse_sphere}, {"spot", parse_spot},
 };
 
 }  // namespace
@@ -168,9 +155,8 @@ LightEntry read_light(const YamlSource& source, const YAML::Node& node, const Fi
     const std::string name = read_type(source, node, entries, "light", names);
     const LightType& type = *std::find_if(std::begin(kLightTypes), std::end(kLightTypes),
                                           [&](const LightType& t) { return t.name == name; });
-    std::vector<std::string_view> keys = type.keys;
-    keys.push_back("type");
-    return type.parse(MapReader(source, node, std::move(entries), name + " light", keys));
+    return type.parse(MapReader(source, node, std::move(entries), name + " light",
+                                entity_schema(EntityFamily::light, name), {"type"}));
 }
 
 }  // namespace glint

@@ -3,6 +3,7 @@
 #include "glint/scene/yaml/yaml_map_reader.h"
 
 #include <algorithm>
+#include <stdexcept>
 #include <unordered_map>
 
 #include "glint/scene/suggest.h"
@@ -89,6 +90,29 @@ MapReader::MapReader(const YamlSource& source, const YAML::Node& node, const Fie
     : MapReader(source, node, read_map(source, node, field), std::move(what), std::move(keys),
                 type_key) {}
 
+namespace {
+
+std::vector<std::string_view> with(std::vector<std::string_view> keys,
+                                   const std::vector<std::string_view>& more) {
+    keys.insert(keys.end(), more.begin(), more.end());
+    return keys;
+}
+
+}  // namespace
+
+MapReader::MapReader(const YamlSource& source, const YAML::Node& node,
+                     std::vector<MapEntry> entries, std::string what, const EntitySchema& schema,
+                     std::vector<std::string_view> more)
+    : MapReader(source, node, std::move(entries), std::move(what), with(schema.key_names(), more)) {
+    schema_ = &schema;
+}
+
+MapReader::MapReader(const YamlSource& source, const YAML::Node& node, const Field& field,
+                     std::string what, const EntitySchema& schema,
+                     std::vector<std::string_view> more)
+    : MapReader(source, node, read_map(source, node, field), std::move(what), schema,
+                std::move(more)) {}
+
 Field MapReader::field(std::string_view key) const {
     const MapEntry* entry = find(key);
     return {what_, std::string(key), entry ? entry->key_node : YAML::Node()};
@@ -104,6 +128,20 @@ const MapEntry& MapReader::require(std::string_view key) const {
 float MapReader::number(std::string_view key, Range range, std::optional<float> fallback) const {
     if (fallback && !has(key)) return *fallback;
     return read_number(source_, require(key).value, field(key), range);
+}
+
+float MapReader::number(std::string_view key) const {
+    if (!schema_) throw std::logic_error(what_ + " is read without a schema");
+    const KeySchema& k = schema_->key(key);
+    const std::optional<float> fallback = k.number_default();
+    if (!has(key) && !fallback && !k.required())
+        throw std::logic_error(std::string(key) + "'s default is not a number: use number_or");
+    return number(key, k.range, fallback);
+}
+
+float MapReader::number_or(std::string_view key, float fallback) const {
+    if (!schema_) throw std::logic_error(what_ + " is read without a schema");
+    return number(key, schema_->key(key).range, fallback);
 }
 
 int MapReader::integer(std::string_view key, IntRange range, std::optional<int> fallback) const {

@@ -8,6 +8,7 @@
 #include <string_view>
 #include <vector>
 
+#include "glint/scene/schema/entity_schema.h"
 #include "glint/scene/yaml/yaml_reader.h"
 
 namespace glint {
@@ -50,6 +51,13 @@ public:
     MapReader(const YamlSource& source, const YAML::Node& node, const Field& field,
               std::string what, std::vector<std::string_view> keys,
               TypeKey type_key = TypeKey::implied);
+    // Accepts the schema's keys and `more`; number(key) then reads by the schema.
+    MapReader(const YamlSource& source, const YAML::Node& node, std::vector<MapEntry> entries,
+              std::string what, const EntitySchema& schema,
+              std::vector<std::string_view> more = {});
+    MapReader(const YamlSource& source, const YAML::Node& node, const Field& field,
+              std::string what, const EntitySchema& schema,
+              std::vector<std::string_view> more = {});
 
     const YamlSource& source() const { return source_; }
     const YAML::Node& node() const { return node_; }
@@ -63,6 +71,10 @@ public:
 
     // Typed values. Without a fallback the key is required.
     float number(std::string_view key, Range range, std::optional<float> fallback = {}) const;
+    // By the schema: its range, and its default when that is a plain number (else required).
+    float number(std::string_view key) const;
+    // By the schema's range, with a default it cannot write as a number ("1e-3 × scale").
+    float number_or(std::string_view key, float fallback) const;
     int integer(std::string_view key, IntRange range, std::optional<int> fallback = {}) const;
     bool boolean(std::string_view key, bool fallback) const;
     Point3 point(std::string_view key, std::optional<Point3> fallback = {}) const;
@@ -81,6 +93,7 @@ private:
     std::vector<MapEntry> entries_;
     std::string what_;
     std::vector<std::string_view> keys_;
+    const EntitySchema* schema_ = nullptr;
 };
 
 }  // namespace glint

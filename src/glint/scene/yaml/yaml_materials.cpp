@@ -78,7 +78,7 @@ Texture read_checker_texture(const MapReader& map) {
     CheckerTexture checker;
     checker.even = map.color("even", checker.even);
     checker.odd = map.color("odd", checker.odd);
-    checker.size = map.number("size", kPositive, checker.size);
+    checker.size = map.number("size");
     const std::string space =
         map.choice("space", kCheckerSpaces, "checker space", "checker spaces", "solid");
     checker.space = space == "uv" ? CheckerSpace::uv : CheckerSpace::solid;
@@ -90,20 +90,11 @@ NoiseSpec read_noise_spec(const MapReader& map, std::string_view type) {
     NoiseSpec spec;
     const auto* it = std::find(std::begin(kNoiseTypes), std::end(kNoiseTypes), type);
     spec.pattern = kNoisePatterns[it - std::begin(kNoiseTypes)];
-    spec.scale = map.number("scale", kPositive, spec.scale);
+    spec.scale = map.number("scale");
     // Wood's rings wander less than marble's veins by default, as in Ebert et al.
-    spec.turbulence =
-        map.number("turbulence", kNonNegative, spec.pattern == NoisePattern::wood ? 0.2f : 1.0f);
+    spec.turbulence = map.number_or("turbulence", spec.pattern == NoisePattern::wood ? 0.2f : 1.0f);
     spec.octaves = map.integer("octaves", {1, kMaxOctaves}, spec.octaves);
     return spec;
-}
-
-constexpr std::string_view kNoiseKeys[] = {"type", "scale", "turbulence", "octaves"};
-
-std::vector<std::string_view> noise_keys(std::initializer_list<std::string_view> more) {
-    std::vector<std::string_view> keys(std::begin(kNoiseKeys), std::end(kNoiseKeys));
-    keys.insert(keys.end(), more);
-    return keys;
 }
 
 // Default ramps: white marble with grey veins, light and dark wood, grey granite, black to white.
@@ -139,17 +130,19 @@ Texture read_noise_texture(const YamlSource& source, const MapReader& map, std::
 
 // A number, or a noise pattern that varies it between low and high ({type, low, high, ...}).
 std::optional<NoiseScalar> read_scalar_map(const MapReader& material, std::string_view key,
-                                           Range range, float& constant) {
+                                           float& constant) {
     const MapEntry* entry = material.find(key);
     if (!entry || !entry->value.IsMap()) {
-        constant = material.number(key, range, constant);
+        constant = material.number_or(key, constant);
         return std::nullopt;
     }
+    // low and high within the material key's range.
+    const Range range = entity_schema(EntityFamily::material, "material").key(key).range;
     const YamlSource& source = material.source();
     auto entries = read_map(source, entry->value, material.field(key));
     const std::string type = read_type(source, entry->value, entries, "pattern", kNoiseTypes);
     const MapReader map(source, entry->value, std::move(entries), type + " " + std::string(key),
-                        noise_keys({"low", "high"}));
+                        entity_schema(EntityFamily::pattern, "value"));
     NoiseScalar s{read_noise_spec(map, type)};
     s.low = map.number("low", range, 0.0f);
     s.high = map.number("high", range, 1.0f);
@@ -163,9 +156,9 @@ std::optional<BumpMap> read_bump(const MapReader& material) {
     auto entries = read_map(source, entry->value, material.field("bump"));
     const std::string type = read_type(source, entry->value, entries, "pattern", kNoiseTypes);
     const MapReader map(source, entry->value, std::move(entries), type + " bump",
-                        noise_keys({"strength"}));
+                        entity_schema(EntityFamily::pattern, "bump"));
     BumpMap bump{read_noise_spec(map, type)};
-    bump.strength = map.number("strength", kAnyNumber, bump.strength);
+    bump.strength = map.number("strength");
     return bump;
 }
 
@@ -177,16 +170,16 @@ Texture read_texture(const YamlSource& source, const ReadSandbox& sandbox, const
     const std::string type = read_type(source, node, entries, "texture", kTextureTypes);
     if (std::find(std::begin(kNoiseTypes), std::end(kNoiseTypes), type) != std::end(kNoiseTypes)) {
         const MapReader map(source, node, std::move(entries), type + " texture",
-                            noise_keys({"colors"}));
+                            entity_schema(EntityFamily::texture, type));
         return read_noise_texture(source, map, type);
     }
     if (type == "image") {
         const MapReader map(source, node, std::move(entries), "image texture",
-                            {"type", "file", "scale", "wrap", "filter"});
+                            entity_schema(EntityFamily::texture, "image"));
         return read_image_texture(source, sandbox, map);
     }
     const MapReader map(source, node, std::move(entries), "checker texture",
-                        {"type", "even", "odd", "size", "space"});
+                        entity_schema(EntityFamily::texture, "checker"));
     return read_checker_texture(map);
 }
 
@@ -258,9 +251,7 @@ void read_dispersion(const MapReader& map, Material& m) {
 Material read_material(const YamlSource& source, const ReadSandbox& sandbox, const YAML::Node& node,
                        const Field& field, std::string what, std::string name) {
     const MapReader map(source, node, field, std::move(what),
-                        {"color", "ka", "kd", "ks", "shininess", "highlight", "reflect", "transmit",
-                         "ior", "fresnel", "dispersion", "roughness", "transmit_roughness",
-                         "emission", "emission_sides", "bump"});
+                        entity_schema(EntityFamily::material, "material"));
     Material m;
     m.name = std::move(name);
     if (const MapEntry* color = map.find("color")) {
@@ -268,26 +259,25 @@ Material read_material(const YamlSource& source, const ReadSandbox& sandbox, con
                       ? read_texture(source, sandbox, color->value, map.field("color"))
                       : Texture(read_color(source, color->value, map.field("color")));
     }
-    m.ka = map.number("ka", kNonNegative, m.ka);
-    m.kd = map.number("kd", kNonNegative, m.kd);
-    m.ks = map.number("ks", kNonNegative, m.ks);
-    m.shininess = map.number("shininess", kNonNegative, m.shininess);
+    m.ka = map.number_or("ka", m.ka);
+    m.kd = map.number_or("kd", m.kd);
+    m.ks = map.number_or("ks", m.ks);
+    m.shininess = map.number_or("shininess", m.shininess);
     const std::string highlight =
         map.choice("highlight", kHighlights, "highlight", "highlights", "blinn");
     m.highlight = highlight == "phong" ? Highlight::phong : Highlight::blinn;
     MaterialMaps maps;
-    maps.reflect = read_scalar_map(map, "reflect", kUnitInterval, m.reflect);
-    m.transmit = map.number("transmit", kUnitInterval, m.transmit);
-    m.ior = map.number("ior", kPositive, m.ior);
+    maps.reflect = read_scalar_map(map, "reflect", m.reflect);
+    m.transmit = map.number_or("transmit", m.transmit);
+    m.ior = map.number_or("ior", m.ior);
     m.fresnel = map.boolean("fresnel", m.fresnel);
     read_dispersion(map, m);
-    maps.roughness = read_scalar_map(map, "roughness", kUnitInterval, m.roughness);
+    maps.roughness = read_scalar_map(map, "roughness", m.roughness);
     // transmit_roughness defaults to roughness, map and all.
     m.transmit_roughness = m.roughness;
-    maps.transmit_roughness =
-        map.has("transmit_roughness")
-            ? read_scalar_map(map, "transmit_roughness", kUnitInterval, m.transmit_roughness)
-            : maps.roughness;
+    maps.transmit_roughness = map.has("transmit_roughness")
+                                  ? read_scalar_map(map, "transmit_roughness", m.transmit_roughness)
+                                  : maps.roughness;
     maps.bump = read_bump(map);
     if (maps.reflect || maps.roughness || maps.transmit_roughness || maps.bump)
         m.maps = std::make_shared<const MaterialMaps>(std::move(maps));

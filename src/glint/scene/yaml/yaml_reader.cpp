@@ -76,18 +76,6 @@ SceneError type_error(const YamlSource& source, const YAML::Node& node, const Fi
 
 // --- Ranges and text ---
 
-bool Range::contains(double v) const {
-    const bool above = min_open ? v > min : v >= min;
-    const bool below = max_open ? v < max : v <= max;
-    return above && below;
-}
-
-std::string Range::describe() const {
-    if (std::isinf(max)) return (min_open ? "> " : ">= ") + format_number(min);
-    return std::string("in ") + (min_open ? "(" : "[") + format_number(min) + ", " +
-           format_number(max) + (max_open ? ")" : "]");
-}
-
 std::string format_number(double value) {
     char buffer[64];
     const auto result = std::to_chars(buffer, buffer + sizeof buffer, value);

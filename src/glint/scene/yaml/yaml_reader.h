@@ -18,6 +18,7 @@
 #include "glint/math/vector.h"
 #include "glint/scene/quote.h"
 #include "glint/scene/scene_error.h"
+#include "glint/scene/schema/value_range.h"
 #include "glint/scene/yaml/yaml_source.h"
 
 namespace glint {
@@ -33,22 +34,6 @@ struct Field {
     std::string key;
     YAML::Node key_node;  // default: none
 };
-
-// An allowed range of numbers; infinite ends are open.
-struct Range {
-    double min = -std::numeric_limits<double>::infinity();
-    double max = std::numeric_limits<double>::infinity();
-    bool min_open = false;
-    bool max_open = false;
-
-    bool contains(double v) const;
-    std::string describe() const;  // "> 0", ">= 0", "in [0, 1]", "in (0, 180)"
-};
-
-inline constexpr Range kAnyNumber{};
-inline constexpr Range kPositive{0, std::numeric_limits<double>::infinity(), true};
-inline constexpr Range kNonNegative{0};
-inline constexpr Range kUnitInterval{0, 1};
 
 struct IntRange {
     std::int64_t min;

@@ -7,8 +7,8 @@ Shape parse_disk(const MapReader& object, ShapeReader&) {
     Disk disk;
     disk.center = object.point("center");
     disk.normal = Normal3(object.direction("normal", Vector3{0, 1, 0}));
-    disk.radius = object.number("radius", kPositive);
-    disk.inner_radius = object.number("inner_radius", kNonNegative, 0);
+    disk.radius = object.number("radius");
+    disk.inner_radius = object.number("inner_radius");
     return checked(object, disk);
 }
 
@@ -16,7 +16,7 @@ Shape parse_cylinder(const MapReader& object, ShapeReader&) {
     Cylinder cylinder;
     cylinder.base = object.point("base");
     cylinder.top = object.point("top");
-    cylinder.radius = object.number("radius", kPositive);
+    cylinder.radius = object.number("radius");
     cylinder.capped = object.boolean("capped", true);
     return checked(object, cylinder);
 }
@@ -24,9 +24,9 @@ Shape parse_cylinder(const MapReader& object, ShapeReader&) {
 Shape parse_cone(const MapReader& object, ShapeReader&) {
     Cone cone;
     cone.base = object.point("base");
-    cone.base_radius = object.number("base_radius", kNonNegative);
+    cone.base_radius = object.number("base_radius");
     cone.apex = object.point("apex");
-    cone.apex_radius = object.number("apex_radius", kNonNegative, 0);
+    cone.apex_radius = object.number("apex_radius");
     cone.capped = object.boolean("capped", true);
     return checked(object, cone);
 }
@@ -35,8 +35,8 @@ Shape parse_torus(const MapReader& object, ShapeReader&) {
     Torus torus;
     torus.center = object.point("center", Point3{0, 0, 0});
     torus.axis = Normal3(object.direction("axis", Vector3{0, 1, 0}));
-    torus.major_radius = object.number("major_radius", kPositive);
-    torus.minor_radius = object.number("minor_radius", kPositive);
+    torus.major_radius = object.number("major_radius");
+    torus.minor_radius = object.number("minor_radius");
     return checked(object, torus);
 }
 

@@ -69,10 +69,10 @@ ShapeReader::ObjectResult ShapeReader::read_shapes(const YAML::Node& node, const
     const auto types = shape_types();
     const ShapeType& type = *std::find_if(types.begin(), types.end(),
                                           [&](const ShapeType& t) { return t.name == name; });
-    std::vector<std::string_view> keys = type.keys;
-    keys.insert(keys.end(), {"type", "transform", "motion"});
+    std::vector<std::string_view> keys = {"type", "transform", "motion"};
     keys.insert(keys.end(), extra_keys.begin(), extra_keys.end());
-    MapReader map(source_, node, std::move(entries), name, std::move(keys));
+    MapReader map(source_, node, std::move(entries), name,
+                  entity_schema(EntityFamily::shape, type.name), std::move(keys));
 
     std::vector<Shape> shapes;
     std::shared_ptr<const Model> mesh_model;
@@ -151,8 +151,7 @@ std::shared_ptr<const Model> ShapeReader::model(const MapReader& map) {
         scene_file_path(source_, sandbox_, entry.value, name, "mesh file");
     ModelOptions options;
     options.sandbox = sandbox_;
-    if (map.has("crease_angle"))
-        options.crease_angle_degrees = map.number("crease_angle", {0, 180});
+    if (map.has("crease_angle")) options.crease_angle_degrees = map.number("crease_angle");
     const auto key =
         std::pair{file.lexically_normal().string(), options.crease_angle_degrees.value_or(-1)};
     if (const auto it = models_.find(key); it != models_.end()) return it->second;

@@ -1,5 +1,6 @@
-// The object types of the YAML format: one name -> key list -> parser table, so that a new shape
-// is one line there (plus its parser and its table in docs/scene-format.md).
+// The object types of the YAML format: one name -> parser table, whose keys are the shapes'
+// schemas (scene/schema/shape_schemas.cpp), so that a new shape is one line there (plus its parser
+// and its schema).
 #pragma once
 
 #include <span>
@@ -14,9 +15,6 @@ namespace glint {
 
 struct ShapeType {
     std::string_view name;
-    // The shape's own keys; every shape also takes type and transform, and every object
-    // material and casts_shadow.
-    std::vector<std::string_view> keys;
     // Reads the shape from a map whose keys have been checked; `shapes` reads nested shapes.
     Shape (*parse)(const MapReader& object, ShapeReader& shapes);
 };

@@ -1,0 +1,153 @@
+// The keys of the material map, its textures and its pattern maps (docs/scene-format.md,
+// "materials").
+#include "glint/scene/schema/schema_tables.h"
+
+namespace glint {
+
+namespace {
+
+const KeySchema kNoiseScale{
+    "scale", "number", "1", "size of one feature (a vein, a ring, a noise cell) in scene units",
+    "> 0",   kPositive};
+const KeySchema kNoiseTurbulence{
+    "turbulence",   "number",
+    "1 (wood 0.2)", "marble and wood: how far turbulence moves the veins or rings, in features",
+    ">= 0",         kNonNegative};
+const KeySchema kNoiseOctaves{"octaves", "integer", "6", "noise octaves summed", "1..30"};
+const KeySchema kPatternType{"type", "string", "required", "the pattern, as for the textures above",
+                             "`fbm`, `granite`, `marble`, `turbulence`, `wood`"};
+
+// The solid noise textures share their keys (and their table in the docs).
+const std::vector<KeySchema> kNoiseTextureKeys{
+    {"type", "string", "required",
+     "`marble`: veins across x, 0.5 + 0.5 sin(2π(x + turbulence · turb(p))); `wood`: rings around "
+     "the y axis; `granite`: speckles of high-frequency turbulence (values mostly 0.1–0.4, as "
+     "POV-Ray's); `turbulence`: Σ\\|noise(2ⁱp)\\|/2ⁱ; `fbm`: 0.5 + 0.5 Σ noise(2ⁱp)/2ⁱ",
+     ""},
+    kNoiseScale,
+    kNoiseTurbulence,
+    kNoiseOctaves,
+    {"colors", "list of colours",
+     "per pattern (white marble with grey veins, light and dark wood, grey granite, black to "
+     "white)",
+     "the ramp's stops, the first at 0 and the last at 1", "at least 2"},
+};
+
+}  // namespace
+
+std::vector<EntitySchema> material_schemas() {
+    return {
+        {EntityFamily::material,
+         "material",
+         {
+             {"color", "color or texture", "1 (white)",
+              "the surface colour; scales the ambient and diffuse terms", "channels >= 0"},
+             {"ka", "number", "0.1", "ambient coefficient", ">= 0", kNonNegative},
+             {"kd", "number", "0.7", "diffuse coefficient", ">= 0", kNonNegative},
+             {"ks", "number", "0", "specular (highlight) coefficient; the highlight is white",
+              ">= 0", kNonNegative},
+             {"shininess", "number", "20", "highlight exponent n", ">= 0", kNonNegative},
+             {"highlight", "string", "`blinn`",
+              "how the highlight is measured: `blinn` is (H·N)^n, `phong` is (R·V)^n",
+              "`blinn`, `phong`"},
+             {"reflect", "number", "0", "kr, weight of the mirror-reflected ray", "[0, 1]",
+              kUnitInterval},
+             {"transmit", "number", "0", "kt, weight of the refracted ray", "[0, 1]",
+              kUnitInterval},
+             {"ior", "number", "1",
+              "index of refraction inside the object; outside it is that of the object around it "
+              "([nested media](#nested-media)), or 1 (vacuum)",
+              "> 0", kPositive},
+             {"fresnel", "bool", "false",
+              "split `transmit` by Fresnel's equations for a dielectric: kt F reflects (added to "
+              "`reflect`'s ray) and kt (1 − F) refracts, F the reflectance at the angle of "
+              "incidence for the indices on both sides",
+              ""},
+             {"dispersion", "glass name or map", "none",
+              "how `ior` varies with wavelength ([dispersion](#dispersion)): `n-bk7`, `n-sf11`, "
+              "`fused-silica`, `{abbe: V}`, `{cauchy: [A, B]}` or `{sellmeier: [B1, B2, B3, C1, "
+              "C2, C3]}`",
+              "see there"},
+             {"roughness", "number", "0",
+              "with `distributed`: spreads the reflected ray over a glossy lobe, from 0 (a mirror) "
+              "to 1 (the whole hemisphere) ([glossy reflection and "
+              "translucency](#glossy-reflection-and-translucency)); `whitted` reflects as a mirror",
+              "[0, 1]", kUnitInterval},
+             {"transmit_roughness", "number", "`roughness`",
+              "the same for the refracted ray: frosted glass", "[0, 1]", kUnitInterval},
+             {"emission", "color", "0",
+              "light the surface gives off itself, unaffected by lights and shadows; with "
+              "`distributed`, the object also lights the scene ([objects that emit "
+              "light](#objects-that-emit-light))",
+              "channels >= 0"},
+             {"emission_sides", "string", "`both`",
+              "which sides of the surface emit: `both`, or `front`, the side its normal points to "
+              "(a triangle's or polygon's counter-clockwise side, a sphere's outside), as a light "
+              "set into a ceiling emits only into the room",
+              "`both`, `front`"},
+             {"bump", "pattern map", "none",
+              "tilts the shading normal by Blinn's bump mapping, as if the surface were moved "
+              "along its normal by a pattern ([textures](#textures))",
+              "a map of a pattern's keys and `strength`"},
+         }},
+        {EntityFamily::texture,
+         "checker",
+         {
+             {"type", "string", "required", "the texture type", "`checker`"},
+             {"even", "color", "1 (white)", "colour of the squares whose index sum is even",
+              "channels >= 0"},
+             {"odd", "color", "0 (black)", "colour of the other squares", "channels >= 0"},
+             {"size", "number", "1",
+              "edge of one square: uv units for `uv`, scene units for `solid`", "> 0", kPositive},
+             {"space", "string", "`solid`",
+              "`solid` carves the pattern out of 3D space (a solid texture); `uv` paints it on the "
+              "surface's uv coordinates",
+              "`solid`, `uv`"},
+         }},
+        {EntityFamily::texture,
+         "image",
+         {
+             {"type", "string", "required", "the texture type", "`image`"},
+             {"file", "string", "required",
+              "PNG, JPEG, HDR, TGA, BMP, OpenEXR (`.exr`) or PFM (`.pfm`), relative to the scene "
+              "file; 8- and 16-bit images are sRGB-decoded to linear, HDR, EXR and PFM stay linear",
+              "a readable image in the folders the scene may read ([general "
+              "rules](#general-rules))"},
+             {"scale", "color", "1", "multiplies every texel", "channels >= 0"},
+             {"wrap", "string", "`repeat`", "what uv outside [0, 1] reads", "`repeat`, `clamp`"},
+             {"filter", "string", "`trilinear`",
+              "how texels are blended: over the footprint of the pixel that looks them up "
+              "(`trilinear`, `ewa`), or at a point (`bilinear`, `nearest`)",
+              "`trilinear`, `ewa`, `bilinear`, `nearest`"},
+         }},
+        {EntityFamily::texture, "fbm", kNoiseTextureKeys},
+        {EntityFamily::texture, "granite", kNoiseTextureKeys},
+        {EntityFamily::texture, "marble", kNoiseTextureKeys},
+        {EntityFamily::texture, "turbulence", kNoiseTextureKeys},
+        {EntityFamily::texture, "wood", kNoiseTextureKeys},
+        {EntityFamily::pattern,
+         "value",
+         {
+             kPatternType,
+             kNoiseScale,
+             kNoiseTurbulence,
+             kNoiseOctaves,
+             {"low", "number", "0", "the value where the pattern is 0", "within the key's range"},
+             {"high", "number", "1", "the value where the pattern is 1", "within the key's range"},
+         }},
+        {EntityFamily::pattern,
+         "bump",
+         {
+             kPatternType,
+             kNoiseScale,
+             kNoiseTurbulence,
+             kNoiseOctaves,
+             {"strength", "number", "0.05",
+              "how far the surface seems moved at the pattern's 1, scene units; negative presses "
+              "it in",
+              ""},
+         }},
+    };
+}
+
+}  // namespace glint
