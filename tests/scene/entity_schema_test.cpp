@@ -126,6 +126,14 @@ TEST(EntitySchema, RangesAndDefaultsAgreeWithTheirWords) {
             const std::string name = std::string(schema.name) + "." + std::string(k.key);
             SCOPED_TRACE(name);
             EXPECT_FALSE(k.meaning.empty());
+            if (k.type == "integer") {
+                // "1..30"
+                const std::string words = std::to_string(std::int64_t(k.range.min)) + ".." +
+                                          std::to_string(std::int64_t(k.range.max));
+                EXPECT_TRUE(std::string(k.allowed).starts_with(words))
+                    << k.allowed << " against " << words;
+                continue;
+            }
             if (k.type != "number") {
                 EXPECT_TRUE(k.range.is_any()) << "a range on a key that is not a number";
                 continue;

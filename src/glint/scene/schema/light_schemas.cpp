@@ -1,4 +1,5 @@
 // The keys of each light (docs/scene-format.md, "lights").
+#include "glint/scene/scene_limits.h"
 #include "glint/scene/schema/schema_tables.h"
 
 namespace glint {
@@ -13,9 +14,12 @@ const KeySchema kAttenuation{
     "intensity at distance d is `color / (constant + linear·d + quadratic·d²)`",
     "each >= 0, not all zero"};
 const KeySchema kShadowRays{
-    "shadow_rays", "integer", "`image.shadow_rays`",
+    "shadow_rays",
+    "integer",
+    "`image.shadow_rays`",
     "shadow rays each sample sends to the light; stratified together with the other samples'",
-    "1..4096"};
+    "1..4096",
+    Range{1, kMaxShadowRays}};
 const KeySchema kVisible{"visible", "bool", "true",
                          "the light's face is an object that the camera and mirrors see, glowing "
                          "in `color × intensity`; it casts no shadow",

@@ -1,6 +1,7 @@
 // The keys of the material map, its textures and its pattern maps (docs/scene-format.md,
 // "materials").
 #include "glint/scene/schema/schema_tables.h"
+#include "glint/shading/noise.h"
 
 namespace glint {
 
@@ -13,7 +14,8 @@ const KeySchema kNoiseTurbulence{
     "turbulence",   "number",
     "1 (wood 0.2)", "marble and wood: how far turbulence moves the veins or rings, in features",
     ">= 0",         kNonNegative};
-const KeySchema kNoiseOctaves{"octaves", "integer", "6", "noise octaves summed", "1..30"};
+const KeySchema kNoiseOctaves{
+    "octaves", "integer", "6", "noise octaves summed", "1..30", Range{1, kMaxOctaves}};
 const KeySchema kPatternType{"type", "string", "required", "the pattern, as for the textures above",
                              "`fbm`, `granite`, `marble`, `turbulence`, `wood`"};
 

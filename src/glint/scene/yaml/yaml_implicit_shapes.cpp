@@ -61,7 +61,7 @@ Shape parse_implicit(const MapReader& object, ShapeReader&) {
     }
     surface.f = read_function(object);
     surface.tolerance = object.number_or("tolerance", 1e-4f * extent);
-    surface.max_segments = object.integer("max_segments", {1, 1 << 24}, surface.max_segments);
+    surface.max_segments = object.integer("max_segments");
     return checked(object, surface);
 }
 
@@ -77,10 +77,10 @@ Shape parse_julia(const MapReader& object, ShapeReader&) {
     julia.slice_w = object.number("slice_w");
     julia.center = object.point("center", Point3{0, 0, 0});
     julia.scale = object.number("scale");
-    julia.max_iterations = object.integer("iterations", {1, 1000}, julia.max_iterations);
+    julia.max_iterations = object.integer("iterations");
     julia.epsilon = object.number_or("epsilon", 1e-3f * julia.scale);
     julia.bailout = object.number("bailout");
-    julia.max_steps = object.integer("max_steps", {1, 1 << 20}, julia.max_steps);
+    julia.max_steps = object.integer("max_steps");
     return checked(object, julia);
 }
 
@@ -89,10 +89,10 @@ Shape parse_mandelbulb(const MapReader& object, ShapeReader&) {
     bulb.power = object.number("power");
     bulb.center = object.point("center", Point3{0, 0, 0});
     bulb.scale = object.number("scale");
-    bulb.max_iterations = object.integer("iterations", {1, 1000}, bulb.max_iterations);
+    bulb.max_iterations = object.integer("iterations");
     bulb.epsilon = object.number_or("epsilon", 1e-3f * bulb.scale);
     bulb.bailout = object.number("bailout");
-    bulb.max_steps = object.integer("max_steps", {1, 1 << 20}, bulb.max_steps);
+    bulb.max_steps = object.integer("max_steps");
     return checked(object, bulb);
 }
 

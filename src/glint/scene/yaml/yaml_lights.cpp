@@ -99,7 +99,7 @@ LightEntry parse_directional(const MapReader& map) {
 LightEntry area_light(const MapReader& map, AreaLight light) {
     light.color = read_emitted(map);
     light.attenuation = read_attenuation(map);
-    light.shadow_rays = map.integer("shadow_rays", {1, kMaxShadowRays}, 0);
+    light.shadow_rays = map.integer_or("shadow_rays", 0);
     LightEntry entry{light, std::nullopt};
     if (map.boolean("visible", true))
         entry.visible_shape =

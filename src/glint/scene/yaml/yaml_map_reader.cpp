@@ -3,6 +3,7 @@
 #include "glint/scene/yaml/yaml_map_reader.h"
 
 #include <algorithm>
+#include <limits>
 #include <stdexcept>
 #include <unordered_map>
 
@@ -98,6 +99,12 @@ std::vector<std::string_view> with(std::vector<std::string_view> keys,
     return keys;
 }
 
+// An integer key's schema range; its open upper end is the largest int.
+IntRange int_range(const Range& range) {
+    const double max = std::min(range.max, double(std::numeric_limits<int>::max()));
+    return {std::int64_t(range.min), std::int64_t(max)};
+}
+
 }  // namespace
 
 MapReader::MapReader(const YamlSource& source, const YAML::Node& node,
@@ -142,6 +149,21 @@ float MapReader::number(std::string_view key) const {
 float MapReader::number_or(std::string_view key, float fallback) const {
     if (!schema_) throw std::logic_error(what_ + " is read without a schema");
     return number(key, schema_->key(key).range, fallback);
+}
+
+int MapReader::integer(std::string_view key) const {
+    if (!schema_) throw std::logic_error(what_ + " is read without a schema");
+    const KeySchema& k = schema_->key(key);
+    const std::optional<float> fallback = k.number_default();
+    if (!has(key) && !fallback && !k.required())
+        throw std::logic_error(std::string(key) + "'s default is not a number");
+    return integer(key, int_range(k.range),
+                   fallback ? std::optional<int>(int(*fallback)) : std::nullopt);
+}
+
+int MapReader::integer_or(std::string_view key, int fallback) const {
+    if (!schema_) throw std::logic_error(what_ + " is read without a schema");
+    return integer(key, int_range(schema_->key(key).range), fallback);
 }
 
 int MapReader::integer(std::string_view key, IntRange range, std::optional<int> fallback) const {

@@ -76,6 +76,9 @@ public:
     // By the schema's range, with a default it cannot write as a number ("1e-3 × scale").
     float number_or(std::string_view key, float fallback) const;
     int integer(std::string_view key, IntRange range, std::optional<int> fallback = {}) const;
+    // By the schema, as number(key) and number_or are.
+    int integer(std::string_view key) const;
+    int integer_or(std::string_view key, int fallback) const;
     bool boolean(std::string_view key, bool fallback) const;
     Point3 point(std::string_view key, std::optional<Point3> fallback = {}) const;
     Vector3 vector(std::string_view key, std::optional<Vector3> fallback = {}) const;

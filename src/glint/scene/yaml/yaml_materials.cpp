@@ -93,7 +93,7 @@ NoiseSpec read_noise_spec(const MapReader& map, std::string_view type) {
     spec.scale = map.number("scale");
     // Wood's rings wander less than marble's veins by default, as in Ebert et al.
     spec.turbulence = map.number_or("turbulence", spec.pattern == NoisePattern::wood ? 0.2f : 1.0f);
-    spec.octaves = map.integer("octaves", {1, kMaxOctaves}, spec.octaves);
+    spec.octaves = map.integer("octaves");
     return spec;
 }
 
