@@ -1,0 +1,173 @@
+// The language core of POV-Ray's scene description language, as POV-Ray runs it: tokens come
+// through directives (#declare, #if, #while, #for, #switch, #macro, #include, ...) and macro
+// calls, which act on the stream as it is read, and expressions are evaluated as they are
+// parsed. The scene's items (objects, textures, camera, lights) are read on top of it by their
+// own parsers, which ask for tokens and values here.
+#pragma once
+
+#include <cstdint>
+#include <deque>
+#include <filesystem>
+#include <memory>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <unordered_map>
+#include <vector>
+
+#include "glint/scene/pov/pov_files.h"
+#include "glint/scene/pov/pov_lexer.h"
+#include "glint/scene/pov/pov_symbols.h"
+#include "glint/scene/pov/pov_value.h"
+#include "glint/scene/read_sandbox.h"
+
+namespace glint {
+
+// Where #include looks and what bounds a scene's work (an endless #while is an error, not a hang).
+struct PovLanguageOptions {
+    // After the including file's folder and the scene's: `+L` folders, then POV-Ray's standard
+    // includes when installed (default_pov_include_folders()).
+    std::vector<std::filesystem::path> include_folders;
+    const ReadSandbox* sandbox = nullptr;           // files outside it are refused; null: no checks
+    double clock = 0;                               // the `clock` identifier
+    int image_width = 320, image_height = 240;      // `image_width`, `image_height`
+    std::int64_t max_loop_iterations = 10'000'000;  // every #while and #for together
+    int max_macro_depth = 200;
+    int max_include_depth = 64;
+    std::size_t max_array_elements = std::size_t(1) << 24;
+    std::size_t max_string_length = std::size_t(1) << 20;
+};
+
+// The standard include folders of an installed POV-Ray (Debian's povray-includes), if any.
+std::vector<std::filesystem::path> default_pov_include_folders();
+
+class PovParser {
+public:
+    // Reads the scene file's text (already in `files` as file 0).
+    PovParser(PovFiles& files, PovLanguageOptions options);
+
+    // --- Tokens ---
+    // The next token after directives and macro calls, which act as it is taken.
+    PovToken next();
+    // The token after the current one, as a lookahead past an expression sees it: #if, #else,
+    // #end and the other directives that steer have run, but a directive that acts (#declare,
+    // #debug, #include, ...) or a macro's name is not acted on yet, so a value is complete
+    // before the directive after it runs.
+    const PovToken& peek();
+    // The next token after directives and macro calls, acting on them, not taking it: what a
+    // parser deciding on the next item or keyword looks at.
+    const PovToken& peek_item();
+    // The next token, which must be the symbol; an error naming `what` otherwise.
+    void expect(std::string_view symbol, std::string_view what);
+    bool accept(std::string_view symbol);  // consumes the symbol if it is next
+    bool accept_word(std::string_view word);
+
+    // --- Values ---
+    PovValue expression();
+    double float_expression(std::string_view what);
+    // A vector of at least `size` components (a float is promoted to all of them).
+    PovVector vector_expression(std::string_view what, int size = 3);
+    PovVector color_expression(std::string_view what);  // a 5-vector: r, g, b, filter, transmit
+    std::string string_expression(std::string_view what);
+
+    PovSymbols& symbols() { return symbols_; }
+    // What #debug and #warning printed, in order.
+    const std::vector<std::string>& messages() const { return messages_; }
+
+    SceneError error_at(const PovToken& token, std::string message,
+                        std::vector<std::string> notes = {}) const {
+        return files_.error_at(token.at, std::move(message), std::move(notes));
+    }
+
+private:
+    // A run of tokens being read: a file (the scene or an include) or a macro's body.
+    struct Frame {
+        const std::vector<PovToken>* tokens;
+        std::size_t pos, end;
+        enum class Kind { file, include, macro } kind;
+        std::size_t conditions;  // the control stack's depth when it began
+    };
+    // An open #if, #while, #for or #switch.
+    struct Control {
+        enum class Kind { if_branch, while_loop, for_loop, switch_case } kind;
+        PovToken directive;   // for errors
+        std::size_t frame;    // frames_ index the loop runs in
+        std::size_t loop_to;  // #while: its directive's index; #for: the body's first token
+        std::string counter;  // #for
+        double last = 0, step = 0;
+    };
+    struct Macro {
+        std::string name;
+        std::vector<std::string> parameters;
+        const std::vector<PovToken>* tokens;
+        std::size_t body, end;  // [body, end): the tokens between the ')' and the #end
+        PovToken defined_at;
+    };
+
+    // Raw tokens, no directives.
+    const PovToken& raw_peek() const;
+    PovToken raw_next();
+    void pop_finished_frames();
+    PovToken fetch();                        // the next raw token, across frames
+    bool acts(const PovToken& token) const;  // an acting directive or a macro's name
+    void next_acting();                      // takes the peeked directive or macro call
+
+    void directive(const PovToken& token);
+    void declare(const PovToken& directive, bool local);
+    void if_directive(const PovToken& directive, bool value);
+    void skip_branch(const PovToken& directive, bool to_end);
+    void while_directive(const PovToken& directive);
+    void for_directive(const PovToken& directive);
+    void switch_directive(const PovToken& directive);
+    void end_directive(const PovToken& directive);
+    void macro_definition(const PovToken& directive);
+    void call_macro(const PovToken& name, const Macro& macro);
+    void include(const PovToken& directive);
+    void count_loop(const Control& control);
+    // Skips raw tokens to the #end that closes an opened block (or, with stop_at_else, to an
+    // #else, #elseif, #case, #range or #break at its level, which it returns).
+    PovToken skip_block(const PovToken& opened, bool stop_at_else);
+    double parenthesized_float(std::string_view what);
+
+    // Expressions, by precedence.
+    PovValue conditional();
+    PovValue logical_or();
+    PovValue logical_and();
+    PovValue comparison();
+    PovValue additive();
+    PovValue multiplicative();
+    PovValue unary();
+    PovValue postfix();
+    PovValue primary();
+    PovValue vector_literal(const PovToken& open);
+    PovValue color_keywords(const PovToken& first);
+    PovValue identifier_value(const PovToken& name);
+    std::optional<PovValue> builtin(const PovToken& name);
+    PovValue array_declaration(const PovToken& keyword);
+    // The element that [i][j]... names; reading one never given a value is an error.
+    PovValue& element(const PovToken& name, PovArray& array, bool assigning);
+    std::vector<PovValue> arguments(const PovToken& name, std::size_t min, std::size_t max);
+    double float_of(const PovValue& value, const PovToken& at, std::string_view what) const;
+    PovVector vector_of(const PovValue& value, const PovToken& at, std::string_view what,
+                        int size) const;
+    std::string string_of(const PovValue& value, const PovToken& at, std::string_view what) const;
+    std::string checked_string(std::string text, const PovToken& at) const;
+
+    PovFiles& files_;
+    PovLanguageOptions options_;
+    std::deque<std::vector<PovToken>> token_lists_;  // every file's tokens, kept for macros
+    std::vector<Frame> frames_;
+    std::vector<Control> controls_;
+    std::unordered_map<std::string, Macro> macros_;
+    PovSymbols symbols_;
+    std::vector<std::string> messages_;
+    std::optional<PovToken> peeked_;
+    std::int64_t loop_iterations_ = 0;
+    int macro_depth_ = 0;
+    int include_depth_ = 0;
+    // One stream of rand() numbers per seed() call, as POV-Ray keeps them.
+    std::vector<std::uint32_t> random_streams_;
+    bool in_vector_ = false;  // '>' closes the vector rather than comparing
+};
+
+}  // namespace glint
