@@ -13,6 +13,7 @@ packages=(
     graphviz  # the tests render `glint explain --format dot` with it
     python3-dev pybind11-dev python3-numpy python3-pytest  # the Python module and its tests
     jupyter-nbconvert python3-ipykernel python3-matplotlib  # the notebooks, run as tests
+    povray-includes  # POV-Ray's standard include files, which .pov scenes #include
 )
 [ "${1:-}" = "--bench" ] && packages+=(povray blender)
 
