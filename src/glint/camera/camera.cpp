@@ -64,6 +64,7 @@ Camera::Camera(const CameraSpec& spec, int width, int height)
         eye_ = {0, 0, 0};
         u_ = {1, 0, 0}, v_ = {0, 1, 0}, n_ = {0, 0, 1};
     }
+    if (spec.left_handed) u_ = -u_;
     half_height_ =
         projection_ == Projection::perspective ? std::tan(radians(spec.fov) / 2) : spec.height / 2;
     half_width_ = half_height_ * width_ / height_;

@@ -42,6 +42,9 @@ struct CameraSpec {
     // A moving camera: from, at and up at increasing times (from moves in a line, the view turns
     // by quaternion interpolation). Empty: the camera stands still at from, at, up.
     std::vector<CameraKeyframe> motion;
+    // Right is up x forward rather than forward x up: the image a left-handed system sees, as
+    // POV-Ray's cameras do, so that its scenes keep their coordinates.
+    bool left_handed = false;
 };
 
 }  // namespace glint

@@ -6,6 +6,7 @@
 
 #include "glint/scene/mesh/model_scene.h"
 #include "glint/scene/nff/nff_to_scene.h"
+#include "glint/scene/pov/pov_scene.h"
 #include "glint/scene/yaml/yaml_scene_loader.h"
 
 namespace glint {
@@ -15,6 +16,7 @@ namespace {
 constexpr std::string_view kYaml[] = {".yaml", ".yml"};
 constexpr std::string_view kNff[] = {".nff", ".nff.gz"};
 constexpr std::string_view kModels[] = {".obj", ".ply", ".gltf", ".glb", ".stl"};
+constexpr std::string_view kPov[] = {".pov"};
 
 Scene load_nff(const std::filesystem::path& file, const ReadSandbox& sandbox) {
     // An NFF file names no other files: only its own size is checked.
@@ -33,6 +35,7 @@ const SceneFormat kFormats[] = {
     {"glint", kYaml, "glint's format", load_yaml},
     {"NFF", kNff, "Haines' NFF, gzipped or not", load_nff},
     {"model", kModels, "models, through Assimp", load_model},
+    {"POV-Ray", kPov, "POV-Ray's scene language: its core, docs/povray.md", load_pov_scene},
 };
 
 std::string lower(std::string text) {

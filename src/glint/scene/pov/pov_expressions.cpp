@@ -309,6 +309,8 @@ PovValue PovParser::identifier_value(const PovToken& name) {
         return color_keywords(name);
     if (w == "array") return array_declaration(name);
     if (auto value = builtin(name)) return std::move(*value);
+    if (item_reader_)
+        if (auto item = item_reader_(name)) return std::move(*item);
     PovValue* declared = symbols_.find(w);
     if (!declared) throw error_at(name, quote(w) + " is not declared");
     if (const auto* array = std::get_if<std::shared_ptr<PovArray>>(declared);

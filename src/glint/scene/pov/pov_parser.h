@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <deque>
 #include <filesystem>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
@@ -69,6 +70,11 @@ public:
     PovVector vector_expression(std::string_view what, int size = 3);
     PovVector color_expression(std::string_view what);  // a 5-vector: r, g, b, filter, transmit
     std::string string_expression(std::string_view what);
+
+    // What reads an item (an object, a texture, ...) where an expression finds its keyword: the
+    // value of `#declare Ball = sphere { ... }`. Returns nothing for a word that starts none.
+    using ItemReader = std::function<std::optional<PovValue>(const PovToken& keyword)>;
+    void set_item_reader(ItemReader reader) { item_reader_ = std::move(reader); }
 
     PovSymbols& symbols() { return symbols_; }
     // What #debug and #warning printed, in order.
@@ -168,6 +174,7 @@ private:
     // One stream of rand() numbers per seed() call, as POV-Ray keeps them.
     std::vector<std::uint32_t> random_streams_;
     bool in_vector_ = false;  // '>' closes the vector rather than comparing
+    ItemReader item_reader_;
 };
 
 }  // namespace glint

@@ -26,8 +26,10 @@ const char* kind_of(const PovValue& value) {
             return "a vector";
         case 2:
             return "a string";
-        default:
+        case 3:
             return "an array";
+        default:
+            return "an object or texture";
     }
 }
 

@@ -23,8 +23,11 @@ struct PovVector {
 };
 
 struct PovArray;
+// A declared object, texture, pigment, finish, interior or transform (pov_items.h).
+struct PovItemRef;
 
-using PovValue = std::variant<double, PovVector, std::string, std::shared_ptr<PovArray>>;
+using PovValue = std::variant<double, PovVector, std::string, std::shared_ptr<PovArray>,
+                              std::shared_ptr<const PovItemRef>>;
 
 // A fixed-size array of one or more dimensions; an element is empty until assigned.
 struct PovArray {
@@ -35,7 +38,7 @@ struct PovArray {
 // A number as messages show it: the shortest text that reads back the same.
 std::string format_pov_number(double value);
 
-// "a float", "a vector", "a string", "an array": for messages.
+// "a float", "a vector", "a string", "an array", "an object": for messages.
 const char* kind_of(const PovValue& value);
 
 // Componentwise arithmetic with promotion: a float meets a vector as a vector of its size, and a

@@ -1,0 +1,493 @@
+// POV-Ray's objects and their modifiers, textures, pigments, finishes and interiors.
+#include "glint/scene/pov/pov_item_reader.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "glint/geometry/polygon.h"
+#include "glint/scene/quote.h"
+
+namespace glint {
+
+namespace {
+
+constexpr const char* kSeeCompatibility = "docs/povray.md lists what glint reads";
+
+bool is_solid_shape(const std::string& keyword) {
+    return keyword == "sphere" || keyword == "box" || keyword == "plane" || keyword == "cylinder" ||
+           keyword == "cone" || keyword == "torus" || keyword == "disc" || keyword == "triangle" ||
+           keyword == "smooth_triangle" || keyword == "polygon" || keyword == "mesh";
+}
+
+bool is_csg(const std::string& keyword) {
+    return keyword == "union" || keyword == "merge" || keyword == "intersection" ||
+           keyword == "difference";
+}
+
+template <typename S>
+Shape checked_shape(const PovParser& parser, const PovToken& at, S shape) {
+    if (const std::string problem = describe_problem(shape); !problem.empty())
+        throw parser.error_at(at, problem);
+    return shape;
+}
+
+}  // namespace
+
+Point3 to_point(const PovVector& v) { return {float(v[0]), float(v[1]), float(v[2])}; }
+Vector3 to_vector(const PovVector& v) { return {float(v[0]), float(v[1]), float(v[2])}; }
+
+PovItemReader::PovItemReader(PovParser& parser, std::vector<std::string>& warnings)
+    : parser_(parser), warnings_(warnings) {}
+
+bool PovItemReader::starts_object(const std::string& keyword) {
+    return is_solid_shape(keyword) || is_csg(keyword) || keyword == "object";
+}
+
+SceneError PovItemReader::unsupported(const PovToken& token, std::string_view where) {
+    return parser_.error_at(token,
+                            describe(token) + " is not supported " + std::string(where) + " yet",
+                            {kSeeCompatibility});
+}
+
+template <typename Item>
+std::optional<Item> PovItemReader::declared(const PovToken& name) {
+    if (name.kind != PovTokenKind::identifier) return std::nullopt;
+    PovValue* value = parser_.symbols().find(name.text);
+    if (!value) return std::nullopt;
+    const auto* ref = std::get_if<std::shared_ptr<const PovItemRef>>(value);
+    if (!ref) return std::nullopt;
+    if (const Item* item = std::get_if<Item>(&(*ref)->item)) return *item;
+    return std::nullopt;
+}
+
+std::optional<PovItem> PovItemReader::read(const PovToken& keyword) {
+    const std::string& w = keyword.text;
+    if (starts_object(w)) return object(keyword);
+    if (w == "texture") return texture({});
+    if (w == "pigment") return pigment({});
+    if (w == "finish") return finish({});
+    if (w == "interior") return interior({});
+    if (w == "transform") {
+        parser_.expect("{", "after transform");
+        Transform t;
+        for (PovToken step = parser_.next(); !step.is_symbol("}"); step = parser_.next()) {
+            if (step.is_word("inverse")) {
+                t = t.inverse();
+                continue;
+            }
+            const auto s = transform_step(step);
+            if (!s)
+                throw parser_.error_at(
+                    step, "expected a transform in transform { }, got " + describe(step));
+            t = *s * t;
+        }
+        return t;
+    }
+    return std::nullopt;
+}
+
+std::optional<Transform> PovItemReader::transform_step(const PovToken& keyword) {
+    const std::string& w = keyword.text;
+    if (w == "translate")
+        return Transform::translate(to_vector(parser_.vector_expression("after translate")));
+    if (w == "rotate") {
+        // About x, then y, then z, in degrees (as POV-Ray's rotate).
+        const PovVector a = parser_.vector_expression("after rotate");
+        return Transform::rotate({0, 0, 1}, float(a[2])) *
+               Transform::rotate({0, 1, 0}, float(a[1])) *
+               Transform::rotate({1, 0, 0}, float(a[0]));
+    }
+    if (w == "scale") {
+        const PovVector s = parser_.vector_expression("after scale");
+        if (s[0] == 0 || s[1] == 0 || s[2] == 0)
+            throw parser_.error_at(
+                keyword, "scale by zero flattens the object: every factor must be non-zero");
+        return Transform::scale(float(s[0]), float(s[1]), float(s[2]));
+    }
+    if (w == "matrix") {
+        // <a, b, c,  d, e, f,  g, h, i,  j, k, l>: rows of a 4x3 matrix that points multiply
+        // from the left, the last row the translation.
+        parser_.expect("<", "after matrix");
+        double v[12];
+        for (int i = 0; i < 12; ++i) {
+            if (i > 0) parser_.expect(",", "between matrix's 12 numbers");
+            v[i] = parser_.float_expression("in matrix");
+        }
+        parser_.expect(">", "after matrix's 12 numbers");
+        Matrix4 m;
+        for (int c = 0; c < 3; ++c) {
+            for (int r = 0; r < 3; ++r) m.m[std::size_t(r)][std::size_t(c)] = float(v[3 * c + r]);
+            m.m[std::size_t(c)][3] = float(v[9 + c]);
+        }
+        const auto t = Transform::from_matrix(m);
+        if (!t) throw parser_.error_at(keyword, "matrix has no inverse: it flattens the object");
+        return *t;
+    }
+    if (w == "transform") {
+        if (parser_.peek_item().is_symbol("{")) return std::get<Transform>(*read(keyword));
+        const PovToken name = parser_.next();
+        if (auto t = declared<Transform>(name)) return t;
+        throw parser_.error_at(
+            name, "expected a declared transform after transform, got " + describe(name));
+    }
+    return std::nullopt;
+}
+
+PovObject PovItemReader::object(const PovToken& keyword) {
+    parser_.expect("{", "after " + keyword.text);
+    PovObject object;
+    if (keyword.text == "object") {
+        const PovToken name = parser_.next();
+        auto base = declared<PovObject>(name);
+        if (!base)
+            throw parser_.error_at(
+                name, "expected a declared object in object { }, got " + describe(name));
+        object = *base;
+    } else if (is_csg(keyword.text)) {
+        csg(keyword, object);
+    } else if (keyword.text == "mesh") {
+        object.shape = mesh(keyword);
+    } else {
+        object.shape = shape(keyword);
+    }
+    modifiers(object);
+    return object;
+}
+
+Shape PovItemReader::shape(const PovToken& keyword) {
+    const std::string& w = keyword.text;
+    if (w == "sphere") {
+        const Point3 center = to_point(point("as the sphere's centre"));
+        parser_.expect(",", "after the sphere's centre");
+        const float radius = number("as the sphere's radius");
+        if (!(radius > 0)) throw parser_.error_at(keyword, "sphere radius must be > 0");
+        return Sphere{center, radius};
+    }
+    if (w == "box") {
+        const Point3 a = to_point(point("as the box's corner"));
+        parser_.expect(",", "between the box's corners");
+        const Point3 b = to_point(point("as the box's corner"));
+        return Box{{std::min(a.x, b.x), std::min(a.y, b.y), std::min(a.z, b.z)},
+                   {std::max(a.x, b.x), std::max(a.y, b.y), std::max(a.z, b.z)}};
+    }
+    if (w == "plane") {
+        const Vector3 n = to_vector(point("as the plane's normal"));
+        parser_.expect(",", "after the plane's normal");
+        const float d = number("as the plane's distance");
+        if (!(length(n) > 0)) throw parser_.error_at(keyword, "plane normal must not be zero");
+        const Vector3 unit = normalize(n);
+        return Plane{to_point(unit * d), Normal3(unit)};
+    }
+    if (w == "cylinder" || w == "cone") {
+        Point3 a = to_point(point("as the end's centre"));
+        parser_.expect(",", "after the end's centre");
+        float ra = 0;
+        if (w == "cone") {
+            ra = number("as the end's radius");
+            parser_.expect(",", "after the end's radius");
+        }
+        Point3 b = to_point(point("as the other end's centre"));
+        parser_.expect(",", "after the other end's centre");
+        float rb = number("as the radius");
+        bool open = false;
+        // `open` belongs to the shape: it comes before the modifiers.
+        if (parser_.peek_item().is_word("open")) {
+            parser_.next();
+            open = true;
+        }
+        if (w == "cylinder") return checked_shape(parser_, keyword, Cylinder{a, b, rb, !open});
+        if (ra < rb) {
+            std::swap(a, b);
+            std::swap(ra, rb);
+        }
+        return checked_shape(parser_, keyword, Cone{a, ra, b, rb, !open});
+    }
+    if (w == "torus") {
+        const float major = number("as the torus's major radius");
+        parser_.expect(",", "after the torus's major radius");
+        const float minor = number("as the torus's minor radius");
+        return checked_shape(parser_, keyword, Torus{{0, 0, 0}, Normal3{0, 1, 0}, major, minor});
+    }
+    if (w == "disc") {
+        const Point3 center = to_point(point("as the disc's centre"));
+        parser_.expect(",", "after the disc's centre");
+        const Vector3 n = to_vector(point("as the disc's normal"));
+        parser_.expect(",", "after the disc's normal");
+        const float radius = number("as the disc's radius");
+        float hole = 0;
+        if (parser_.accept(",")) hole = number("as the disc's hole radius");
+        if (!(length(n) > 0)) throw parser_.error_at(keyword, "disc normal must not be zero");
+        return checked_shape(parser_, keyword, Disk{center, Normal3(normalize(n)), radius, hole});
+    }
+    if (w == "triangle" || w == "smooth_triangle") {
+        std::array<Point3, 3> v;
+        for (int i = 0; i < 3; ++i) {
+            if (i > 0) parser_.expect(",", "between the triangle's corners");
+            v[std::size_t(i)] = to_point(point("as a corner"));
+            if (w == "smooth_triangle") {
+                parser_.expect(",", "after the corner");
+                point("as the corner's normal");  // the shading normal: a flat face for now
+            }
+        }
+        if (w == "smooth_triangle")
+            warnings_.push_back("smooth_triangle's normals are not used: it is shaded flat");
+        return Triangle{v};
+    }
+    if (w == "polygon") {
+        const float count = number("as the polygon's number of points");
+        std::vector<Point3> points;
+        for (int i = 0; i < int(count); ++i) {
+            parser_.expect(",", "between the polygon's points");
+            const PovVector p = parser_.vector_expression("as a polygon point", 2);
+            points.push_back({float(p[0]), float(p[1]), float(p.size > 2 ? p[2] : 0)});
+        }
+        // POV-Ray closes a polygon by repeating its first point; the first outline is taken.
+        for (std::size_t i = 1; i < points.size(); ++i)
+            if (points[i] == points[0]) {
+                if (i + 1 < points.size())
+                    warnings_.push_back("polygon: only its first outline is used");
+                points.resize(i);
+                break;
+            }
+        auto made = make_polygon(points);
+        if (auto* error = std::get_if<std::string>(&made)) throw parser_.error_at(keyword, *error);
+        return std::get<Polygon>(std::move(made));
+    }
+    throw unsupported(keyword, "as an object");
+}
+
+Shape PovItemReader::mesh(const PovToken& keyword) {
+    MeshData arrays;
+    while (parser_.peek_item().is_word("triangle") ||
+           parser_.peek_item().is_word("smooth_triangle")) {
+        const PovToken kind = parser_.next();
+        parser_.expect("{", "after " + kind.text);
+        for (int i = 0; i < 3; ++i) {
+            if (i > 0) parser_.expect(",", "between the triangle's corners");
+            arrays.positions.push_back(to_point(point("as a corner")));
+            if (kind.text == "smooth_triangle") {
+                parser_.expect(",", "after the corner");
+                point("as the corner's normal");
+            }
+        }
+        const auto n = std::uint32_t(arrays.positions.size());
+        arrays.triangles.push_back({n - 3, n - 2, n - 1});
+        const PovToken close = parser_.next();
+        if (!close.is_symbol("}")) throw unsupported(close, "in a mesh's triangle");
+    }
+    MeshBuild built = build_mesh(std::move(arrays));
+    if (!built.mesh) throw parser_.error_at(keyword, "mesh: " + built.error);
+    return TriangleMesh{built.mesh};
+}
+
+void PovItemReader::csg(const PovToken& keyword, PovObject& object) {
+    const std::string& w = keyword.text;
+    object.csg = w == "union"          ? PovObject::Csg::group
+                 : w == "merge"        ? PovObject::Csg::merge
+                 : w == "intersection" ? PovObject::Csg::intersection
+                                       : PovObject::Csg::difference;
+    while (starts_object(parser_.peek_item().text) &&
+           parser_.peek_item().kind == PovTokenKind::identifier) {
+        const PovToken child = parser_.next();
+        object.children.push_back(std::make_shared<const PovObject>(this->object(child)));
+    }
+    if (object.children.empty()) throw parser_.error_at(keyword, w + " needs objects inside it");
+}
+
+void PovItemReader::modifiers(PovObject& object) {
+    for (;;) {
+        const PovToken token = parser_.next();
+        if (token.is_symbol("}")) return;
+        if (token.kind != PovTokenKind::identifier) {
+            throw parser_.error_at(token, "expected a modifier or '}', got " + describe(token));
+        }
+        const std::string& w = token.text;
+        if (const auto step = transform_step(token)) {
+            object.transform = *step * object.transform;
+            // A texture given before moves with the object.
+            if (object.texture) {
+                PovTexture moved = *object.texture;
+                moved.pigment.transform = *step * moved.pigment.transform;
+                object.texture = std::make_shared<const PovTexture>(moved);
+            }
+        } else if (w == "texture") {
+            object.texture = std::make_shared<const PovTexture>(
+                texture(object.texture ? *object.texture : PovTexture{}));
+        } else if (w == "pigment") {
+            PovTexture t = object.texture ? *object.texture : PovTexture{};
+            t.pigment = pigment(t.pigment);
+            object.texture = std::make_shared<const PovTexture>(t);
+        } else if (w == "finish") {
+            PovTexture t = object.texture ? *object.texture : PovTexture{};
+            t.finish = finish(t.finish);
+            object.texture = std::make_shared<const PovTexture>(t);
+        } else if (w == "interior") {
+            object.interior = std::make_shared<const PovInterior>(
+                interior(object.interior ? *object.interior : PovInterior{}));
+        } else if (w == "no_shadow") {
+            object.no_shadow = true;
+        } else if (w == "hollow") {
+            object.hollow = true;
+            parser_.accept_word("on");
+        } else if (w == "bounded_by") {
+            // Only a hint for POV-Ray's own bounding: the object is read and dropped.
+            parser_.expect("{", "after bounded_by");
+            for (PovToken t = parser_.next(); !t.is_symbol("}"); t = parser_.next()) {
+                if (t.kind == PovTokenKind::end)
+                    throw parser_.error_at(token, "bounded_by is not closed");
+                if (t.is_symbol("{")) {
+                    int depth = 1;
+                    while (depth > 0) {
+                        const PovToken inner = parser_.next();
+                        if (inner.kind == PovTokenKind::end)
+                            throw parser_.error_at(token, "bounded_by is not closed");
+                        depth += inner.is_symbol("{") ? 1 : inner.is_symbol("}") ? -1 : 0;
+                    }
+                }
+            }
+        } else {
+            throw unsupported(token, "as an object modifier");
+        }
+    }
+}
+
+PovTexture PovItemReader::texture(const PovTexture& base) {
+    parser_.expect("{", "after texture");
+    PovTexture t = base;
+    if (auto d = declared<PovTexture>(parser_.peek_item())) {
+        parser_.next();
+        t = *d;
+    }
+    for (;;) {
+        const PovToken token = parser_.next();
+        if (token.is_symbol("}")) return t;
+        if (token.is_word("pigment"))
+            t.pigment = pigment(t.pigment);
+        else if (token.is_word("finish"))
+            t.finish = finish(t.finish);
+        else if (const auto step = transform_step(token))
+            t.pigment.transform = *step * t.pigment.transform;
+        else
+            throw unsupported(token, "in a texture");
+    }
+}
+
+PovPigment PovItemReader::pigment(const PovPigment& base) {
+    parser_.expect("{", "after pigment");
+    PovPigment p = base;
+    const PovToken& first = parser_.peek_item();
+    if (auto d = declared<PovPigment>(first)) {
+        parser_.next();
+        p = *d;
+    } else if (first.is_word("checker")) {
+        parser_.next();
+        p.kind = PovPigment::Kind::checker;
+        // POV-Ray's checker defaults: blue and green.
+        p.color = PovVector::of(0, 5);
+        p.color[2] = 1;
+        p.other = PovVector::of(0, 5);
+        p.other[1] = 1;
+        if (!parser_.peek_item().is_symbol("}") && !parser_.peek_item().is_word("scale") &&
+            !parser_.peek_item().is_word("translate") && !parser_.peek_item().is_word("rotate")) {
+            p.color = parser_.color_expression("as the checker's first colour");
+            parser_.accept(",");
+            p.other = parser_.color_expression("as the checker's second colour");
+        }
+    } else if (first.kind == PovTokenKind::identifier &&
+               !(first.is_word("color") || first.is_word("colour") || first.is_word("rgb") ||
+                 first.is_word("rgbf") || first.is_word("rgbt") || first.is_word("rgbft") ||
+                 first.is_word("red") || first.is_word("green") || first.is_word("blue") ||
+                 first.is_word("srgb") || parser_.symbols().find(first.text))) {
+        throw unsupported(parser_.next(), "as a pigment");
+    } else if (!first.is_symbol("}")) {
+        p.kind = PovPigment::Kind::color;
+        p.color = parser_.color_expression("as the pigment's colour");
+    }
+    for (;;) {
+        const PovToken token = parser_.next();
+        if (token.is_symbol("}")) return p;
+        if (const auto step = transform_step(token))
+            p.transform = *step * p.transform;
+        else
+            throw unsupported(token, "in a pigment");
+    }
+}
+
+PovFinish PovItemReader::finish(const PovFinish& base) {
+    parser_.expect("{", "after finish");
+    PovFinish f = base;
+    if (auto d = declared<PovFinish>(parser_.peek_item())) {
+        parser_.next();
+        f = *d;
+    }
+    // A colour where POV-Ray allows one counts as its brightest channel.
+    const auto amount = [&](std::string_view what) {
+        const PovVector v = parser_.color_expression(what);
+        return std::max({v[0], v[1], v[2]});
+    };
+    for (;;) {
+        const PovToken token = parser_.next();
+        const std::string& w = token.text;
+        if (token.is_symbol("}")) return f;
+        if (w == "ambient")
+            f.ambient = amount("after ambient");
+        else if (w == "diffuse")
+            f.diffuse = parser_.float_expression("after diffuse");
+        else if (w == "brilliance")
+            f.brilliance = parser_.float_expression("after brilliance");
+        else if (w == "phong")
+            f.phong = parser_.float_expression("after phong");
+        else if (w == "phong_size")
+            f.phong_size = parser_.float_expression("after phong_size");
+        else if (w == "specular")
+            f.specular = parser_.float_expression("after specular");
+        else if (w == "roughness")
+            f.roughness = parser_.float_expression("after roughness");
+        else if (w == "metallic")
+            f.metallic = true, parser_.accept_word("on");
+        else if (w == "crand")
+            parser_.float_expression("after crand");
+        else if (w == "reflection") {
+            if (parser_.accept("{")) {
+                // reflection { [min,] max [fresnel] [metallic] [falloff F] [exponent E] }
+                f.reflection = amount("in reflection");
+                if (parser_.accept(",")) f.reflection = amount("in reflection");
+                for (PovToken r = parser_.next(); !r.is_symbol("}"); r = parser_.next()) {
+                    if (r.is_word("fresnel"))
+                        f.fresnel = true, parser_.accept_word("on");
+                    else if (r.is_word("metallic"))
+                        f.metallic = true, parser_.accept_word("on");
+                    else if (r.is_word("falloff") || r.is_word("exponent"))
+                        parser_.float_expression("in reflection");
+                    else
+                        throw unsupported(r, "in reflection { }");
+                }
+            } else {
+                f.reflection = amount("after reflection");
+            }
+        } else {
+            throw unsupported(token, "in a finish");
+        }
+    }
+}
+
+PovInterior PovItemReader::interior(const PovInterior& base) {
+    parser_.expect("{", "after interior");
+    PovInterior in = base;
+    if (auto d = declared<PovInterior>(parser_.peek_item())) {
+        parser_.next();
+        in = *d;
+    }
+    for (;;) {
+        const PovToken token = parser_.next();
+        if (token.is_symbol("}")) return in;
+        if (token.is_word("ior"))
+            in.ior = parser_.float_expression("after ior");
+        else if (token.is_word("dispersion"))
+            in.dispersion = parser_.float_expression("after dispersion");
+        else
+            throw unsupported(token, "in an interior");
+    }
+}
+
+}  // namespace glint

@@ -1,0 +1,52 @@
+// Reads POV-Ray's objects, textures (pigment, finish), interiors and transforms from the token
+// stream, as the items of a scene or the values of #declare.
+#pragma once
+
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "glint/scene/pov/pov_items.h"
+#include "glint/scene/pov/pov_parser.h"
+
+namespace glint {
+
+class PovItemReader {
+public:
+    // Warnings go to `warnings` ("brilliance 2 is read as 1").
+    PovItemReader(PovParser& parser, std::vector<std::string>& warnings);
+
+    // The item that `keyword` starts, or nothing when it starts none.
+    std::optional<PovItem> read(const PovToken& keyword);
+    static bool starts_object(const std::string& keyword);
+
+    PovObject object(const PovToken& keyword);
+    PovTexture texture(const PovTexture& base);
+    PovPigment pigment(const PovPigment& base);
+    PovFinish finish(const PovFinish& base);
+    PovInterior interior(const PovInterior& base);
+    // translate, rotate, scale, matrix or transform, whose keyword has been read; nothing for
+    // another word.
+    std::optional<Transform> transform_step(const PovToken& keyword);
+
+private:
+    Shape shape(const PovToken& keyword);
+    Shape mesh(const PovToken& keyword);
+    void csg(const PovToken& keyword, PovObject& object);
+    // The modifiers after an object's own values, to the closing brace.
+    void modifiers(PovObject& object);
+    template <typename Item>
+    std::optional<Item> declared(const PovToken& name);
+    PovVector point(std::string_view what) { return parser_.vector_expression(what, 3); }
+    float number(std::string_view what) { return float(parser_.float_expression(what)); }
+    SceneError unsupported(const PovToken& token, std::string_view where);
+
+    PovParser& parser_;
+    std::vector<std::string>& warnings_;
+};
+
+Point3 to_point(const PovVector& v);
+Vector3 to_vector(const PovVector& v);
+
+}  // namespace glint

@@ -1,0 +1,68 @@
+// What a POV-Ray scene's declarable items are as they are read, in POV-Ray's own terms (its
+// finish, pigment, texture and interior, and objects with their transforms), before
+// pov_scene.cpp maps them onto glint's materials, shapes and lights.
+#pragma once
+
+#include <memory>
+#include <optional>
+#include <string>
+#include <variant>
+#include <vector>
+
+#include "glint/geometry/shape.h"
+#include "glint/math/transform.h"
+#include "glint/scene/pov/pov_value.h"
+
+namespace glint {
+
+// POV-Ray's finish, with its defaults.
+struct PovFinish {
+    double ambient = 0.1;
+    double diffuse = 0.6;
+    double brilliance = 1;
+    double phong = 0, phong_size = 40;
+    double specular = 0, roughness = 0.05;
+    double reflection = 0;
+    bool fresnel = false;  // reflection { ... fresnel }
+    bool metallic = false;
+};
+
+// A solid colour (r, g, b, filter, transmit), or a checker of two.
+struct PovPigment {
+    enum class Kind { color, checker } kind = Kind::color;
+    PovVector color = PovVector::of(0, 5);  // POV-Ray's default pigment is black
+    PovVector other = PovVector::of(0, 5);  // checker: the second colour
+    Transform transform;                    // where the pattern lies, relative to the object
+};
+
+struct PovTexture {
+    PovPigment pigment;
+    PovFinish finish;
+};
+
+struct PovInterior {
+    double ior = 1;
+    double dispersion = 1;
+};
+
+// An object: a shape in its own space or a CSG of objects, placed by its transform, with what
+// it says of its look (children without a texture take their parent's).
+struct PovObject {
+    std::optional<Shape> shape;  // a shape; else a CSG of children
+    enum class Csg { group, merge, intersection, difference } csg = Csg::group;
+    std::vector<std::shared_ptr<const PovObject>> children;
+    Transform transform;                        // object to parent
+    std::shared_ptr<const PovTexture> texture;  // null: the parent's, or the default
+    std::shared_ptr<const PovInterior> interior;
+    bool no_shadow = false;
+    bool hollow = false;
+};
+
+using PovItem = std::variant<PovObject, PovTexture, PovPigment, PovFinish, PovInterior, Transform>;
+
+// A declared item as an identifier's value holds it.
+struct PovItemRef {
+    PovItem item;
+};
+
+}  // namespace glint

@@ -1,0 +1,150 @@
+// POV-Ray scenes mapped onto glint's Scene: the camera (POV-Ray's left-handed one, its angle
+// and default), lights, background and global settings, objects with transforms, CSG and
+// declared objects, finishes as Phong materials, and located errors for what is not read.
+#include "glint/scene/pov/pov_scene.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+
+#include "glint/scene/scene_error.h"
+
+namespace glint {
+namespace {
+
+Scene parse(const std::string& text) {
+    const ReadSandbox sandbox = make_read_sandbox("scene.pov");
+    return parse_pov_scene(text, "scene.pov", sandbox);
+}
+
+std::string error_of(const std::string& text) {
+    try {
+        parse(text);
+    } catch (const SceneError& e) {
+        return format_scene_error(e);
+    }
+    return "";
+}
+
+double degrees(double radians) { return radians * 180 / std::numbers::pi; }
+
+TEST(PovScene, TheDefaultCameraIsPovRaysAndLeftHanded) {
+    const Scene s = parse("sphere { <0, 0, 5>, 1 }");
+    EXPECT_TRUE(s.camera.left_handed);
+    EXPECT_EQ(s.camera.from, (Point3{0, 0, 0}));
+    EXPECT_EQ(s.camera.at, (Point3{0, 0, 1}));
+    // up 1 over direction 1: 2 atan(1/2) vertically.
+    EXPECT_NEAR(s.camera.fov, degrees(2 * std::atan(0.5)), 1e-4);
+    EXPECT_EQ(s.objects.size(), 1u);
+}
+
+TEST(PovScene, AngleIsHorizontalAndLookAtTurnsTheView) {
+    const Scene s = parse("camera { location <0, 0, -10> look_at <0, 0, 0> angle 90 }");
+    // right 1.33 gives a direction of 0.665 for 90 degrees across; up 1 over it vertically.
+    EXPECT_NEAR(s.camera.fov, degrees(2 * std::atan(0.5 / 0.665)), 1e-3);
+    EXPECT_EQ(s.camera.from, (Point3{0, 0, -10}));
+    EXPECT_NEAR(s.camera.at.z, -10 + 0.665, 1e-5);
+    // A right-handed right vector makes a right-handed camera.
+    EXPECT_FALSE(parse("camera { right -1.33*x look_at z }").camera.left_handed);
+}
+
+TEST(PovScene, LightsBackgroundAndGlobalSettings) {
+    const Scene s = parse(R"(
+        light_source { <1, 2, 3> color rgb <1, 0.5, 0.25> }
+        light_source { <0, 10, 0> color 1 spotlight point_at <0, 0, 0> radius 10 falloff 20 }
+        light_source { <0, 10, 0> color 1 parallel point_at <0, 0, 0> }
+        light_source { <0, 5, 0> color 1 area_light <2, 0, 0>, <0, 0, 2>, 3, 4 fade_distance 2 fade_power 2 }
+        background { color rgb <0.1, 0.2, 0.3> }
+        global_settings { ambient_light rgb 0.5 max_trace_level 7 adc_bailout 0.01 })");
+    ASSERT_EQ(s.lights.size(), 4u);
+    const auto& point = std::get<PointLight>(s.lights[0]);
+    EXPECT_EQ(point.position, (Point3{1, 2, 3}));
+    EXPECT_EQ(point.color, (Color{1, 0.5f, 0.25f}));
+    const auto& spot = std::get<SpotLight>(s.lights[1]);
+    EXPECT_EQ(spot.direction, (Vector3{0, -1, 0}));
+    EXPECT_NEAR(spot.cos_cone, std::cos(20 * std::numbers::pi / 180), 1e-6);
+    EXPECT_NEAR(spot.cos_falloff, std::cos(10 * std::numbers::pi / 180), 1e-6);
+    EXPECT_EQ(std::get<DirectionalLight>(s.lights[2]).direction, (Vector3{0, -1, 0}));
+    const auto& area = std::get<AreaLight>(s.lights[3]);
+    EXPECT_EQ(area.shadow_rays, 12);
+    // 2 / (1 + (d/2)^2) = 1 / (0.5 + d^2/8).
+    EXPECT_EQ(area.attenuation.constant, 0.5f);
+    EXPECT_EQ(area.attenuation.quadratic, 0.125f);
+    EXPECT_EQ(s.settings.integrator, IntegratorKind::distributed);  // for the area light's penumbra
+    EXPECT_EQ(s.settings.background, (Color{0.1f, 0.2f, 0.3f}));
+    EXPECT_EQ(s.ambient, (Color{0.5f, 0.5f, 0.5f}));
+    EXPECT_EQ(s.settings.max_depth, 7);
+    EXPECT_EQ(s.settings.min_weight, 0.01f);
+}
+
+TEST(PovScene, FinishesBecomePhongMaterials) {
+    const Scene s = parse(R"(
+        sphere { 0, 1 }
+        sphere { 0, 1 pigment { rgbt <1, 0, 0, 0.6> }
+                 finish { ambient 0.2 diffuse 0.7 phong 0.5 phong_size 30 reflection 0.25 }
+                 interior { ior 1.5 } }
+        sphere { 0, 1 finish { specular 0.4 roughness 0.02 } })");
+    ASSERT_EQ(s.materials.size(), 3u);
+    const Material& plain = s.materials[0];  // POV-Ray's defaults: black, ambient 0.1, diffuse 0.6
+    EXPECT_EQ(std::get<Color>(plain.color), (Color{0, 0, 0}));
+    EXPECT_FLOAT_EQ(plain.ka, 0.1f);
+    EXPECT_FLOAT_EQ(plain.kd, 0.6f);
+    EXPECT_EQ(plain.ks, 0);
+    const Material& glass = s.materials[1];
+    EXPECT_EQ(std::get<Color>(glass.color), (Color{1, 0, 0}));
+    EXPECT_FLOAT_EQ(glass.ka, 0.2f);
+    EXPECT_EQ(glass.highlight, Highlight::phong);
+    EXPECT_FLOAT_EQ(glass.ks, 0.5f);
+    EXPECT_FLOAT_EQ(glass.shininess, 30);
+    EXPECT_FLOAT_EQ(glass.reflect, 0.25f);
+    EXPECT_FLOAT_EQ(glass.transmit, 0.6f);
+    EXPECT_FLOAT_EQ(glass.ior, 1.5f);
+    const Material& shiny = s.materials[2];
+    EXPECT_EQ(shiny.highlight, Highlight::blinn);
+    EXPECT_FLOAT_EQ(shiny.shininess, 50);  // 1 / roughness
+}
+
+TEST(PovScene, TransformsCsgAndDeclaredObjects) {
+    const Scene s = parse(R"(
+        #declare Ball = sphere { 0, 1 pigment { rgb 1 } }
+        object { Ball scale 2 translate <0, 0, 5> no_shadow }
+        union { sphere { 0, 1 } box { -1, 1 } translate x }
+        difference { box { -1, 1 } sphere { 0, 1.2 } sphere { y, 0.5 } })");
+    ASSERT_EQ(s.objects.size(), 4u);  // the union's two objects each on their own
+    const auto& placed = std::get<Transformed>(s.objects[0].shape);
+    EXPECT_EQ(placed.world_from_object()(Point3{1, 0, 0}), (Point3{2, 0, 5}));
+    EXPECT_FALSE(s.objects[0].casts_shadow);
+    EXPECT_TRUE(std::holds_alternative<Transformed>(s.objects[1].shape));
+    const auto& outer = std::get<Csg>(s.objects[3].shape);  // (box - sphere) - sphere
+    EXPECT_EQ(outer.operation, CsgOperation::difference);
+    EXPECT_TRUE(std::holds_alternative<Csg>(*outer.a));
+    EXPECT_TRUE(std::holds_alternative<Sphere>(*outer.b));
+}
+
+TEST(PovScene, RotateIsAboutXThenYThenZ) {
+    const Scene s = parse("sphere { 0, 1 rotate <90, 0, 90> }");
+    const auto& t = std::get<Transformed>(s.objects[0].shape);
+    // y turns to z about x, then x turns to y about z: y ends at z.
+    const Point3 p = t.world_from_object()(Point3{0, 1, 0});
+    EXPECT_NEAR(p.x, 0, 1e-6);
+    EXPECT_NEAR(p.y, 0, 1e-6);
+    EXPECT_NEAR(p.z, 1, 1e-6);
+}
+
+TEST(PovScene, WhatIsNotReadIsALocatedErrorNamingIt) {
+    EXPECT_EQ(error_of("sphere { 0, 1\n  normal { bumps 0.5 } }"),
+              "scene.pov:2:3: error: \"normal\" is not supported as an object modifier yet\n"
+              "    2 |   normal { bumps 0.5 } }\n"
+              "      |   ^~~~~~\n"
+              "note: docs/povray.md lists what glint reads\n");
+    EXPECT_NE(error_of("blob { }").find("expected an object, camera, light_source"),
+              std::string::npos);
+    EXPECT_NE(error_of("sphere { 0, -1 }").find("sphere radius must be > 0"), std::string::npos);
+    EXPECT_NE(
+        error_of("sphere { 0, 1 pigment { bozo } }").find("\"bozo\" is not supported as a pigment"),
+        std::string::npos);
+}
+
+}  // namespace
+}  // namespace glint
