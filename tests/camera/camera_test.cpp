@@ -29,6 +29,20 @@ TEST(Camera, CornerRaysOfThePerspectiveWindow) {
     EXPECT_EQ(camera.generate_ray({0, 0}).origin, (Point3{0, 0, 0}));
 }
 
+// POV-Ray's cameras are left-handed: right = up x forward, so the same view is mirrored.
+TEST(Camera, ALeftHandedCameraHasRightOnTheOtherSide) {
+    CameraSpec spec;
+    spec.from = {0, 0, 0}, spec.at = {0, 0, 1}, spec.up = {0, 1, 0}, spec.fov = 90;
+    spec.left_handed = true;
+    const Camera camera(spec, 200, 100);
+    expect_near(camera.generate_ray({0, 0}).direction, normalize(Vector3{-2, 1, 1}));
+    expect_near(camera.generate_ray({200, 100}).direction, normalize(Vector3{2, -1, 1}));
+    // A point seen on the right of the image projects there.
+    const auto seen = camera.connect({1, 0, 1}, {0.5f, 0.5f}, 0);
+    ASSERT_TRUE(seen);
+    EXPECT_NEAR(seen->film.x, 150, 1e-3);
+}
+
 TEST(Camera, CentreRayHitsLookAtAndFovIsTheFullVerticalAngle) {
     CameraSpec spec;
     spec.from = {1, 2, 3}, spec.at = {-2, 0.5f, 7}, spec.up = {0.2f, 1, 0.1f}, spec.fov = 40;

@@ -1,6 +1,7 @@
 // Malformed input files, one per kind of error, checked data-driven: a file's first line states
 // the error it must give, `# error: LINE:COL: MESSAGE` (0:0 for an error without a location),
-// and any further `# note: TEXT` lines give text that must appear in one of its notes.
+// and any further `# note: TEXT` lines give text that must appear in one of its notes. Formats
+// whose comments start otherwise (POV-Ray's `//`) write that in place of `#`.
 #pragma once
 
 #include <gtest/gtest.h>
@@ -26,11 +27,13 @@ struct ExpectedError {
 };
 
 // Nothing when the header is malformed; the test then fails for that file.
-inline std::optional<ExpectedError> read_expected_error(const std::filesystem::path& file) {
+inline std::optional<ExpectedError> read_expected_error(const std::filesystem::path& file,
+                                                        const std::string& comment = "#") {
     std::ifstream in(file, std::ios::binary);
     std::string line;
     ExpectedError e;
-    const std::string prefix = "# error: ";
+    const std::string prefix = comment + " error: ";
+    const std::string note = comment + " note: ";
     if (!std::getline(in, line) || !line.starts_with(prefix)) return std::nullopt;
     std::istringstream header(line.substr(prefix.size()));
     char colon1 = 0, colon2 = 0;
@@ -38,8 +41,8 @@ inline std::optional<ExpectedError> read_expected_error(const std::filesystem::p
         return std::nullopt;
     }
     std::getline(header >> std::ws, e.message);
-    while (std::getline(in, line) && line.starts_with("# note: "))
-        e.notes.push_back(line.substr(8));
+    while (std::getline(in, line) && line.starts_with(note))
+        e.notes.push_back(line.substr(note.size()));
     return e;
 }
 
@@ -57,10 +60,11 @@ inline std::vector<std::filesystem::path> files_with_extension(const std::filesy
 // Runs load (which reads `file`) and checks that it throws the SceneError the file states:
 // location, message, notes, and a quoted source line when located.
 inline void expect_stated_error(const std::filesystem::path& file,
-                                const std::function<void()>& load) {
+                                const std::function<void()>& load,
+                                const std::string& comment = "#") {
     SCOPED_TRACE(file.filename().string());
-    const auto expected = read_expected_error(file);
-    ASSERT_TRUE(expected) << "first line must be '# error: LINE:COL: MESSAGE'";
+    const auto expected = read_expected_error(file, comment);
+    ASSERT_TRUE(expected) << "first line must be '" << comment << " error: LINE:COL: MESSAGE'";
     try {
         load();
         ADD_FAILURE() << "loaded without error";

@@ -178,7 +178,7 @@ void PovParser::include(const PovToken& directive) {
         return std::filesystem::path(files_.name(file)).parent_path();
     };
     folders.push_back(folder_of(directive.at.file));
-    folders.push_back(folder_of(0));
+    if (folder_of(0) != folders.back()) folders.push_back(folder_of(0));
     folders.insert(folders.end(), options_.include_folders.begin(), options_.include_folders.end());
     std::filesystem::path found;
     for (const auto& folder : folders) {

@@ -67,7 +67,44 @@ PovVector PovParser::vector_expression(std::string_view what, int size) {
 PovVector PovParser::color_expression(std::string_view what) {
     const PovToken at = peek();
     if (at.is_word("color") || at.is_word("colour")) next();
-    return vector_of(expression(), at, what, 5);
+    const PovVector v = vector_of(expression(), at, what, 5);
+    for (int i = 0; i < 5; ++i)
+        if (!std::isfinite(v[i]))
+            throw error_at(at, "colour " + std::string(what) + " must be finite");
+    return v;
+}
+
+double PovParser::finite_float(std::string_view what) {
+    const PovToken at = peek();
+    const double value = float_of(expression(), at, what);
+    if (!std::isfinite(value))
+        throw error_at(at, "the number " + std::string(what) + " must be finite, got " +
+                               format_pov_number(value));
+    return value;
+}
+
+std::vector<double> PovParser::finite_list(std::string_view what, std::size_t count) {
+    expect("<", what);
+    const bool was_in_vector = in_vector_;
+    in_vector_ = true;
+    std::vector<double> values;
+    for (std::size_t i = 0; i < count; ++i) {
+        if (i > 0)
+            expect(",", "between the " + std::to_string(count) + " numbers " + std::string(what));
+        values.push_back(finite_float(what));
+    }
+    in_vector_ = was_in_vector;
+    expect(">", "after the " + std::to_string(count) + " numbers " + std::string(what));
+    return values;
+}
+
+PovVector PovParser::finite_vector(std::string_view what, int size) {
+    const PovToken at = peek();
+    const PovVector v = vector_of(expression(), at, what, size);
+    for (int i = 0; i < v.size; ++i)
+        if (!std::isfinite(v[i]))
+            throw error_at(at, "the vector " + std::string(what) + " must be finite");
+    return v;
 }
 
 std::string PovParser::string_expression(std::string_view what) {

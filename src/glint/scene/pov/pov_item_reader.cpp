@@ -89,16 +89,16 @@ std::optional<PovItem> PovItemReader::read(const PovToken& keyword) {
 std::optional<Transform> PovItemReader::transform_step(const PovToken& keyword) {
     const std::string& w = keyword.text;
     if (w == "translate")
-        return Transform::translate(to_vector(parser_.vector_expression("after translate")));
+        return Transform::translate(to_vector(parser_.finite_vector("after translate")));
     if (w == "rotate") {
         // About x, then y, then z, in degrees (as POV-Ray's rotate).
-        const PovVector a = parser_.vector_expression("after rotate");
+        const PovVector a = parser_.finite_vector("after rotate");
         return Transform::rotate({0, 0, 1}, float(a[2])) *
                Transform::rotate({0, 1, 0}, float(a[1])) *
                Transform::rotate({1, 0, 0}, float(a[0]));
     }
     if (w == "scale") {
-        const PovVector s = parser_.vector_expression("after scale");
+        const PovVector s = parser_.finite_vector("after scale");
         if (s[0] == 0 || s[1] == 0 || s[2] == 0)
             throw parser_.error_at(
                 keyword, "scale by zero flattens the object: every factor must be non-zero");
@@ -107,13 +107,7 @@ std::optional<Transform> PovItemReader::transform_step(const PovToken& keyword) 
     if (w == "matrix") {
         // <a, b, c,  d, e, f,  g, h, i,  j, k, l>: rows of a 4x3 matrix that points multiply
         // from the left, the last row the translation.
-        parser_.expect("<", "after matrix");
-        double v[12];
-        for (int i = 0; i < 12; ++i) {
-            if (i > 0) parser_.expect(",", "between matrix's 12 numbers");
-            v[i] = parser_.float_expression("in matrix");
-        }
-        parser_.expect(">", "after matrix's 12 numbers");
+        const std::vector<double> v = parser_.finite_list("of matrix", 12);
         Matrix4 m;
         for (int c = 0; c < 3; ++c) {
             for (int r = 0; r < 3; ++r) m.m[std::size_t(r)][std::size_t(c)] = float(v[3 * c + r]);
@@ -159,8 +153,11 @@ Shape PovItemReader::shape(const PovToken& keyword) {
     if (w == "sphere") {
         const Point3 center = to_point(point("as the sphere's centre"));
         parser_.expect(",", "after the sphere's centre");
+        const PovToken at = parser_.peek();
         const float radius = number("as the sphere's radius");
-        if (!(radius > 0)) throw parser_.error_at(keyword, "sphere radius must be > 0");
+        if (!(radius > 0))
+            throw parser_.error_at(at,
+                                   "sphere radius must be > 0, got " + format_pov_number(radius));
         return Sphere{center, radius};
     }
     if (w == "box") {
@@ -238,7 +235,7 @@ Shape PovItemReader::shape(const PovToken& keyword) {
         std::vector<Point3> points;
         for (int i = 0; i < int(count); ++i) {
             parser_.expect(",", "between the polygon's points");
-            const PovVector p = parser_.vector_expression("as a polygon point", 2);
+            const PovVector p = parser_.finite_vector("as a polygon point", 2);
             points.push_back({float(p[0]), float(p[1]), float(p.size > 2 ? p[2] : 0)});
         }
         // POV-Ray closes a polygon by repeating its first point; the first outline is taken.
@@ -432,21 +429,21 @@ PovFinish PovItemReader::finish(const PovFinish& base) {
         if (w == "ambient")
             f.ambient = amount("after ambient");
         else if (w == "diffuse")
-            f.diffuse = parser_.float_expression("after diffuse");
+            f.diffuse = parser_.finite_float("after diffuse");
         else if (w == "brilliance")
-            f.brilliance = parser_.float_expression("after brilliance");
+            f.brilliance = parser_.finite_float("after brilliance");
         else if (w == "phong")
-            f.phong = parser_.float_expression("after phong");
+            f.phong = parser_.finite_float("after phong");
         else if (w == "phong_size")
-            f.phong_size = parser_.float_expression("after phong_size");
+            f.phong_size = parser_.finite_float("after phong_size");
         else if (w == "specular")
-            f.specular = parser_.float_expression("after specular");
+            f.specular = parser_.finite_float("after specular");
         else if (w == "roughness")
-            f.roughness = parser_.float_expression("after roughness");
+            f.roughness = parser_.finite_float("after roughness");
         else if (w == "metallic")
             f.metallic = true, parser_.accept_word("on");
         else if (w == "crand")
-            parser_.float_expression("after crand");
+            parser_.finite_float("after crand");
         else if (w == "reflection") {
             if (parser_.accept("{")) {
                 // reflection { [min,] max [fresnel] [metallic] [falloff F] [exponent E] }
@@ -458,7 +455,7 @@ PovFinish PovItemReader::finish(const PovFinish& base) {
                     else if (r.is_word("metallic"))
                         f.metallic = true, parser_.accept_word("on");
                     else if (r.is_word("falloff") || r.is_word("exponent"))
-                        parser_.float_expression("in reflection");
+                        parser_.finite_float("in reflection");
                     else
                         throw unsupported(r, "in reflection { }");
                 }
@@ -482,9 +479,9 @@ PovInterior PovItemReader::interior(const PovInterior& base) {
         const PovToken token = parser_.next();
         if (token.is_symbol("}")) return in;
         if (token.is_word("ior"))
-            in.ior = parser_.float_expression("after ior");
+            in.ior = parser_.finite_float("after ior");
         else if (token.is_word("dispersion"))
-            in.dispersion = parser_.float_expression("after dispersion");
+            in.dispersion = parser_.finite_float("after dispersion");
         else
             throw unsupported(token, "in an interior");
     }

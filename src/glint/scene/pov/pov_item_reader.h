@@ -38,8 +38,8 @@ private:
     void modifiers(PovObject& object);
     template <typename Item>
     std::optional<Item> declared(const PovToken& name);
-    PovVector point(std::string_view what) { return parser_.vector_expression(what, 3); }
-    float number(std::string_view what) { return float(parser_.float_expression(what)); }
+    PovVector point(std::string_view what) { return parser_.finite_vector(what, 3); }
+    float number(std::string_view what) { return float(parser_.finite_float(what)); }
     SceneError unsupported(const PovToken& token, std::string_view where);
 
     PovParser& parser_;

@@ -69,6 +69,11 @@ public:
     // A vector of at least `size` components (a float is promoted to all of them).
     PovVector vector_expression(std::string_view what, int size = 3);
     PovVector color_expression(std::string_view what);  // a 5-vector: r, g, b, filter, transmit
+    // As above, and an error unless every component is finite: what a scene's items take.
+    double finite_float(std::string_view what);
+    // <a, b, ...> of exactly `count` finite numbers (a matrix's twelve).
+    std::vector<double> finite_list(std::string_view what, std::size_t count);
+    PovVector finite_vector(std::string_view what, int size = 3);
     std::string string_expression(std::string_view what);
 
     // What reads an item (an object, a texture, ...) where an expression finds its keyword: the

@@ -1,0 +1,3 @@
+// error: 3:1: #fopen is not supported
+// note: glint reads POV-Ray's directives
+#fopen Log "log.txt" write

@@ -1,0 +1,2 @@
+// error: 2:10: "Centre" is not declared
+sphere { Centre, 1 }
