@@ -24,7 +24,9 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     const std::string_view text(reinterpret_cast<const char*>(data), size);
     const auto file = glint::fuzz::fuzz_folder() / "scene.pov";
     try {
-        const glint::ReadSandbox sandbox = glint::make_read_sandbox(file);
+        glint::ReadSandbox sandbox = glint::make_read_sandbox(file);
+        // Endless loops are found at once; the limit itself is tested in pov_language_test.
+        sandbox.limits.script_loop_iterations = 10'000;
         glint::parse_pov_scene(std::string(text), file, sandbox);
     } catch (const glint::SceneError&) {
         // The loader's documented answer to bad input; anything else escapes and is a finding.

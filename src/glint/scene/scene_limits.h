@@ -28,6 +28,9 @@ struct SceneLimits {
     std::int64_t image_pixels = kMaxImagePixels;  // of the render, and of every image read
     int samples_per_pixel = 65536;
     int max_depth = 64;
+    // Times a scene's script loops may run (POV-Ray's #while and #for, all together): an
+    // endless loop stops with an error within seconds.
+    std::int64_t script_loop_iterations = 1'000'000;
 };
 
 }  // namespace glint

@@ -122,6 +122,19 @@ TEST(PovScene, TransformsCsgAndDeclaredObjects) {
     EXPECT_TRUE(std::holds_alternative<Sphere>(*outer.b));
 }
 
+TEST(PovScene, SmoothTrianglesCarryTheirNormals) {
+    const Scene s = parse(R"(
+        mesh { smooth_triangle { <0, 0, 0>, <0, 0, -1>, <1, 0, 0>, <1, 0, -1>, <0, 1, 0>, <0, 1, -1> }
+               triangle { <0, 0, 1>, <1, 0, 1>, <0, 1, 1> } }
+        smooth_triangle { 0, y, x, y, z, y })");
+    ASSERT_EQ(s.objects.size(), 2u);
+    const MeshData& mesh = *std::get<TriangleMesh>(s.objects[0].shape).data;
+    ASSERT_EQ(mesh.normals.size(), 6u);
+    EXPECT_NEAR(mesh.normals[1].x, 1 / std::sqrt(2.0f), 1e-6);  // normalised as given
+    EXPECT_EQ(mesh.normals[3], (Normal3{0, 0, 1}));             // the flat one's face
+    EXPECT_EQ(std::get<TriangleMesh>(s.objects[1].shape).data->normals.size(), 3u);
+}
+
 TEST(PovScene, RotateIsAboutXThenYThenZ) {
     const Scene s = parse("sphere { 0, 1 rotate <90, 0, 90> }");
     const auto& t = std::get<Transformed>(s.objects[0].shape);
@@ -138,8 +151,7 @@ TEST(PovScene, WhatIsNotReadIsALocatedErrorNamingIt) {
               "    2 |   normal { bumps 0.5 } }\n"
               "      |   ^~~~~~\n"
               "note: docs/povray.md lists what glint reads\n");
-    EXPECT_NE(error_of("blob { }").find("POV-Ray's blob is not supported yet"),
-              std::string::npos);
+    EXPECT_NE(error_of("blob { }").find("POV-Ray's blob is not supported yet"), std::string::npos);
     EXPECT_NE(error_of("sphere { 0, -1 }").find("sphere radius must be > 0"), std::string::npos);
     EXPECT_NE(
         error_of("sphere { 0, 1 pigment { bozo } }").find("\"bozo\" is not supported as a pigment"),

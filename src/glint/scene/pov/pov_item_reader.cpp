@@ -216,19 +216,18 @@ Shape PovItemReader::shape(const PovToken& keyword) {
         if (!(length(n) > 0)) throw parser_.error_at(keyword, "disc normal must not be zero");
         return checked_shape(parser_, keyword, Disk{center, Normal3(normalize(n)), radius, hole});
     }
-    if (w == "triangle" || w == "smooth_triangle") {
-        std::array<Point3, 3> v;
-        for (int i = 0; i < 3; ++i) {
-            if (i > 0) parser_.expect(",", "between the triangle's corners");
-            v[std::size_t(i)] = to_point(point("as a corner"));
-            if (w == "smooth_triangle") {
-                parser_.expect(",", "after the corner");
-                point("as the corner's normal");  // the shading normal: a flat face for now
-            }
-        }
-        if (w == "smooth_triangle")
-            warnings_.push_back("smooth_triangle's normals are not used: it is shaded flat");
-        return Triangle{v};
+    if (w == "triangle") {
+        MeshCorners corners;
+        triangle(keyword, corners);
+        return Triangle{{corners.positions[0], corners.positions[1], corners.positions[2]}};
+    }
+    if (w == "smooth_triangle") {
+        // A mesh of one triangle carries the vertex normals.
+        MeshCorners corners;
+        triangle(keyword, corners);
+        MeshBuild built = build_mesh(mesh_arrays(corners));
+        if (!built.mesh) throw parser_.error_at(keyword, "smooth_triangle: " + built.error);
+        return TriangleMesh{built.mesh};
     }
     if (w == "polygon") {
         const float count = number("as the polygon's number of points");
@@ -253,26 +252,49 @@ Shape PovItemReader::shape(const PovToken& keyword) {
     throw unsupported(keyword, "as an object");
 }
 
-Shape PovItemReader::mesh(const PovToken& keyword) {
+void PovItemReader::triangle(const PovToken& keyword, MeshCorners& corners) {
+    const bool smooth = keyword.text == "smooth_triangle";
+    for (int i = 0; i < 3; ++i) {
+        if (i > 0) parser_.expect(",", "between the triangle's corners");
+        corners.positions.push_back(to_point(point("as a corner")));
+        std::optional<Normal3> normal;
+        if (smooth) {
+            parser_.expect(",", "after the corner");
+            normal = Normal3(to_vector(point("as the corner's normal")));
+        }
+        corners.normals.push_back(normal);
+    }
+}
+
+MeshData PovItemReader::mesh_arrays(const MeshCorners& corners) {
     MeshData arrays;
+    arrays.positions.assign(corners.positions.begin(), corners.positions.end());
+    const bool smooth = std::any_of(corners.normals.begin(), corners.normals.end(),
+                                    [](const auto& n) { return n.has_value(); });
+    for (std::uint32_t t = 0; 3 * t < corners.positions.size(); ++t) {
+        arrays.triangles.push_back({3 * t, 3 * t + 1, 3 * t + 2});
+        if (!smooth) continue;
+        // A flat triangle among smooth ones takes its face's normal at its corners.
+        const Point3 a = arrays.positions[3 * t], b = arrays.positions[3 * t + 1],
+                     c = arrays.positions[3 * t + 2];
+        const Normal3 face(cross(b - a, c - a));
+        for (int k = 0; k < 3; ++k)
+            arrays.normals.push_back(corners.normals[3 * t + k].value_or(face));
+    }
+    return arrays;
+}
+
+Shape PovItemReader::mesh(const PovToken& keyword) {
+    MeshCorners corners;
     while (parser_.peek_item().is_word("triangle") ||
            parser_.peek_item().is_word("smooth_triangle")) {
         const PovToken kind = parser_.next();
         parser_.expect("{", "after " + kind.text);
-        for (int i = 0; i < 3; ++i) {
-            if (i > 0) parser_.expect(",", "between the triangle's corners");
-            arrays.positions.push_back(to_point(point("as a corner")));
-            if (kind.text == "smooth_triangle") {
-                parser_.expect(",", "after the corner");
-                point("as the corner's normal");
-            }
-        }
-        const auto n = std::uint32_t(arrays.positions.size());
-        arrays.triangles.push_back({n - 3, n - 2, n - 1});
+        triangle(kind, corners);
         const PovToken close = parser_.next();
         if (!close.is_symbol("}")) throw unsupported(close, "in a mesh's triangle");
     }
-    MeshBuild built = build_mesh(std::move(arrays));
+    MeshBuild built = build_mesh(mesh_arrays(corners));
     if (!built.mesh) throw parser_.error_at(keyword, "mesh: " + built.error);
     return TriangleMesh{built.mesh};
 }

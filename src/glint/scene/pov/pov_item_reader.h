@@ -33,6 +33,14 @@ public:
 private:
     Shape shape(const PovToken& keyword);
     Shape mesh(const PovToken& keyword);
+    // The corners of triangles as read, three a triangle, with a smooth one's normals.
+    struct MeshCorners {
+        std::vector<Point3> positions;
+        std::vector<std::optional<Normal3>> normals;
+    };
+    void triangle(const PovToken& keyword, MeshCorners& corners);
+    // The arrays of a mesh: normals at every corner when any triangle is smooth.
+    static MeshData mesh_arrays(const MeshCorners& corners);
     void csg(const PovToken& keyword, PovObject& object);
     // The modifiers after an object's own values, to the closing brace.
     void modifiers(PovObject& object);

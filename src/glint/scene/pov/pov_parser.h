@@ -29,10 +29,10 @@ struct PovLanguageOptions {
     // After the including file's folder and the scene's: `+L` folders, then POV-Ray's standard
     // includes when installed (default_pov_include_folders()).
     std::vector<std::filesystem::path> include_folders;
-    const ReadSandbox* sandbox = nullptr;           // files outside it are refused; null: no checks
-    double clock = 0;                               // the `clock` identifier
-    int image_width = 320, image_height = 240;      // `image_width`, `image_height`
-    std::int64_t max_loop_iterations = 10'000'000;  // every #while and #for together
+    const ReadSandbox* sandbox = nullptr;       // files outside it are refused; null: no checks
+    double clock = 0;                           // the `clock` identifier
+    int image_width = 320, image_height = 240;  // `image_width`, `image_height`
+    std::int64_t max_loop_iterations = SceneLimits{}.script_loop_iterations;  // all together
     int max_macro_depth = 200;
     int max_include_depth = 64;
     std::size_t max_array_elements = std::size_t(1) << 24;

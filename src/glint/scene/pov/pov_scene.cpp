@@ -107,6 +107,7 @@ private:
         PovLanguageOptions o;
         o.include_folders = default_pov_include_folders();
         o.sandbox = &sandbox;
+        o.max_loop_iterations = sandbox.limits.script_loop_iterations;
         return o;
     }
 
