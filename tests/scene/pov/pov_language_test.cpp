@@ -247,6 +247,9 @@ TEST(PovDirectives, EndlessLoopsAndRunawayMacrosAreErrorsNotHangs) {
               std::string::npos);
     EXPECT_NE(error_of("#declare A = array[100000][100000];").find("array size must be"),
               std::string::npos);
+    EXPECT_NE(error_of("#declare A = " + std::string(300, '(') + "1" + std::string(300, ')') + ";")
+                  .find("nested more than 200 levels"),
+              std::string::npos);
     PovLanguageOptions small = test_options();
     small.max_string_length = 8;
     EXPECT_NE(error_of("#declare S = concat(\"abcde\", \"fghij\");", small).find("longer than 8"),

@@ -19,6 +19,15 @@ std::vector<std::filesystem::path> default_pov_include_folders() {
     return folders;
 }
 
+PovParser::Nested::Nested(PovParser& parser, const PovToken& at) : parser_(parser) {
+    if (++parser_.nesting_ > kMaxNesting) {
+        --parser_.nesting_;
+        throw parser_.error_at(at, "nested more than " + std::to_string(kMaxNesting) +
+                                       " levels deep (expressions, directives inside them, or "
+                                       "objects inside objects)");
+    }
+}
+
 PovParser::PovParser(PovFiles& files, PovLanguageOptions options)
     : files_(files), options_(std::move(options)) {
     token_lists_.push_back(lex_pov(files_, 0));

@@ -24,6 +24,7 @@ double PovParser::parenthesized_float(std::string_view what) {
 }
 
 void PovParser::directive(const PovToken& token) {
+    const Nested nested(*this, token);
     const std::string& word = token.text;
     if (word == "declare" || word == "local") return declare(token, word == "local");
     if (word == "undef") {

@@ -23,7 +23,10 @@ int member_index(std::string_view name) {
 
 }  // namespace
 
-PovValue PovParser::expression() { return conditional(); }
+PovValue PovParser::expression() {
+    const Nested nested(*this, peek());
+    return conditional();
+}
 
 double PovParser::float_of(const PovValue& value, const PovToken& at, std::string_view what) const {
     if (const double* f = std::get_if<double>(&value)) return *f;

@@ -128,6 +128,7 @@ std::optional<Transform> PovItemReader::transform_step(const PovToken& keyword) 
 }
 
 PovObject PovItemReader::object(const PovToken& keyword) {
+    const PovParser::Nested nested(parser_, keyword);
     parser_.expect("{", "after " + keyword.text);
     PovObject object;
     if (keyword.text == "object") {

@@ -85,6 +85,20 @@ public:
     // What #debug and #warning printed, in order.
     const std::vector<std::string>& messages() const { return messages_; }
 
+    // Held while reading something that may hold itself (an expression, a directive, an
+    // object): past kMaxNesting levels the scene is an error, not a stack overflow.
+    static constexpr int kMaxNesting = 200;
+    class Nested {
+    public:
+        Nested(PovParser& parser, const PovToken& at);
+        ~Nested() { --parser_.nesting_; }
+        Nested(const Nested&) = delete;
+        Nested& operator=(const Nested&) = delete;
+
+    private:
+        PovParser& parser_;
+    };
+
     SceneError error_at(const PovToken& token, std::string message,
                         std::vector<std::string> notes = {}) const {
         return files_.error_at(token.at, std::move(message), std::move(notes));
@@ -175,6 +189,7 @@ private:
     std::optional<PovToken> peeked_;
     std::int64_t loop_iterations_ = 0;
     int macro_depth_ = 0;
+    int nesting_ = 0;
     int include_depth_ = 0;
     // One stream of rand() numbers per seed() call, as POV-Ray keeps them.
     std::vector<std::uint32_t> random_streams_;
