@@ -1,3 +1,3 @@
-// error: 3:24: "bozo" is not supported as a pigment yet
+// error: 3:24: pigment pattern "bozo" is not supported yet
 // note: docs/povray.md lists what glint reads
 plane { y, 0 pigment { bozo color_map { [0 rgb 0] [1 rgb 1] } } }

@@ -146,16 +146,74 @@ TEST(PovScene, RotateIsAboutXThenYThenZ) {
 }
 
 TEST(PovScene, WhatIsNotReadIsALocatedErrorNamingIt) {
-    EXPECT_EQ(error_of("sphere { 0, 1\n  normal { bumps 0.5 } }"),
-              "scene.pov:2:3: error: \"normal\" is not supported as an object modifier yet\n"
-              "    2 |   normal { bumps 0.5 } }\n"
-              "      |   ^~~~~~\n"
+    EXPECT_EQ(error_of("sphere { 0, 1\n  clipped_by { plane { y, 0 } } }"),
+              "scene.pov:2:3: error: \"clipped_by\" is not supported as an object modifier yet\n"
+              "    2 |   clipped_by { plane { y, 0 } } }\n"
+              "      |   ^~~~~~~~~~\n"
               "note: docs/povray.md lists what glint reads\n");
     EXPECT_NE(error_of("blob { }").find("POV-Ray's blob is not supported yet"), std::string::npos);
     EXPECT_NE(error_of("sphere { 0, -1 }").find("sphere radius must be > 0"), std::string::npos);
-    EXPECT_NE(
-        error_of("sphere { 0, 1 pigment { bozo } }").find("\"bozo\" is not supported as a pigment"),
-        std::string::npos);
+    EXPECT_NE(error_of("sphere { 0, 1 pigment { bozo } }")
+                  .find("pigment pattern \"bozo\" is not supported yet"),
+              std::string::npos);
+}
+
+// As an include file declares what a scene may never use: only what is used stops the scene.
+TEST(PovScene, UnreadDeclarationsStopOnlyTheObjectsThatUseThem) {
+    const Scene s = parse(R"(
+        #declare Cloudy = pigment { bozo color_map { [0 rgb 0] [1 rgb 1] } }
+        #declare Map = color_map { [0 rgb 0] [1 rgb 1] }
+        #declare Bumpy = normal { bumps 0.5 }
+        sphere { 0, 1 pigment { rgb 1 } normal { Bumpy } })");
+    EXPECT_EQ(s.objects.size(), 1u);
+    ASSERT_EQ(s.warnings.size(), 1u);
+    EXPECT_NE(s.warnings[0].find("normal { }"), std::string::npos);
+    EXPECT_NE(error_of("#declare Cloudy = pigment { bozo }\nsphere { 0, 1 pigment { Cloudy } }")
+                  .find("scene.pov:1:29: error: pigment pattern \"bozo\" is not supported yet"),
+              std::string::npos);
+}
+
+TEST(PovScene, DeprecatedDeclarationsAndMetallicAmounts) {
+    const Scene s = parse(R"(
+        #declare M = 0.5;
+        #declare deprecated once "use T_New" T_Old = texture { finish { metallic M brilliance 2 } }
+        sphere { 0, 1 texture { T_Old } })");
+    EXPECT_EQ(s.objects.size(), 1u);
+}
+
+// Textures made and dropped one after another must never share a material.
+TEST(PovScene, EachObjectsOwnTextureIsItsOwnMaterial) {
+    const Scene s =
+        parse("#for (I, 1, 50) sphere { x * I, 0.5 pigment { rgb <I / 50, 0, 0> } } #end");
+    ASSERT_EQ(s.objects.size(), 50u);
+    for (std::size_t i = 0; i < 50; ++i)
+        EXPECT_FLOAT_EQ(std::get<Color>(s.materials[s.objects[i].material].color).r,
+                        float(i + 1) / 50);
+}
+
+TEST(PovScene, LayeredTexturesKeepTheBottomLayer) {
+    const Scene s = parse(R"(
+        #declare Base = texture { pigment { rgb <0, 0, 1> } } texture { pigment { rgbt <1, 1, 1, 0.5> } }
+        #declare Again = texture { Base scale 2 }
+        sphere { 0, 1 texture { Again } texture { pigment { rgbt 1 } } })");
+    ASSERT_EQ(s.objects.size(), 1u);
+    EXPECT_EQ(std::get<Color>(s.materials[s.objects[0].material].color), (Color{0, 0, 1}));
+    ASSERT_EQ(s.warnings.size(), 1u);
+    EXPECT_NE(s.warnings[0].find("layered textures"), std::string::npos);
+}
+
+TEST(PovScene, DefaultTexturesApplyToLaterObjectsWithoutOne) {
+    const Scene s = parse(R"(
+        sphere { 0, 1 }
+        #default { pigment { rgb <1, 0, 0> } finish { ambient 0.3 } }
+        sphere { 0, 1 }
+        sphere { 0, 1 pigment { rgb 1 } })");
+    ASSERT_EQ(s.objects.size(), 3u);
+    EXPECT_EQ(std::get<Color>(s.materials[s.objects[0].material].color), (Color{0, 0, 0}));
+    const Material& red = s.materials[s.objects[1].material];
+    EXPECT_EQ(std::get<Color>(red.color), (Color{1, 0, 0}));
+    EXPECT_FLOAT_EQ(red.ka, 0.3f);
+    EXPECT_EQ(std::get<Color>(s.materials[s.objects[2].material].color), (Color{1, 1, 1}));
 }
 
 }  // namespace

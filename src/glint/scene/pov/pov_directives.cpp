@@ -88,6 +88,10 @@ void PovParser::directive(const PovToken& token) {
         return;
     }
     if (word == "error") throw error_at(token, "#error: " + string_expression("after #error"));
+    if (word == "default" && item_reader_) {
+        item_reader_(token);
+        return;
+    }
     throw error_at(token, "#" + word + " is not supported",
                    {"glint reads POV-Ray's directives #declare, #local, #undef, #if, #ifdef, "
                     "#ifndef, #else, #elseif, #while, #for, #switch, #macro, #include, #version, "
@@ -95,7 +99,13 @@ void PovParser::directive(const PovToken& token) {
 }
 
 void PovParser::declare(const PovToken& directive, bool local) {
-    const PovToken name = next();
+    PovToken name = next();
+    // `#declare deprecated [once] "message" Name = ...` (POV-Ray 3.7): the name follows.
+    if (name.is_word("deprecated")) {
+        accept_word("once");
+        string_expression("after deprecated");
+        name = next();
+    }
     if (name.kind != PovTokenKind::identifier)
         throw error_at(
             name, "expected an identifier after #" + directive.text + ", got " + describe(name));

@@ -1,6 +1,7 @@
 // POV-Ray's expressions, evaluated as they are parsed: ?:, |, &, comparisons, + -, * /, unary
 // + - !, member access (.x, .red, ...), vectors <a, b, c>, colours, arrays and identifiers.
 #include <cmath>
+#include <limits>
 
 #include "glint/scene/pov/pov_parser.h"
 #include "glint/scene/quote.h"
@@ -67,12 +68,21 @@ PovVector PovParser::vector_expression(std::string_view what, int size) {
     return vector_of(expression(), at, what, size);
 }
 
+namespace {
+
+// What a scene's items store is a float: beyond a float's range is not finite either.
+bool fits_float(double value) {
+    return std::isfinite(value) && std::abs(value) <= double(std::numeric_limits<float>::max());
+}
+
+}  // namespace
+
 PovVector PovParser::color_expression(std::string_view what) {
     const PovToken at = peek();
     if (at.is_word("color") || at.is_word("colour")) next();
     const PovVector v = vector_of(expression(), at, what, 5);
     for (int i = 0; i < 5; ++i)
-        if (!std::isfinite(v[i]))
+        if (!fits_float(v[i]))
             throw error_at(at, "colour " + std::string(what) + " must be finite");
     return v;
 }
@@ -80,10 +90,20 @@ PovVector PovParser::color_expression(std::string_view what) {
 double PovParser::finite_float(std::string_view what) {
     const PovToken at = peek();
     const double value = float_of(expression(), at, what);
-    if (!std::isfinite(value))
+    if (!fits_float(value))
         throw error_at(at, "the number " + std::string(what) + " must be finite, got " +
                                format_pov_number(value));
     return value;
+}
+
+int PovParser::whole_number(std::string_view what, int min, int max) {
+    const PovToken at = peek();
+    const double value = finite_float(what);
+    if (!(value >= min && value <= max) || value != std::floor(value))
+        throw error_at(at, "the number " + std::string(what) + " must be a whole number from " +
+                               std::to_string(min) + " to " + std::to_string(max) + ", got " +
+                               format_pov_number(value));
+    return int(value);
 }
 
 std::vector<double> PovParser::finite_list(std::string_view what, std::size_t count) {
@@ -105,7 +125,7 @@ PovVector PovParser::finite_vector(std::string_view what, int size) {
     const PovToken at = peek();
     const PovVector v = vector_of(expression(), at, what, size);
     for (int i = 0; i < v.size; ++i)
-        if (!std::isfinite(v[i]))
+        if (!fits_float(v[i]))
             throw error_at(at, "the vector " + std::string(what) + " must be finite");
     return v;
 }

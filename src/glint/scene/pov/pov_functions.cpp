@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <limits>
 #include <numbers>
 
 #include "glint/scene/pov/pov_parser.h"
@@ -41,6 +42,12 @@ PovVector axis_rotate(const PovVector& p, PovVector axis, double degrees) {
 
 // printf's %*.*f as POV-Ray's str(): a negative width pads with zeros, a negative precision
 // takes %f's default of 6.
+// A float argument as an int within [lo, hi] (POV-Ray truncates; huge values saturate).
+int clamped(double value, int lo, int hi) {
+    if (!(value >= lo)) return lo;
+    return value > hi ? hi : int(value);
+}
+
 std::string format_float(double value, int width, int precision) {
     char buffer[512];
     const bool zeros = width < 0;
@@ -156,7 +163,8 @@ std::optional<PovValue> PovParser::builtin(const PovToken& name) {
     }
     if (w == "seed") {
         const double s = f(arguments(name, 1, 1)[0]);
-        random_streams_.push_back(std::uint32_t(std::int64_t(s)));
+        random_streams_.push_back(std::uint32_t(
+            clamped(s, std::numeric_limits<int>::min(), std::numeric_limits<int>::max())));
         return double(random_streams_.size() - 1);
     }
     if (w == "rand") {
@@ -207,17 +215,17 @@ std::optional<PovValue> PovParser::builtin(const PovToken& name) {
     // Strings.
     if (w == "str") {
         const auto a = arguments(name, 3, 3);
-        return format_float(f(a[0]), int(f(a[1])), int(f(a[2])));
+        return format_float(f(a[0]), clamped(f(a[1]), -200, 200), clamped(f(a[2]), -1, 100));
     }
     if (w == "vstr") {
         const auto a = arguments(name, 5, 5);
-        const int n = int(f(a[0]));
+        const int n = clamped(f(a[0]), 0, 6);
         const PovVector v = vector_of(a[1], name, "in vstr", 2);
         if (n < 2 || n > 5) throw error_at(name, "vstr takes 2 to 5 components");
         std::string text;
         for (int i = 0; i < n; ++i) {
             if (i > 0) text += str(a[2]);
-            text += format_float(v[i], int(f(a[3])), int(f(a[4])));
+            text += format_float(v[i], clamped(f(a[3]), -200, 200), clamped(f(a[4]), -1, 100));
         }
         return checked_string(text, name);
     }

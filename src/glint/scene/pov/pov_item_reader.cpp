@@ -19,6 +19,17 @@ bool is_solid_shape(const std::string& keyword) {
            keyword == "smooth_triangle" || keyword == "polygon" || keyword == "mesh";
 }
 
+// POV-Ray's objects that glint does not read yet: read past, so that only using one stops the
+// scene (include files declare many).
+bool is_unread_object(const std::string& keyword) {
+    static const std::string_view kUnread[] = {
+        "bicubic_patch", "blob",  "cubic",        "height_field",   "isosurface",
+        "julia_fractal", "lathe", "lemon",        "mesh2",          "ovus",
+        "parametric",    "poly",  "polynomial",   "prism",          "quadric",
+        "quartic",       "sor",   "sphere_sweep", "superellipsoid", "text"};
+    return std::find(std::begin(kUnread), std::end(kUnread), keyword) != std::end(kUnread);
+}
+
 bool is_csg(const std::string& keyword) {
     return keyword == "union" || keyword == "merge" || keyword == "intersection" ||
            keyword == "difference";
@@ -40,7 +51,8 @@ PovItemReader::PovItemReader(PovParser& parser, std::vector<std::string>& warnin
     : parser_(parser), warnings_(warnings) {}
 
 bool PovItemReader::starts_object(const std::string& keyword) {
-    return is_solid_shape(keyword) || is_csg(keyword) || keyword == "object";
+    return is_solid_shape(keyword) || is_csg(keyword) || is_unread_object(keyword) ||
+           keyword == "object";
 }
 
 SceneError PovItemReader::unsupported(const PovToken& token, std::string_view where) {
@@ -60,10 +72,96 @@ std::optional<Item> PovItemReader::declared(const PovToken& name) {
     return std::nullopt;
 }
 
+double PovItemReader::optional_amount() {
+    const PovToken& ahead = parser_.peek_item();
+    bool given = ahead.kind == PovTokenKind::number || ahead.is_symbol("(") ||
+                 ahead.is_symbol("-") || ahead.is_symbol("+");
+    if (ahead.kind == PovTokenKind::identifier) {
+        static const std::string_view kWords[] = {"on", "off", "true", "false", "yes", "no"};
+        const PovValue* declared = parser_.symbols().find(ahead.text);
+        given = std::find(std::begin(kWords), std::end(kWords), ahead.text) != std::end(kWords) ||
+                (declared && std::holds_alternative<double>(*declared));
+    }
+    return given ? parser_.finite_float("after the keyword") : 1;
+}
+
+void PovItemReader::skip_block(const PovToken& keyword) {
+    parser_.expect("{", "after " + keyword.text);
+    for (int depth = 1; depth > 0;) {
+        const PovToken t = parser_.next();
+        if (t.kind == PovTokenKind::end)
+            throw parser_.error_at(keyword, keyword.text + " { is not closed by }");
+        depth += t.is_symbol("{") ? 1 : t.is_symbol("}") ? -1 : 0;
+    }
+}
+
+void PovItemReader::skip_normal(const PovToken& keyword) {
+    skip_block(keyword);
+    if (!warned_normal_)
+        warnings_.push_back(
+            "normal { } (bumps, dents, ripples, ...) is read past: glint does not "
+            "perturb POV-Ray's normals yet, surfaces are smooth");
+    warned_normal_ = true;
+}
+
+void PovItemReader::read_default(const PovToken& directive) {
+    parser_.expect("{", "after #default");
+    PovTexture t = *default_texture_;
+    for (PovToken token = parser_.next(); !token.is_symbol("}"); token = parser_.next()) {
+        if (token.is_word("texture"))
+            t = texture(t);
+        else if (token.is_word("pigment"))
+            t.pigment = pigment(t.pigment);
+        else if (token.is_word("finish"))
+            t.finish = finish(t.finish);
+        else if (token.is_word("normal"))
+            skip_normal(token);
+        else if (token.kind == PovTokenKind::end)
+            throw parser_.error_at(directive, "#default { is not closed by }");
+        else
+            throw unsupported(token, "in #default");
+    }
+    default_texture_ = std::make_shared<const PovTexture>(t);
+}
+
 std::optional<PovItem> PovItemReader::read(const PovToken& keyword) {
     const std::string& w = keyword.text;
+    if (keyword.kind == PovTokenKind::directive && w == "default") {
+        read_default(keyword);
+        return PovUnread{"#default", keyword.at};
+    }
+    if (w == "color_map" || w == "colour_map" || w == "pigment_map" || w == "normal_map" ||
+        w == "texture_map" || w == "slope_map" || w == "density_map" || w == "material_map") {
+        skip_block(keyword);
+        return PovUnread{w, keyword.at};
+    }
+    if (w == "normal") {
+        skip_normal(keyword);
+        return PovUnread{w, keyword.at};
+    }
+    if (w == "function") {
+        // function [(parameters)] { ... }: not read yet, an error where it is used.
+        if (parser_.accept("(")) {
+            while (!parser_.next().is_symbol(")")) {
+            }
+        }
+        skip_block(keyword);
+        return PovUnread{w, keyword.at};
+    }
     if (starts_object(w)) return object(keyword);
-    if (w == "texture") return texture({});
+    if (w == "texture") {
+        PovTexture bottom = texture({});
+        // Layers over it (`texture { } texture { }`): the bottom one is kept. A lookahead past
+        // a complete value: a directive after it must not run before the value is declared.
+        while (parser_.peek().is_word("texture")) {
+            parser_.next();
+            texture({});
+            if (!warned_layers_)
+                warnings_.push_back("layered textures: only each object's bottom layer is used");
+            warned_layers_ = true;
+        }
+        return bottom;
+    }
     if (w == "pigment") return pigment({});
     if (w == "finish") return finish({});
     if (w == "interior") return interior({});
@@ -99,7 +197,8 @@ std::optional<Transform> PovItemReader::transform_step(const PovToken& keyword) 
     }
     if (w == "scale") {
         const PovVector s = parser_.finite_vector("after scale");
-        if (s[0] == 0 || s[1] == 0 || s[2] == 0)
+        // As floats: a factor too small for one is zero too.
+        if (float(s[0]) == 0 || float(s[1]) == 0 || float(s[2]) == 0)
             throw parser_.error_at(
                 keyword, "scale by zero flattens the object: every factor must be non-zero");
         return Transform::scale(float(s[0]), float(s[1]), float(s[2]));
@@ -129,6 +228,12 @@ std::optional<Transform> PovItemReader::transform_step(const PovToken& keyword) 
 
 PovObject PovItemReader::object(const PovToken& keyword) {
     const PovParser::Nested nested(parser_, keyword);
+    if (is_unread_object(keyword.text)) {
+        skip_block(keyword);
+        PovObject unread;
+        unread.unread = std::make_shared<const PovUnread>(PovUnread{keyword.text, keyword.at});
+        return unread;
+    }
     parser_.expect("{", "after " + keyword.text);
     PovObject object;
     if (keyword.text == "object") {
@@ -146,6 +251,7 @@ PovObject PovItemReader::object(const PovToken& keyword) {
         object.shape = shape(keyword);
     }
     modifiers(object);
+    object.fallback = default_texture_;
     return object;
 }
 
@@ -231,9 +337,9 @@ Shape PovItemReader::shape(const PovToken& keyword) {
         return TriangleMesh{built.mesh};
     }
     if (w == "polygon") {
-        const float count = number("as the polygon's number of points");
+        const int count = parser_.whole_number("as the polygon's number of points", 3, 1'000'000);
         std::vector<Point3> points;
-        for (int i = 0; i < int(count); ++i) {
+        for (int i = 0; i < count; ++i) {
             parser_.expect(",", "between the polygon's points");
             const PovVector p = parser_.finite_vector("as a polygon point", 2);
             points.push_back({float(p[0]), float(p[1]), float(p.size > 2 ? p[2] : 0)});
@@ -315,7 +421,10 @@ void PovItemReader::csg(const PovToken& keyword, PovObject& object) {
 }
 
 void PovItemReader::modifiers(PovObject& object) {
+    bool last_was_texture = false;
     for (;;) {
+        const bool layered = last_was_texture;
+        last_was_texture = parser_.peek_item().is_word("texture");
         const PovToken token = parser_.next();
         if (token.is_symbol("}")) return;
         if (token.kind != PovTokenKind::identifier) {
@@ -330,6 +439,12 @@ void PovItemReader::modifiers(PovObject& object) {
                 moved.pigment.transform = *step * moved.pigment.transform;
                 object.texture = std::make_shared<const PovTexture>(moved);
             }
+        } else if (w == "texture" && layered) {
+            // A layer over the texture just given: the bottom layer is kept.
+            texture(PovTexture{});
+            if (!warned_layers_)
+                warnings_.push_back("layered textures: only each object's bottom layer is used");
+            warned_layers_ = true;
         } else if (w == "texture") {
             object.texture = std::make_shared<const PovTexture>(
                 texture(object.texture ? *object.texture : PovTexture{}));
@@ -344,11 +459,12 @@ void PovItemReader::modifiers(PovObject& object) {
         } else if (w == "interior") {
             object.interior = std::make_shared<const PovInterior>(
                 interior(object.interior ? *object.interior : PovInterior{}));
+        } else if (w == "normal") {
+            skip_normal(token);
         } else if (w == "no_shadow") {
             object.no_shadow = true;
         } else if (w == "hollow") {
-            object.hollow = true;
-            parser_.accept_word("on");
+            object.hollow = optional_amount() != 0;
         } else if (w == "bounded_by") {
             // Only a hint for POV-Ray's own bounding: the object is read and dropped.
             parser_.expect("{", "after bounded_by");
@@ -385,6 +501,8 @@ PovTexture PovItemReader::texture(const PovTexture& base) {
             t.pigment = pigment(t.pigment);
         else if (token.is_word("finish"))
             t.finish = finish(t.finish);
+        else if (token.is_word("normal"))
+            skip_normal(token);
         else if (const auto step = transform_step(token))
             t.pigment.transform = *step * t.pigment.transform;
         else
@@ -418,7 +536,19 @@ PovPigment PovItemReader::pigment(const PovPigment& base) {
                  first.is_word("rgbf") || first.is_word("rgbt") || first.is_word("rgbft") ||
                  first.is_word("red") || first.is_word("green") || first.is_word("blue") ||
                  first.is_word("srgb") || parser_.symbols().find(first.text))) {
-        throw unsupported(parser_.next(), "as a pigment");
+        // A pattern glint does not read yet: only an object that uses it stops the scene.
+        const PovToken pattern = parser_.next();
+        p = PovPigment{};
+        p.kind = PovPigment::Kind::unsupported;
+        p.pattern = pattern.text;
+        p.at = pattern.at;
+        for (int depth = 1; depth > 0;) {
+            const PovToken t = parser_.next();
+            if (t.kind == PovTokenKind::end)
+                throw parser_.error_at(pattern, "pigment { is not closed by }");
+            depth += t.is_symbol("{") ? 1 : t.is_symbol("}") ? -1 : 0;
+        }
+        return p;
     } else if (!first.is_symbol("}")) {
         p.kind = PovPigment::Kind::color;
         p.color = parser_.color_expression("as the pigment's colour");
@@ -464,7 +594,7 @@ PovFinish PovItemReader::finish(const PovFinish& base) {
         else if (w == "roughness")
             f.roughness = parser_.finite_float("after roughness");
         else if (w == "metallic")
-            f.metallic = true, parser_.accept_word("on");
+            f.metallic = optional_amount() != 0;
         else if (w == "crand")
             parser_.finite_float("after crand");
         else if (w == "reflection") {
@@ -474,9 +604,9 @@ PovFinish PovItemReader::finish(const PovFinish& base) {
                 if (parser_.accept(",")) f.reflection = amount("in reflection");
                 for (PovToken r = parser_.next(); !r.is_symbol("}"); r = parser_.next()) {
                     if (r.is_word("fresnel"))
-                        f.fresnel = true, parser_.accept_word("on");
+                        f.fresnel = optional_amount() != 0;
                     else if (r.is_word("metallic"))
-                        f.metallic = true, parser_.accept_word("on");
+                        f.metallic = optional_amount() != 0;
                     else if (r.is_word("falloff") || r.is_word("exponent"))
                         parser_.finite_float("in reflection");
                     else

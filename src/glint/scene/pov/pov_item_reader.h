@@ -20,6 +20,8 @@ public:
     // The item that `keyword` starts, or nothing when it starts none.
     std::optional<PovItem> read(const PovToken& keyword);
     static bool starts_object(const std::string& keyword);
+    // What #default set: the texture of objects that give none.
+    const std::shared_ptr<const PovTexture>& default_texture() const { return default_texture_; }
 
     PovObject object(const PovToken& keyword);
     PovTexture texture(const PovTexture& base);
@@ -49,9 +51,19 @@ private:
     PovVector point(std::string_view what) { return parser_.finite_vector(what, 3); }
     float number(std::string_view what) { return float(parser_.finite_float(what)); }
     SceneError unsupported(const PovToken& token, std::string_view where);
+    // The float after a keyword that may take one (`metallic 0.5`, `hollow off`), else 1.
+    double optional_amount();
+    // Reads past a { ... } block, whose opening brace is next.
+    void skip_block(const PovToken& keyword);
+    // normal { ... }: read past, with a warning the first time.
+    void skip_normal(const PovToken& keyword);
+    void read_default(const PovToken& directive);
 
     PovParser& parser_;
     std::vector<std::string>& warnings_;
+    std::shared_ptr<const PovTexture> default_texture_ = std::make_shared<const PovTexture>();
+    bool warned_normal_ = false;
+    bool warned_layers_ = false;
 };
 
 Point3 to_point(const PovVector& v);

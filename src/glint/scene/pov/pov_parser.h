@@ -71,6 +71,8 @@ public:
     PovVector color_expression(std::string_view what);  // a 5-vector: r, g, b, filter, transmit
     // As above, and an error unless every component is finite: what a scene's items take.
     double finite_float(std::string_view what);
+    // A finite float that is a whole number in [min, max] (counts, levels).
+    int whole_number(std::string_view what, int min, int max);
     // <a, b, ...> of exactly `count` finite numbers (a matrix's twelve).
     std::vector<double> finite_list(std::string_view what, std::size_t count);
     PovVector finite_vector(std::string_view what, int size = 3);

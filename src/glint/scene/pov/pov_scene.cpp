@@ -47,13 +47,9 @@ PovVector axis(int i) {
     return v;
 }
 
-// POV-Ray's scene items that glint does not read yet, so that their error says so.
+// POV-Ray's scene items, besides objects, that glint does not read yet: their error says so.
 bool not_read_yet(const PovToken& token) {
-    static const std::string_view kNotYet[] = {
-        "bicubic_patch", "blob",       "cubic",      "fog",          "height_field",   "isosurface",
-        "julia_fractal", "lathe",      "lemon",      "media",        "mesh2",          "ovus",
-        "parametric",    "poly",       "polynomial", "prism",        "quadric",        "quartic",
-        "rainbow",       "sky_sphere", "sor",        "sphere_sweep", "superellipsoid", "text"};
+    static const std::string_view kNotYet[] = {"fog", "media", "photons", "rainbow", "sky_sphere"};
     return token.kind == PovTokenKind::identifier &&
            std::find(std::begin(kNotYet), std::end(kNotYet), token.text) != std::end(kNotYet);
 }
@@ -155,7 +151,7 @@ private:
                 aperture = parser_.finite_float("after aperture");
             else if (w == "blur_samples") {
                 scene_.settings.samples_per_pixel =
-                    std::max(1, int(parser_.finite_float("after blur_samples")));
+                    parser_.whole_number("after blur_samples", 1, 1 << 16);
                 if (parser_.accept(",")) parser_.finite_float("after blur_samples");
             } else if (w == "confidence" || w == "variance")
                 parser_.finite_float("after " + w);
@@ -243,9 +239,9 @@ private:
                 parser_.expect(",", "after the area light's first axis");
                 area_v = parser_.finite_vector("as the area light's second axis");
                 parser_.expect(",", "after the area light's second axis");
-                n1 = std::max(1, int(parser_.finite_float("as the area light's first count")));
+                n1 = parser_.whole_number("as the area light's first count", 1, 64);
                 parser_.expect(",", "after the area light's first count");
-                n2 = std::max(1, int(parser_.finite_float("as the area light's second count")));
+                n2 = parser_.whole_number("as the area light's second count", 1, 64);
             } else if (w == "adaptive")
                 parser_.finite_float("after adaptive");
             else if (w == "jitter" || w == "orient") {
@@ -329,8 +325,7 @@ private:
             if (w == "ambient_light")
                 scene_.ambient = rgb(parser_.color_expression("after ambient_light"));
             else if (w == "max_trace_level")
-                scene_.settings.max_depth =
-                    std::clamp(int(parser_.finite_float("after max_trace_level")), 1, 256);
+                scene_.settings.max_depth = parser_.whole_number("after max_trace_level", 1, 256);
             else if (w == "adc_bailout")
                 scene_.settings.min_weight = float(parser_.finite_float("after adc_bailout"));
             else if (w == "assumed_gamma")
@@ -349,6 +344,14 @@ private:
         }
     }
 
+    // An object read past (as include files declare many): using it stops the scene here.
+    void refuse_unread(const PovObject& object) const {
+        if (object.unread)
+            throw files_.error_at(object.unread->at,
+                                  "POV-Ray's " + object.unread->what + " is not supported yet",
+                                  {"docs/povray.md lists what glint reads"});
+    }
+
     void skip_block(const PovToken& keyword) {
         parser_.expect("{", "after " + keyword.text);
         for (int depth = 1; depth > 0;) {
@@ -361,14 +364,17 @@ private:
 
     std::uint32_t material(const std::shared_ptr<const PovTexture>& texture,
                            const std::shared_ptr<const PovInterior>& interior) {
-        const auto key = std::make_pair(texture.get(), interior.get());
+        const auto key = std::make_pair(texture, interior);
         if (const auto found = materials_.find(key); found != materials_.end())
             return found->second;
-        static const PovTexture kDefault;
-        const PovTexture& t = texture ? *texture : kDefault;
+        const PovTexture& t = *texture;
         Material m;
         m.name = "pov" + std::to_string(scene_.materials.size());
         const PovPigment& p = t.pigment;
+        if (p.kind == PovPigment::Kind::unsupported)
+            throw files_.error_at(p.at,
+                                  "pigment pattern " + quote(p.pattern) + " is not supported yet",
+                                  {"docs/povray.md lists what glint reads"});
         if (p.kind == PovPigment::Kind::checker) {
             CheckerTexture checker;
             checker.even = rgb(p.color);
@@ -403,6 +409,7 @@ private:
     // The object's shape as one glint shape (a CSG of its children, each placed), or nothing for
     // a group, whose children are objects of their own.
     Shape placed_shape(const PovObject& object) {
+        refuse_unread(object);
         Shape shape;
         if (object.shape) {
             shape = *object.shape;
@@ -428,7 +435,9 @@ private:
     void add(const PovObject& object, const Transform& parent,
              std::shared_ptr<const PovTexture> texture, std::shared_ptr<const PovInterior> interior,
              bool no_shadow) {
+        refuse_unread(object);
         if (object.texture) texture = object.texture;
+        if (!texture) texture = object.fallback;
         if (object.interior) interior = object.interior;
         no_shadow = no_shadow || object.no_shadow;
         const Transform placement = parent * object.transform;
@@ -451,7 +460,11 @@ private:
     Scene scene_;
     PovParser parser_;
     PovItemReader items_;
-    std::map<std::pair<const void*, const void*>, std::uint32_t> materials_;
+    // By the texture and interior themselves, held so that a freed one's address is never
+    // taken for a new one's.
+    std::map<std::pair<std::shared_ptr<const PovTexture>, std::shared_ptr<const PovInterior>>,
+             std::uint32_t>
+        materials_;
     bool any_area_light_ = false;
 };
 
