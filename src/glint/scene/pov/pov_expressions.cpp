@@ -80,7 +80,18 @@ bool fits_float(double value) {
 PovVector PovParser::color_expression(std::string_view what) {
     const PovToken at = peek();
     if (at.is_word("color") || at.is_word("colour")) next();
-    const PovVector v = vector_of(expression(), at, what, 5);
+    PovVector v = vector_of(expression(), at, what, 5);
+    v.size = 5;
+    // A declared colour may take POV-Ray's colour keywords after it: `Red transmit 0.5`.
+    for (;;) {
+        const PovToken& more = peek();
+        const int index = more.kind == PovTokenKind::identifier ? member_index(more.text) : -1;
+        if (index < 0 || more.is_word("x") || more.is_word("y") || more.is_word("z") ||
+            more.is_word("t") || more.is_word("u") || more.is_word("v"))
+            break;
+        const PovToken keyword = next();
+        v[index] = float_of(additive(), keyword, "after " + keyword.text);
+    }
     for (int i = 0; i < 5; ++i)
         if (!fits_float(v[i]))
             throw error_at(at, "colour " + std::string(what) + " must be finite");

@@ -131,7 +131,8 @@ std::optional<PovItem> PovItemReader::read(const PovToken& keyword) {
         return PovUnread{"#default", keyword.at};
     }
     if (w == "color_map" || w == "colour_map" || w == "pigment_map" || w == "normal_map" ||
-        w == "texture_map" || w == "slope_map" || w == "density_map" || w == "material_map") {
+        w == "texture_map" || w == "slope_map" || w == "density_map" || w == "material_map" ||
+        w == "material" || w == "media" || w == "density") {
         skip_block(keyword);
         return PovUnread{w, keyword.at};
     }
@@ -556,10 +557,23 @@ PovPigment PovItemReader::pigment(const PovPigment& base) {
     for (;;) {
         const PovToken token = parser_.next();
         if (token.is_symbol("}")) return p;
-        if (const auto step = transform_step(token))
+        if (const auto step = transform_step(token)) {
             p.transform = *step * p.transform;
-        else
-            throw unsupported(token, "in a pigment");
+            continue;
+        }
+        // A pattern's modifier (color_map, turbulence, ...): the pigment is one glint does not
+        // read yet, an error only where an object uses it.
+        PovPigment unread;
+        unread.kind = PovPigment::Kind::unsupported;
+        unread.pattern = token.text;
+        unread.at = token.at;
+        for (int depth = 1; depth > 0;) {
+            const PovToken t = parser_.next();
+            if (t.kind == PovTokenKind::end)
+                throw parser_.error_at(token, "pigment { is not closed by }");
+            depth += t.is_symbol("{") ? 1 : t.is_symbol("}") ? -1 : 0;
+        }
+        return unread;
     }
 }
 
@@ -597,6 +611,11 @@ PovFinish PovItemReader::finish(const PovFinish& base) {
             f.metallic = optional_amount() != 0;
         else if (w == "crand")
             parser_.finite_float("after crand");
+        else if (w == "conserve_energy")
+            optional_amount();  // read; glint's reflection adds to the diffuse as POV-Ray's without
+                                // it
+        else if (w == "emission")
+            f.emission = amount("after emission");
         else if (w == "reflection") {
             if (parser_.accept("{")) {
                 // reflection { [min,] max [fresnel] [metallic] [falloff F] [exponent E] }
@@ -635,6 +654,13 @@ PovInterior PovItemReader::interior(const PovInterior& base) {
             in.ior = parser_.finite_float("after ior");
         else if (token.is_word("dispersion"))
             in.dispersion = parser_.finite_float("after dispersion");
+        else if (token.is_word("fade_distance") || token.is_word("fade_power") ||
+                 token.is_word("caustics") || token.is_word("dispersion_samples"))
+            parser_.finite_float("in an interior");  // read; the absorption is not rendered yet
+        else if (token.is_word("fade_color") || token.is_word("fade_colour"))
+            parser_.color_expression("in an interior");
+        else if (token.is_word("media"))
+            skip_block(token);
         else
             throw unsupported(token, "in an interior");
     }

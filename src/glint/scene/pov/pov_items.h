@@ -24,6 +24,7 @@ struct PovFinish {
     double phong = 0, phong_size = 40;
     double specular = 0, roughness = 0.05;
     double reflection = 0;
+    double emission = 0;   // the pigment's colour given off, unlit
     bool fresnel = false;  // reflection { ... fresnel }
     bool metallic = false;
 };

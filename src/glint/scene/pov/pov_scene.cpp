@@ -398,6 +398,8 @@ private:
             m.ks = 0;
         }
         m.reflect = float(std::clamp(f.reflection, 0.0, 1.0));
+        if (f.emission > 0 && p.kind == PovPigment::Kind::color)
+            m.emission = rgb(p.color) * float(f.emission);
         m.transmit = float(std::clamp(p.color[3] + p.color[4], 0.0, 1.0));
         if (interior) m.ior = float(interior->ior);
         scene_.materials.push_back(std::move(m));
