@@ -149,6 +149,20 @@ bool PovParser::accept_word(std::string_view word) {
     return true;
 }
 
+void PovParser::skip_braced(const PovToken& keyword) {
+    expect("{", "after " + keyword.text);
+    skip_to_closing_brace(keyword);
+}
+
+void PovParser::skip_to_closing_brace(const PovToken& opened) {
+    for (int depth = 1; depth > 0;) {
+        const PovToken t = next();
+        if (t.kind == PovTokenKind::end)
+            throw error_at(opened, opened.text + " { is not closed by }");
+        depth += t.is_symbol("{") ? 1 : t.is_symbol("}") ? -1 : 0;
+    }
+}
+
 void PovParser::call_macro(const PovToken& name, const Macro& macro) {
     // Arguments are read before the body starts: in the caller's scope.
     expect("(", "after the macro name " + quote(name.text));

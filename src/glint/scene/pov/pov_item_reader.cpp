@@ -13,7 +13,7 @@ namespace {
 
 constexpr const char* kSeeCompatibility = "docs/povray.md lists what glint reads";
 
-bool is_solid_shape(const std::string& keyword) {
+bool is_shape(const std::string& keyword) {
     return keyword == "sphere" || keyword == "box" || keyword == "plane" || keyword == "cylinder" ||
            keyword == "cone" || keyword == "torus" || keyword == "disc" || keyword == "triangle" ||
            keyword == "smooth_triangle" || keyword == "polygon" || keyword == "mesh";
@@ -51,8 +51,7 @@ PovItemReader::PovItemReader(PovParser& parser, std::vector<std::string>& warnin
     : parser_(parser), warnings_(warnings) {}
 
 bool PovItemReader::starts_object(const std::string& keyword) {
-    return is_solid_shape(keyword) || is_csg(keyword) || is_unread_object(keyword) ||
-           keyword == "object";
+    return is_shape(keyword) || is_csg(keyword) || is_unread_object(keyword) || keyword == "object";
 }
 
 SceneError PovItemReader::unsupported(const PovToken& token, std::string_view where) {
@@ -85,18 +84,8 @@ double PovItemReader::optional_amount() {
     return given ? parser_.finite_float("after the keyword") : 1;
 }
 
-void PovItemReader::skip_block(const PovToken& keyword) {
-    parser_.expect("{", "after " + keyword.text);
-    for (int depth = 1; depth > 0;) {
-        const PovToken t = parser_.next();
-        if (t.kind == PovTokenKind::end)
-            throw parser_.error_at(keyword, keyword.text + " { is not closed by }");
-        depth += t.is_symbol("{") ? 1 : t.is_symbol("}") ? -1 : 0;
-    }
-}
-
 void PovItemReader::skip_normal(const PovToken& keyword) {
-    skip_block(keyword);
+    parser_.skip_braced(keyword);
     if (!warned_normal_)
         warnings_.push_back(
             "normal { } (bumps, dents, ripples, ...) is read past: glint does not "
@@ -133,7 +122,7 @@ std::optional<PovItem> PovItemReader::read(const PovToken& keyword) {
     if (w == "color_map" || w == "colour_map" || w == "pigment_map" || w == "normal_map" ||
         w == "texture_map" || w == "slope_map" || w == "density_map" || w == "material_map" ||
         w == "material" || w == "media" || w == "density") {
-        skip_block(keyword);
+        parser_.skip_braced(keyword);
         return PovUnread{w, keyword.at};
     }
     if (w == "normal") {
@@ -146,7 +135,7 @@ std::optional<PovItem> PovItemReader::read(const PovToken& keyword) {
             while (!parser_.next().is_symbol(")")) {
             }
         }
-        skip_block(keyword);
+        parser_.skip_braced(keyword);
         return PovUnread{w, keyword.at};
     }
     if (starts_object(w)) return object(keyword);
@@ -230,7 +219,7 @@ std::optional<Transform> PovItemReader::transform_step(const PovToken& keyword) 
 PovObject PovItemReader::object(const PovToken& keyword) {
     const PovParser::Nested nested(parser_, keyword);
     if (is_unread_object(keyword.text)) {
-        skip_block(keyword);
+        parser_.skip_braced(keyword);
         PovObject unread;
         unread.unread = std::make_shared<const PovUnread>(PovUnread{keyword.text, keyword.at});
         return unread;
@@ -468,20 +457,7 @@ void PovItemReader::modifiers(PovObject& object) {
             object.hollow = optional_amount() != 0;
         } else if (w == "bounded_by") {
             // Only a hint for POV-Ray's own bounding: the object is read and dropped.
-            parser_.expect("{", "after bounded_by");
-            for (PovToken t = parser_.next(); !t.is_symbol("}"); t = parser_.next()) {
-                if (t.kind == PovTokenKind::end)
-                    throw parser_.error_at(token, "bounded_by is not closed");
-                if (t.is_symbol("{")) {
-                    int depth = 1;
-                    while (depth > 0) {
-                        const PovToken inner = parser_.next();
-                        if (inner.kind == PovTokenKind::end)
-                            throw parser_.error_at(token, "bounded_by is not closed");
-                        depth += inner.is_symbol("{") ? 1 : inner.is_symbol("}") ? -1 : 0;
-                    }
-                }
-            }
+            parser_.skip_braced(token);
         } else {
             throw unsupported(token, "as an object modifier");
         }
@@ -543,12 +519,7 @@ PovPigment PovItemReader::pigment(const PovPigment& base) {
         p.kind = PovPigment::Kind::unsupported;
         p.pattern = pattern.text;
         p.at = pattern.at;
-        for (int depth = 1; depth > 0;) {
-            const PovToken t = parser_.next();
-            if (t.kind == PovTokenKind::end)
-                throw parser_.error_at(pattern, "pigment { is not closed by }");
-            depth += t.is_symbol("{") ? 1 : t.is_symbol("}") ? -1 : 0;
-        }
+        parser_.skip_to_closing_brace(pattern);
         return p;
     } else if (!first.is_symbol("}")) {
         p.kind = PovPigment::Kind::color;
@@ -567,12 +538,7 @@ PovPigment PovItemReader::pigment(const PovPigment& base) {
         unread.kind = PovPigment::Kind::unsupported;
         unread.pattern = token.text;
         unread.at = token.at;
-        for (int depth = 1; depth > 0;) {
-            const PovToken t = parser_.next();
-            if (t.kind == PovTokenKind::end)
-                throw parser_.error_at(token, "pigment { is not closed by }");
-            depth += t.is_symbol("{") ? 1 : t.is_symbol("}") ? -1 : 0;
-        }
+        parser_.skip_to_closing_brace(token);
         return unread;
     }
 }
@@ -660,7 +626,7 @@ PovInterior PovItemReader::interior(const PovInterior& base) {
         else if (token.is_word("fade_color") || token.is_word("fade_colour"))
             parser_.color_expression("in an interior");
         else if (token.is_word("media"))
-            skip_block(token);
+            parser_.skip_braced(token);
         else
             throw unsupported(token, "in an interior");
     }

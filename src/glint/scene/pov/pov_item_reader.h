@@ -31,6 +31,8 @@ public:
     // translate, rotate, scale, matrix or transform, whose keyword has been read; nothing for
     // another word.
     std::optional<Transform> transform_step(const PovToken& keyword);
+    // The float after a keyword that may take one (`metallic 0.5`, `hollow off`), else 1.
+    double optional_amount();
 
 private:
     Shape shape(const PovToken& keyword);
@@ -51,10 +53,6 @@ private:
     PovVector point(std::string_view what) { return parser_.finite_vector(what, 3); }
     float number(std::string_view what) { return float(parser_.finite_float(what)); }
     SceneError unsupported(const PovToken& token, std::string_view where);
-    // The float after a keyword that may take one (`metallic 0.5`, `hollow off`), else 1.
-    double optional_amount();
-    // Reads past a { ... } block, whose opening brace is next.
-    void skip_block(const PovToken& keyword);
     // normal { ... }: read past, with a warning the first time.
     void skip_normal(const PovToken& keyword);
     void read_default(const PovToken& directive);

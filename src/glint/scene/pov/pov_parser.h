@@ -62,6 +62,10 @@ public:
     void expect(std::string_view symbol, std::string_view what);
     bool accept(std::string_view symbol);  // consumes the symbol if it is next
     bool accept_word(std::string_view word);
+    // Reads past the block `{ ... }` after `keyword` (its opening brace is next).
+    void skip_braced(const PovToken& keyword);
+    // Reads to the '}' that closes a block whose '{' has been read; `opened` names it in errors.
+    void skip_to_closing_brace(const PovToken& opened);
 
     // --- Values ---
     PovValue expression();

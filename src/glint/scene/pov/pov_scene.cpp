@@ -256,7 +256,7 @@ private:
                                           std::to_string(keyword.at.line) +
                                           ": shadowless light_source casts shadows in glint");
             } else if (w == "media_interaction" || w == "media_attenuation")
-                parser_.accept_word("off") || parser_.accept_word("on");
+                items_.optional_amount();  // POV-Ray's media only
             else if (const auto step = items_.transform_step(t))
                 placed = *step * placed;
             else
@@ -335,7 +335,7 @@ private:
             else if (w == "charset")
                 parser_.next();
             else if (w == "radiosity" || w == "photons" || w == "subsurface") {
-                skip_block(t);
+                parser_.skip_braced(t);
                 scene_.warnings.push_back("global_settings " + w +
                                           " { } is ignored: glint renders without it");
             } else
@@ -350,16 +350,6 @@ private:
             throw files_.error_at(object.unread->at,
                                   "POV-Ray's " + object.unread->what + " is not supported yet",
                                   {"docs/povray.md lists what glint reads"});
-    }
-
-    void skip_block(const PovToken& keyword) {
-        parser_.expect("{", "after " + keyword.text);
-        for (int depth = 1; depth > 0;) {
-            const PovToken t = parser_.next();
-            if (t.kind == PovTokenKind::end)
-                throw parser_.error_at(keyword, keyword.text + " { is not closed");
-            depth += t.is_symbol("{") ? 1 : t.is_symbol("}") ? -1 : 0;
-        }
     }
 
     std::uint32_t material(const std::shared_ptr<const PovTexture>& texture,
