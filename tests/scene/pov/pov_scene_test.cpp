@@ -51,6 +51,7 @@ TEST(PovScene, AngleIsHorizontalAndLookAtTurnsTheView) {
 
 TEST(PovScene, LightsBackgroundAndGlobalSettings) {
     const Scene s = parse(R"(
+        #version 3.7;
         light_source { <1, 2, 3> color rgb <1, 0.5, 0.25> }
         light_source { <0, 10, 0> color 1 spotlight point_at <0, 0, 0> radius 10 falloff 20 }
         light_source { <0, 10, 0> color 1 parallel point_at <0, 0, 0> }
@@ -183,12 +184,73 @@ TEST(PovScene, DeprecatedDeclarationsAndMetallicAmounts) {
 
 // Textures made and dropped one after another must never share a material.
 TEST(PovScene, EachObjectsOwnTextureIsItsOwnMaterial) {
-    const Scene s =
-        parse("#for (I, 1, 50) sphere { x * I, 0.5 pigment { rgb <I / 50, 0, 0> } } #end");
+    const Scene s = parse(
+        "#version 3.7; #for (I, 1, 50) sphere { x * I, 0.5 pigment { rgb <I / 50, 0, 0> } } #end");
     ASSERT_EQ(s.objects.size(), 50u);
     for (std::size_t i = 0; i < 50; ++i)
         EXPECT_FLOAT_EQ(std::get<Color>(s.materials[s.objects[i].material].color).r,
                         float(i + 1) / 50);
+}
+
+// A scene's colours are decoded with its assumed_gamma; one older than POV-Ray 3.7 without one
+// is read as 2.2-encoded, a 3.7 one as linear.
+TEST(PovScene, ColoursAreDecodedWithTheAssumedGamma) {
+    const auto red = [](const std::string& text) {
+        const Scene s = parse(text + " sphere { 0, 1 pigment { rgb <0.5, 0, 0> } }");
+        return std::get<Color>(s.materials[s.objects[0].material].color).r;
+    };
+    EXPECT_FLOAT_EQ(red("#version 3.7;"), 0.5f);
+    EXPECT_FLOAT_EQ(red("#version 3.7; global_settings { assumed_gamma 2 }"), 0.25f);
+    EXPECT_FLOAT_EQ(red(""), std::pow(0.5f, 2.2f));
+    EXPECT_FLOAT_EQ(red("#version 3.6;"), std::pow(0.5f, 2.2f));
+    EXPECT_FLOAT_EQ(red("global_settings { assumed_gamma 1.0 }"), 0.5f);
+    const Scene lit = parse("light_source { 0 rgb 0.5 } background { rgb 0.5 }");
+    EXPECT_FLOAT_EQ(std::get<PointLight>(lit.lights[0]).color.g, std::pow(0.5f, 2.2f));
+    EXPECT_FLOAT_EQ(lit.settings.background.b, std::pow(0.5f, 2.2f));
+    EXPECT_EQ(error_of("global_settings { assumed_gamma 0 }"),
+              "scene.pov:1:33: error: assumed_gamma must be in (0, 10]\n"
+              "    1 | global_settings { assumed_gamma 0 }\n"
+              "      |                                 ^\n");
+}
+
+TEST(PovScene, CamerasAndLightsCanBeDeclaredAndPlacedAsObjects) {
+    const Scene s = parse(R"(
+        #version 3.7;
+        #declare Cam = camera { location <0, 0, -5> look_at 0 }
+        #declare Lamp = light_source { <0, 0, 0> color rgb 1 }
+        camera { Cam translate <1, 0, 0> }
+        object { Lamp translate <0, 4, 0> }
+        light_source { Lamp translate <0, 0, 2> }
+        union {
+            light_source { <1, 0, 0> rgb 1 looks_like { sphere { 0, 0.1 } } }
+            sphere { 0, 1 }
+            translate <0, 0, 3>
+        }
+        difference { box { -1, 1 } sphere { 0, 1.2 } light_source { <0, 2, 0> rgb 1 } })");
+    EXPECT_EQ(s.camera.from, (Point3{1, 0, -5}));
+    EXPECT_EQ(s.camera.at, (Point3{1, 0, -4}));
+    ASSERT_EQ(s.lights.size(), 4u);
+    EXPECT_EQ(std::get<PointLight>(s.lights[0]).position, (Point3{0, 4, 0}));
+    EXPECT_EQ(std::get<PointLight>(s.lights[1]).position, (Point3{0, 0, 2}));
+    EXPECT_EQ(std::get<PointLight>(s.lights[2]).position, (Point3{1, 0, 3}));
+    EXPECT_EQ(std::get<PointLight>(s.lights[3]).position, (Point3{0, 2, 0}));
+    // The looks_like sphere at the light casts no shadow; the union's sphere and the CSG.
+    ASSERT_EQ(s.objects.size(), 3u);
+    EXPECT_FALSE(s.objects[0].casts_shadow);
+    EXPECT_TRUE(std::holds_alternative<Csg>(s.objects[2].shape));
+}
+
+TEST(PovScene, CommasBetweenValuesMayBeLeftOut) {
+    const Scene s = parse(R"(
+        #version 3.7;
+        box { <0, 0, 0> <1, 2, 3> }
+        cylinder { <0, 0, 0> <0, 1, 0> 0.5 }
+        object { sphere { <0, 0, 0> 1 } pigment { checker rgb 1 rgb 0 } })");
+    ASSERT_EQ(s.objects.size(), 3u);
+    EXPECT_EQ(std::get<Box>(s.objects[0].shape).max, (Point3{1, 2, 3}));
+    const auto& checker = std::get<CheckerTexture>(s.materials[s.objects[2].material].color);
+    EXPECT_EQ(checker.even, (Color{1, 1, 1}));
+    EXPECT_EQ(checker.odd, (Color{0, 0, 0}));
 }
 
 TEST(PovScene, LayeredTexturesKeepTheBottomLayer) {

@@ -79,7 +79,9 @@ void PovParser::directive(const PovToken& token) {
     if (word == "macro") return macro_definition(token);
     if (word == "include") return include(token);
     if (word == "version") {
-        symbols_.declare("version", float_expression("after #version"));
+        const double version = float_expression("after #version");
+        symbols_.declare("version", version);
+        if (token.at.file == 0 && !scene_version_) scene_version_ = version;
         accept(";");
         return;
     }

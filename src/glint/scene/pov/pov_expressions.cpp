@@ -192,6 +192,8 @@ PovValue PovParser::comparison() {
         if (!(s == "<" || s == "<=" || s == "=" || s == ">=" || s == "!=" ||
               (s == ">" && !in_vector_)))
             return left;
+        // `box { <0, 0, 0> <1, 1, 1> }`: after a vector, '<' starts the next value.
+        if (s == "<" && !std::holds_alternative<double>(left)) return left;
         const std::string which = next().text;
         const double a = float_of(left, at, "before '" + which + "'");
         const double b = float_of(additive(), at, "after '" + which + "'");
@@ -361,10 +363,11 @@ PovValue PovParser::color_keywords(const PovToken& first) {
         } else {
             color[member_index(w)] = float_of(additive(), keyword, "after " + w);
         }
+        // Single components may follow; another rgb starts the next colour (`checker rgb 1
+        // rgb 0`).
         const PovToken& more = peek();
         if (!(more.is_word("red") || more.is_word("green") || more.is_word("blue") ||
-              more.is_word("filter") || more.is_word("transmit") || more.is_word("rgb") ||
-              more.is_word("rgbf") || more.is_word("rgbt") || more.is_word("rgbft")))
+              more.is_word("filter") || more.is_word("transmit")))
             break;
         keyword = next();
     }

@@ -1,4 +1,5 @@
-// POV-Ray's objects and their modifiers, textures, pigments, finishes and interiors.
+// POV-Ray's objects and their modifiers, textures, pigments, finishes and interiors. As in
+// POV-Ray, the commas between an item's values may be left out: `box { <0, 0, 0> <1, 1, 1> }`.
 #include "glint/scene/pov/pov_item_reader.h"
 
 #include <algorithm>
@@ -51,24 +52,14 @@ PovItemReader::PovItemReader(PovParser& parser, std::vector<std::string>& warnin
     : parser_(parser), warnings_(warnings) {}
 
 bool PovItemReader::starts_object(const std::string& keyword) {
-    return is_shape(keyword) || is_csg(keyword) || is_unread_object(keyword) || keyword == "object";
+    return is_shape(keyword) || is_csg(keyword) || is_unread_object(keyword) ||
+           keyword == "object" || keyword == "light_source";
 }
 
 SceneError PovItemReader::unsupported(const PovToken& token, std::string_view where) {
     return parser_.error_at(token,
                             describe(token) + " is not supported " + std::string(where) + " yet",
                             {kSeeCompatibility});
-}
-
-template <typename Item>
-std::optional<Item> PovItemReader::declared(const PovToken& name) {
-    if (name.kind != PovTokenKind::identifier) return std::nullopt;
-    PovValue* value = parser_.symbols().find(name.text);
-    if (!value) return std::nullopt;
-    const auto* ref = std::get_if<std::shared_ptr<const PovItemRef>>(value);
-    if (!ref) return std::nullopt;
-    if (const Item* item = std::get_if<Item>(&(*ref)->item)) return *item;
-    return std::nullopt;
 }
 
 double PovItemReader::optional_amount() {
@@ -139,6 +130,7 @@ std::optional<PovItem> PovItemReader::read(const PovToken& keyword) {
         return PovUnread{w, keyword.at};
     }
     if (starts_object(w)) return object(keyword);
+    if (w == "camera") return camera(keyword);
     if (w == "texture") {
         PovTexture bottom = texture({});
         // Layers over it (`texture { } texture { }`): the bottom one is kept. A lookahead past
@@ -224,15 +216,24 @@ PovObject PovItemReader::object(const PovToken& keyword) {
         unread.unread = std::make_shared<const PovUnread>(PovUnread{keyword.text, keyword.at});
         return unread;
     }
+    if (keyword.text == "light_source") {
+        PovObject light;
+        light.light = std::make_shared<const PovLight>(light_source(keyword));
+        return light;
+    }
     parser_.expect("{", "after " + keyword.text);
     PovObject object;
     if (keyword.text == "object") {
         const PovToken name = parser_.next();
-        auto base = declared<PovObject>(name);
-        if (!base)
+        if (name.kind == PovTokenKind::identifier && starts_object(name.text) &&
+            !parser_.symbols().find(name.text)) {
+            object = this->object(name);  // object { sphere { ... } ... }
+        } else if (auto base = declared<PovObject>(name)) {
+            object = *base;
+        } else {
             throw parser_.error_at(
-                name, "expected a declared object in object { }, got " + describe(name));
-        object = *base;
+                name, "expected an object or a declared one in object { }, got " + describe(name));
+        }
     } else if (is_csg(keyword.text)) {
         csg(keyword, object);
     } else if (keyword.text == "mesh") {
@@ -242,6 +243,7 @@ PovObject PovItemReader::object(const PovToken& keyword) {
     }
     modifiers(object);
     object.fallback = default_texture_;
+    object.at = keyword.at;
     return object;
 }
 
@@ -249,7 +251,7 @@ Shape PovItemReader::shape(const PovToken& keyword) {
     const std::string& w = keyword.text;
     if (w == "sphere") {
         const Point3 center = to_point(point("as the sphere's centre"));
-        parser_.expect(",", "after the sphere's centre");
+        parser_.accept(",");
         const PovToken at = parser_.peek();
         const float radius = number("as the sphere's radius");
         if (!(radius > 0))
@@ -259,14 +261,14 @@ Shape PovItemReader::shape(const PovToken& keyword) {
     }
     if (w == "box") {
         const Point3 a = to_point(point("as the box's corner"));
-        parser_.expect(",", "between the box's corners");
+        parser_.accept(",");
         const Point3 b = to_point(point("as the box's corner"));
         return Box{{std::min(a.x, b.x), std::min(a.y, b.y), std::min(a.z, b.z)},
                    {std::max(a.x, b.x), std::max(a.y, b.y), std::max(a.z, b.z)}};
     }
     if (w == "plane") {
         const Vector3 n = to_vector(point("as the plane's normal"));
-        parser_.expect(",", "after the plane's normal");
+        parser_.accept(",");
         const float d = number("as the plane's distance");
         if (!(length(n) > 0)) throw parser_.error_at(keyword, "plane normal must not be zero");
         const Vector3 unit = normalize(n);
@@ -274,14 +276,14 @@ Shape PovItemReader::shape(const PovToken& keyword) {
     }
     if (w == "cylinder" || w == "cone") {
         Point3 a = to_point(point("as the end's centre"));
-        parser_.expect(",", "after the end's centre");
+        parser_.accept(",");
         float ra = 0;
         if (w == "cone") {
             ra = number("as the end's radius");
-            parser_.expect(",", "after the end's radius");
+            parser_.accept(",");
         }
         Point3 b = to_point(point("as the other end's centre"));
-        parser_.expect(",", "after the other end's centre");
+        parser_.accept(",");
         float rb = number("as the radius");
         bool open = false;
         // `open` belongs to the shape: it comes before the modifiers.
@@ -298,15 +300,15 @@ Shape PovItemReader::shape(const PovToken& keyword) {
     }
     if (w == "torus") {
         const float major = number("as the torus's major radius");
-        parser_.expect(",", "after the torus's major radius");
+        parser_.accept(",");
         const float minor = number("as the torus's minor radius");
         return checked_shape(parser_, keyword, Torus{{0, 0, 0}, Normal3{0, 1, 0}, major, minor});
     }
     if (w == "disc") {
         const Point3 center = to_point(point("as the disc's centre"));
-        parser_.expect(",", "after the disc's centre");
+        parser_.accept(",");
         const Vector3 n = to_vector(point("as the disc's normal"));
-        parser_.expect(",", "after the disc's normal");
+        parser_.accept(",");
         const float radius = number("as the disc's radius");
         float hole = 0;
         if (parser_.accept(",")) hole = number("as the disc's hole radius");
@@ -330,7 +332,7 @@ Shape PovItemReader::shape(const PovToken& keyword) {
         const int count = parser_.whole_number("as the polygon's number of points", 3, 1'000'000);
         std::vector<Point3> points;
         for (int i = 0; i < count; ++i) {
-            parser_.expect(",", "between the polygon's points");
+            parser_.accept(",");
             const PovVector p = parser_.finite_vector("as a polygon point", 2);
             points.push_back({float(p[0]), float(p[1]), float(p.size > 2 ? p[2] : 0)});
         }
@@ -352,11 +354,11 @@ Shape PovItemReader::shape(const PovToken& keyword) {
 void PovItemReader::triangle(const PovToken& keyword, MeshCorners& corners) {
     const bool smooth = keyword.text == "smooth_triangle";
     for (int i = 0; i < 3; ++i) {
-        if (i > 0) parser_.expect(",", "between the triangle's corners");
+        if (i > 0) parser_.accept(",");
         corners.positions.push_back(to_point(point("as a corner")));
         std::optional<Normal3> normal;
         if (smooth) {
-            parser_.expect(",", "after the corner");
+            parser_.accept(",");
             normal = Normal3(to_vector(point("as the corner's normal")));
         }
         corners.normals.push_back(normal);

@@ -28,6 +28,8 @@ public:
     PovPigment pigment(const PovPigment& base);
     PovFinish finish(const PovFinish& base);
     PovInterior interior(const PovInterior& base);
+    PovCamera camera(const PovToken& keyword);
+    PovLight light_source(const PovToken& keyword);
     // translate, rotate, scale, matrix or transform, whose keyword has been read; nothing for
     // another word.
     std::optional<Transform> transform_step(const PovToken& keyword);
@@ -63,6 +65,17 @@ private:
     bool warned_normal_ = false;
     bool warned_layers_ = false;
 };
+
+template <typename Item>
+std::optional<Item> PovItemReader::declared(const PovToken& name) {
+    if (name.kind != PovTokenKind::identifier) return std::nullopt;
+    PovValue* value = parser_.symbols().find(name.text);
+    if (!value) return std::nullopt;
+    const auto* ref = std::get_if<std::shared_ptr<const PovItemRef>>(value);
+    if (!ref) return std::nullopt;
+    if (const Item* item = std::get_if<Item>(&(*ref)->item)) return *item;
+    return std::nullopt;
+}
 
 Point3 to_point(const PovVector& v);
 Vector3 to_vector(const PovVector& v);

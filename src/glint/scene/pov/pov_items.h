@@ -50,6 +50,38 @@ struct PovInterior {
     double dispersion = 1;
 };
 
+// POV-Ray's camera as written: its vectors before look_at aims them (pov_scene.cpp does).
+struct PovCamera {
+    PovPosition at;  // the camera keyword, for errors found when it is placed
+    bool orthographic = false;
+    PovVector location{};
+    PovVector direction{{0, 0, 1}}, up{{0, 1, 0}}, sky{{0, 1, 0}}, right{{1.33, 0, 0}};
+    std::optional<PovVector> look_at, focal_point;
+    std::optional<double> angle, aperture;
+    std::optional<int> blur_samples;
+    Transform transform;  // rotate, translate, ... after the vectors
+};
+
+struct PovObject;
+
+// POV-Ray's light_source as written, before pov_scene.cpp maps it onto one of glint's lights.
+struct PovLight {
+    PovPosition at;
+    PovVector position{};
+    PovVector color{};
+    enum class Kind { point, spot, parallel } kind = Kind::point;
+    PovVector point_at{};
+    double radius = 30, falloff = 45;
+    std::optional<PovVector> area_u, area_v;  // area_light's axes
+    int n1 = 1, n2 = 1;                       // and its counts
+    bool circular = false;
+    std::optional<double> fade_distance;
+    double fade_power = 0;
+    bool shadowless = false;
+    std::shared_ptr<const PovObject> looks_like;  // drawn at the light, casting no shadow
+    Transform transform;
+};
+
 // An object: a shape in its own space or a CSG of objects, placed by its transform, with what
 // it says of its look (children without a texture take their parent's).
 struct PovUnread;
@@ -65,6 +97,8 @@ struct PovObject {
     bool no_shadow = false;
     bool hollow = false;
     std::shared_ptr<const PovUnread> unread;  // an object glint does not read yet: its name, place
+    std::shared_ptr<const PovLight> light;    // a light_source, placed as objects are
+    PovPosition at;                           // where it was written
 };
 
 // A map (color_map, pigment_map, ...) that glint does not read yet: kept to stop the scene only
@@ -74,8 +108,8 @@ struct PovUnread {
     PovPosition at;
 };
 
-using PovItem =
-    std::variant<PovObject, PovTexture, PovPigment, PovFinish, PovInterior, Transform, PovUnread>;
+using PovItem = std::variant<PovObject, PovTexture, PovPigment, PovFinish, PovInterior, Transform,
+                             PovUnread, PovCamera>;
 
 // A declared item as an identifier's value holds it.
 struct PovItemRef {

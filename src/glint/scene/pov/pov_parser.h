@@ -88,6 +88,8 @@ public:
     void set_item_reader(ItemReader reader) { item_reader_ = std::move(reader); }
 
     PovSymbols& symbols() { return symbols_; }
+    // The first #version of the scene file itself; none in a scene written before POV-Ray 3.7.
+    std::optional<double> scene_version() const { return scene_version_; }
     // What #debug and #warning printed, in order.
     const std::vector<std::string>& messages() const { return messages_; }
 
@@ -193,6 +195,7 @@ private:
     PovSymbols symbols_;
     std::vector<std::string> messages_;
     std::optional<PovToken> peeked_;
+    std::optional<double> scene_version_;
     std::int64_t loop_iterations_ = 0;
     int macro_depth_ = 0;
     int nesting_ = 0;

@@ -41,12 +41,6 @@ double dot3(const PovVector& a, const PovVector& b) {
     return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
 }
 
-PovVector axis(int i) {
-    PovVector v = PovVector::of(0, 3);
-    v[i] = 1;
-    return v;
-}
-
 // POV-Ray's scene items, besides objects, that glint does not read yet: their error says so.
 bool not_read_yet(const PovToken& token) {
     static const std::string_view kNotYet[] = {"fog", "media", "photons", "rainbow", "sky_sphere"};
@@ -73,9 +67,7 @@ public:
             const std::string& w = t.text;
             if (t.is_symbol(";")) continue;
             if (w == "camera")
-                camera(t);
-            else if (w == "light_source")
-                light(t);
+                camera(items_.camera(t));
             else if (w == "background")
                 background(t);
             else if (w == "global_settings")
@@ -94,6 +86,7 @@ public:
         }
         for (const std::string& message : parser_.messages())
             scene_.warnings.push_back("#debug: " + message);
+        decode_colors();
         if (any_area_light_) scene_.settings.integrator = IntegratorKind::distributed;
         return std::move(scene_);
     }
@@ -118,193 +111,109 @@ private:
         return c;
     }
 
-    void camera(const PovToken& keyword) {
-        parser_.expect("{", "after camera");
-        PovVector location = PovVector::of(0, 3), direction = axis(2), up = axis(1), sky = axis(1);
-        PovVector right = scaled(axis(0), 1.33);
-        std::optional<PovVector> look_at, focal_point;
-        std::optional<double> angle, aperture;
-        bool orthographic = false;
-        for (PovToken t = parser_.next(); !t.is_symbol("}"); t = parser_.next()) {
-            const std::string& w = t.text;
-            if (w == "perspective")
-                orthographic = false;
-            else if (w == "orthographic")
-                orthographic = true;
-            else if (w == "location")
-                location = parser_.finite_vector("after location");
-            else if (w == "look_at")
-                look_at = parser_.finite_vector("after look_at");
-            else if (w == "direction")
-                direction = parser_.finite_vector("after direction");
-            else if (w == "up")
-                up = parser_.finite_vector("after up");
-            else if (w == "right")
-                right = parser_.finite_vector("after right");
-            else if (w == "sky")
-                sky = parser_.finite_vector("after sky");
-            else if (w == "angle")
-                angle = parser_.finite_float("after angle");
-            else if (w == "focal_point")
-                focal_point = parser_.finite_vector("after focal_point");
-            else if (w == "aperture")
-                aperture = parser_.finite_float("after aperture");
-            else if (w == "blur_samples") {
-                scene_.settings.samples_per_pixel =
-                    parser_.whole_number("after blur_samples", 1, 1 << 16);
-                if (parser_.accept(",")) parser_.finite_float("after blur_samples");
-            } else if (w == "confidence" || w == "variance")
-                parser_.finite_float("after " + w);
-            else
-                throw parser_.error_at(t, describe(t) + " is not supported in a camera yet",
-                                       {"docs/povray.md lists what glint reads"});
-        }
+    // POV-Ray's camera aimed as POV-Ray aims it, onto glint's (left-handed unless `right`
+    // says otherwise).
+    void camera(const PovCamera& pov) {
+        PovVector direction = pov.direction, up = pov.up, right = pov.right;
         // As POV-Ray: the angle sets the direction's length against right's.
-        if (angle) {
-            if (!(*angle > 0 && *angle < 180))
-                throw parser_.error_at(keyword, "camera angle must be in (0, 180)");
-            direction =
-                scaled(direction, 0.5 * norm(right) / std::tan(*angle * std::numbers::pi / 360) /
-                                      norm(direction));
+        if (pov.angle) {
+            if (!(*pov.angle > 0 && *pov.angle < 180))
+                throw files_.error_at(pov.at, "camera angle must be in (0, 180)");
+            direction = scaled(direction, 0.5 * norm(right) /
+                                              std::tan(*pov.angle * std::numbers::pi / 360) /
+                                              norm(direction));
         }
         const double handed = dot3(right, cross3(up, direction));
-        if (look_at) {
-            PovVector d = *look_at;
-            for (int i = 0; i < 3; ++i) d[i] -= location[i];
-            if (!(norm(d) > 0)) throw parser_.error_at(keyword, "camera look_at is its location");
+        if (pov.look_at) {
+            PovVector d = *pov.look_at;
+            for (int i = 0; i < 3; ++i) d[i] -= pov.location[i];
+            if (!(norm(d) > 0)) throw files_.error_at(pov.at, "camera look_at is its location");
             const double length_d = norm(direction), length_r = norm(right), length_u = norm(up);
             direction = scaled(d, length_d / norm(d));
-            PovVector r = cross3(sky, direction);
-            if (!(norm(r) > 0))
-                throw parser_.error_at(keyword, "camera sky is parallel to its view");
+            PovVector r = cross3(pov.sky, direction);
+            if (!(norm(r) > 0)) throw files_.error_at(pov.at, "camera sky is parallel to its view");
             right = scaled(r, length_r / norm(r));
             if (handed < 0) right = scaled(right, -1);
             PovVector u = cross3(direction, right);
             if (handed < 0) u = scaled(u, -1);
             up = scaled(u, length_u / norm(u));
         }
+        const Transform& t = pov.transform;
+        const Vector3 view = t(to_vector(direction)), up_placed = t(to_vector(up));
         CameraSpec& c = scene_.camera;
-        c.from = to_point(location);
-        c.at = to_point(location) + to_vector(direction);
-        c.up = to_vector(up);
+        c.from = t(to_point(pov.location));
+        c.at = c.from + view;
+        c.up = up_placed;
         c.left_handed = handed >= 0;
-        if (orthographic) {
+        if (pov.orthographic) {
             c.projection = Projection::orthographic;
-            c.height = float(norm(up));
+            c.height = length(up_placed);
         } else {
             c.projection = Projection::perspective;
-            c.fov = float(2 * std::atan(0.5 * norm(up) / norm(direction)) * 180 / std::numbers::pi);
+            c.fov = float(2 * std::atan(0.5 * length(up_placed) / length(view)) * 180 /
+                          std::numbers::pi);
         }
-        if (aperture && *aperture > 0) {
-            c.lens.radius = float(*aperture / 2);
-            if (focal_point) {
-                PovVector f = *focal_point;
-                for (int i = 0; i < 3; ++i) f[i] -= location[i];
-                c.lens.focus_distance = float(dot3(f, direction) / norm(direction));
+        if (pov.blur_samples) scene_.settings.samples_per_pixel = *pov.blur_samples;
+        if (pov.aperture && *pov.aperture > 0) {
+            c.lens.radius = float(*pov.aperture / 2);
+            if (pov.focal_point) {
+                const Vector3 to_focus = t(to_point(*pov.focal_point)) - c.from;
+                c.lens.focus_distance = dot(to_focus, view) / length(view);
             }
             scene_.settings.integrator = IntegratorKind::distributed;
         }
     }
 
-    void light(const PovToken& keyword) {
-        parser_.expect("{", "after light_source");
-        const PovVector position = parser_.finite_vector("as the light's position");
-        parser_.accept(",");
-        const PovVector color = parser_.color_expression("as the light's colour");
-        enum class Kind { point, spot, parallel } kind = Kind::point;
-        PovVector point_at = PovVector::of(0, 3);
-        double radius = 30, falloff = 45;
-        std::optional<PovVector> area_u, area_v;
-        int n1 = 1, n2 = 1;
-        bool circular = false;
-        std::optional<double> fade_distance;
-        double fade_power = 0;
-        Transform placed;
-        for (PovToken t = parser_.next(); !t.is_symbol("}"); t = parser_.next()) {
-            const std::string& w = t.text;
-            if (w == "spotlight")
-                kind = Kind::spot;
-            else if (w == "parallel")
-                kind = Kind::parallel;
-            else if (w == "point_at")
-                point_at = parser_.finite_vector("after point_at");
-            else if (w == "radius")
-                radius = parser_.finite_float("after radius");
-            else if (w == "falloff")
-                falloff = parser_.finite_float("after falloff");
-            else if (w == "tightness")
-                parser_.finite_float("after tightness");
-            else if (w == "area_light") {
-                area_u = parser_.finite_vector("as the area light's first axis");
-                parser_.expect(",", "after the area light's first axis");
-                area_v = parser_.finite_vector("as the area light's second axis");
-                parser_.expect(",", "after the area light's second axis");
-                n1 = parser_.whole_number("as the area light's first count", 1, 64);
-                parser_.expect(",", "after the area light's first count");
-                n2 = parser_.whole_number("as the area light's second count", 1, 64);
-            } else if (w == "adaptive")
-                parser_.finite_float("after adaptive");
-            else if (w == "jitter" || w == "orient") {
-            } else if (w == "circular")
-                circular = true;
-            else if (w == "fade_distance")
-                fade_distance = parser_.finite_float("after fade_distance");
-            else if (w == "fade_power")
-                fade_power = parser_.finite_float("after fade_power");
-            else if (w == "shadowless") {
-                scene_.warnings.push_back(files_.name(keyword.at.file) + ":" +
-                                          std::to_string(keyword.at.line) +
-                                          ": shadowless light_source casts shadows in glint");
-            } else if (w == "media_interaction" || w == "media_attenuation")
-                items_.optional_amount();  // POV-Ray's media only
-            else if (const auto step = items_.transform_step(t))
-                placed = *step * placed;
-            else
-                throw parser_.error_at(t, describe(t) + " is not supported in a light_source yet",
-                                       {"docs/povray.md lists what glint reads"});
+    // A light_source onto glint's point, spot, directional, rectangle or disk light.
+    void light(const PovLight& pov, const Transform& parent) {
+        const Transform placed = parent * pov.transform;
+        if (pov.shadowless)
+            scene_.warnings.push_back(files_.name(pov.at.file) + ":" + std::to_string(pov.at.line) +
+                                      ": shadowless light_source casts shadows in glint");
+        const Point3 at = placed(to_point(pov.position));
+        if (pov.looks_like) {
+            // POV-Ray moves the object to the light; it casts no shadow, so the light shines.
+            add(*pov.looks_like, placed * Transform::translate(to_vector(pov.position)), nullptr,
+                nullptr, true);
         }
-        const Point3 at = placed(to_point(position));
-        const Point3 target = placed(to_point(point_at));
-        const Color c = rgb(color);
+        const Point3 target = placed(to_point(pov.point_at));
+        const Color c = rgb(pov.color);
         Attenuation attenuation;
-        if (fade_distance && fade_power > 0) {
+        if (pov.fade_distance && pov.fade_power > 0) {
             // POV-Ray's 2 / (1 + (d / fade_distance)^fade_power), exactly for powers 1 and 2.
-            const float fd = float(*fade_distance);
-            if (fade_power < 1.5)
+            const float fd = float(*pov.fade_distance);
+            if (pov.fade_power < 1.5)
                 attenuation = {0.5f, 1 / (2 * fd), 0};
             else
                 attenuation = {0.5f, 0, 1 / (2 * fd * fd)};
         }
-        if (kind == Kind::parallel) {
+        if (pov.kind == PovLight::Kind::parallel) {
             scene_.lights.push_back(DirectionalLight{normalize(target - at), c});
             return;
         }
-        if (kind == Kind::spot) {
+        if (pov.kind == PovLight::Kind::spot) {
             SpotLight s;
             s.position = at;
             s.direction = normalize(target - at);
-            const double cone = std::max(falloff, radius);
+            const double cone = std::max(pov.falloff, pov.radius);
             s.cos_cone = float(std::cos(cone * std::numbers::pi / 180));
-            s.cos_falloff = float(std::cos(std::min(radius, cone) * std::numbers::pi / 180));
+            s.cos_falloff = float(std::cos(std::min(pov.radius, cone) * std::numbers::pi / 180));
             s.color = c;
             s.attenuation = attenuation;
             scene_.lights.push_back(s);
             return;
         }
-        if (area_u) {
-            std::optional<AreaLight> area;
-            if (circular) {
-                area = disk_light(at,
-                                  Normal3(normalize(cross(to_vector(*area_u), to_vector(*area_v)))),
-                                  float(norm(*area_u) / 2));
-            } else {
-                area = rectangle_light(at, placed(to_vector(*area_u)), placed(to_vector(*area_v)));
-            }
+        if (pov.area_u) {
+            const Vector3 u = placed(to_vector(*pov.area_u)), v = placed(to_vector(*pov.area_v));
+            const std::optional<AreaLight> area =
+                pov.circular ? disk_light(at, Normal3(normalize(cross(u, v))), length(u) / 2)
+                             : rectangle_light(at, u, v);
             if (area) {
-                area->color = c;
-                area->attenuation = attenuation;
-                area->shadow_rays = n1 * n2;
-                scene_.lights.push_back(*area);
+                AreaLight a = *area;
+                a.color = c;
+                a.attenuation = attenuation;
+                a.shadow_rays = pov.n1 * pov.n2;
+                scene_.lights.push_back(a);
                 any_area_light_ = true;
                 return;
             }
@@ -328,9 +237,12 @@ private:
                 scene_.settings.max_depth = parser_.whole_number("after max_trace_level", 1, 256);
             else if (w == "adc_bailout")
                 scene_.settings.min_weight = float(parser_.finite_float("after adc_bailout"));
-            else if (w == "assumed_gamma")
-                parser_.finite_float("after assumed_gamma");
-            else if (w == "max_intersections" || w == "number_of_waves" || w == "noise_generator")
+            else if (w == "assumed_gamma") {
+                const PovToken at = parser_.peek();
+                assumed_gamma_ = parser_.finite_float("after assumed_gamma");
+                if (!(*assumed_gamma_ > 0 && *assumed_gamma_ <= 10))
+                    throw parser_.error_at(at, "assumed_gamma must be in (0, 10]");
+            } else if (w == "max_intersections" || w == "number_of_waves" || w == "noise_generator")
                 parser_.finite_float("after " + w);
             else if (w == "charset")
                 parser_.next();
@@ -411,12 +323,18 @@ private:
                 : object.csg == PovObject::Csg::intersection ? CsgOperation::intersection
                 : object.csg == PovObject::Csg::difference   ? CsgOperation::difference
                                                              : CsgOperation::union_of;
-            shape = placed_shape(*object.children[0]);
-            for (std::size_t i = 1; i < object.children.size(); ++i) {
+            // Lights among the operands shine (add_lights) but are no part of the solid.
+            std::vector<Shape> operands;
+            for (const auto& child : object.children)
+                if (!child->light) operands.push_back(placed_shape(*child));
+            if (operands.empty())
+                throw files_.error_at(object.at, "a CSG of lights alone has no surface");
+            shape = operands[0];
+            for (std::size_t i = 1; i < operands.size(); ++i) {
                 Csg csg;
                 csg.operation = op;
                 csg.a = std::make_shared<const Shape>(std::move(shape));
-                csg.b = std::make_shared<const Shape>(placed_shape(*object.children[i]));
+                csg.b = std::make_shared<const Shape>(std::move(operands[i]));
                 shape = csg;
             }
         }
@@ -433,6 +351,11 @@ private:
         if (object.interior) interior = object.interior;
         no_shadow = no_shadow || object.no_shadow;
         const Transform placement = parent * object.transform;
+        if (object.light) {
+            light(*object.light, placement);
+            return;
+        }
+        if (!object.shape && object.csg != PovObject::Csg::group) add_lights(object, placement);
         if (!object.shape && object.csg == PovObject::Csg::group) {
             for (const auto& child : object.children)
                 add(*child, placement, texture, interior, no_shadow);
@@ -448,6 +371,44 @@ private:
         scene_.objects.push_back(std::move(o));
     }
 
+    // POV-Ray reads a scene's colours as encoded with assumed_gamma, and a scene older than
+    // 3.7 that gives none is not gamma-corrected at all: its colour values are the image's.
+    // glint renders in linear light, so the colours are decoded first (2.2 for an old scene:
+    // exact for one light on one surface, whose product the encoding gives back).
+    void decode_colors() {
+        const std::optional<double> version = parser_.scene_version();
+        const double gamma = assumed_gamma_               ? *assumed_gamma_
+                             : version && *version >= 3.7 ? 1
+                                                          : 2.2;
+        if (gamma == 1) return;
+        const auto decode = [g = float(gamma)](Color c) {
+            return Color{std::pow(std::max(c.r, 0.0f), g), std::pow(std::max(c.g, 0.0f), g),
+                         std::pow(std::max(c.b, 0.0f), g)};
+        };
+        for (Material& m : scene_.materials) {
+            if (auto* color = std::get_if<Color>(&m.color)) *color = decode(*color);
+            if (auto* checker = std::get_if<CheckerTexture>(&m.color)) {
+                checker->even = decode(checker->even);
+                checker->odd = decode(checker->odd);
+            }
+            m.emission = decode(m.emission);
+        }
+        for (Light& light : scene_.lights)
+            std::visit([&](auto& l) { l.color = decode(l.color); }, light);
+        scene_.settings.background = decode(scene_.settings.background);
+        scene_.ambient = decode(scene_.ambient);
+    }
+
+    // The lights inside a CSG's operands, at any depth.
+    void add_lights(const PovObject& object, const Transform& placement) {
+        for (const auto& child : object.children) {
+            if (child->light)
+                light(*child->light, placement * child->transform);
+            else
+                add_lights(*child, placement * child->transform);
+        }
+    }
+
     PovFiles& files_;
     Scene scene_;
     PovParser parser_;
@@ -458,6 +419,7 @@ private:
              std::uint32_t>
         materials_;
     bool any_area_light_ = false;
+    std::optional<double> assumed_gamma_;
 };
 
 }  // namespace

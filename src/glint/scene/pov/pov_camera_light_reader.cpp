@@ -1,0 +1,127 @@
+// Reads POV-Ray's camera and light_source blocks as written; pov_scene.cpp aims the camera and
+// maps the lights onto glint's.
+#include <memory>
+
+#include "glint/scene/pov/pov_item_reader.h"
+
+namespace glint {
+
+namespace {
+
+constexpr const char* kSeeCompatibility = "docs/povray.md lists what glint reads";
+
+}  // namespace
+
+PovCamera PovItemReader::camera(const PovToken& keyword) {
+    parser_.expect("{", "after camera");
+    PovCamera c;
+    if (auto declared_camera = declared<PovCamera>(parser_.peek_item())) {
+        parser_.next();
+        c = *declared_camera;
+    }
+    c.at = keyword.at;
+    for (PovToken t = parser_.next(); !t.is_symbol("}"); t = parser_.next()) {
+        const std::string& w = t.text;
+        if (w == "perspective")
+            c.orthographic = false;
+        else if (w == "orthographic")
+            c.orthographic = true;
+        else if (w == "location")
+            c.location = parser_.finite_vector("after location");
+        else if (w == "look_at")
+            c.look_at = parser_.finite_vector("after look_at");
+        else if (w == "direction")
+            c.direction = parser_.finite_vector("after direction");
+        else if (w == "up")
+            c.up = parser_.finite_vector("after up");
+        else if (w == "right")
+            c.right = parser_.finite_vector("after right");
+        else if (w == "sky")
+            c.sky = parser_.finite_vector("after sky");
+        else if (w == "angle")
+            c.angle = parser_.finite_float("after angle");
+        else if (w == "focal_point")
+            c.focal_point = parser_.finite_vector("after focal_point");
+        else if (w == "aperture")
+            c.aperture = parser_.finite_float("after aperture");
+        else if (w == "blur_samples") {
+            c.blur_samples = parser_.whole_number("after blur_samples", 1, 1 << 16);
+            if (parser_.accept(",")) parser_.finite_float("after blur_samples");
+        } else if (w == "confidence" || w == "variance")
+            parser_.finite_float("after " + w);
+        else if (const auto step = transform_step(t))
+            c.transform = *step * c.transform;
+        else
+            throw parser_.error_at(t, describe(t) + " is not supported in a camera yet",
+                                   {kSeeCompatibility});
+    }
+    return c;
+}
+
+PovLight PovItemReader::light_source(const PovToken& keyword) {
+    parser_.expect("{", "after light_source");
+    PovLight light;
+    if (auto declared_light = declared<PovObject>(parser_.peek_item());
+        declared_light && declared_light->light) {
+        parser_.next();
+        light = *declared_light->light;
+        light.transform = declared_light->transform * light.transform;
+    } else {
+        light.position = parser_.finite_vector("as the light's position");
+        parser_.accept(",");
+        light.color = parser_.color_expression("as the light's colour");
+    }
+    light.at = keyword.at;
+    for (PovToken t = parser_.next(); !t.is_symbol("}"); t = parser_.next()) {
+        const std::string& w = t.text;
+        if (w == "spotlight")
+            light.kind = PovLight::Kind::spot;
+        else if (w == "parallel")
+            light.kind = PovLight::Kind::parallel;
+        else if (w == "point_at")
+            light.point_at = parser_.finite_vector("after point_at");
+        else if (w == "radius")
+            light.radius = parser_.finite_float("after radius");
+        else if (w == "falloff")
+            light.falloff = parser_.finite_float("after falloff");
+        else if (w == "tightness")
+            parser_.finite_float("after tightness");
+        else if (w == "area_light") {
+            light.area_u = parser_.finite_vector("as the area light's first axis");
+            parser_.accept(",");
+            light.area_v = parser_.finite_vector("as the area light's second axis");
+            parser_.accept(",");
+            light.n1 = parser_.whole_number("as the area light's first count", 1, 64);
+            parser_.accept(",");
+            light.n2 = parser_.whole_number("as the area light's second count", 1, 64);
+        } else if (w == "adaptive")
+            parser_.finite_float("after adaptive");
+        else if (w == "jitter" || w == "orient") {
+        } else if (w == "circular")
+            light.circular = true;
+        else if (w == "fade_distance")
+            light.fade_distance = parser_.finite_float("after fade_distance");
+        else if (w == "fade_power")
+            light.fade_power = parser_.finite_float("after fade_power");
+        else if (w == "shadowless")
+            light.shadowless = true;
+        else if (w == "looks_like") {
+            parser_.expect("{", "after looks_like");
+            const PovToken inner = parser_.next();
+            if (!starts_object(inner.text) || inner.kind != PovTokenKind::identifier)
+                throw parser_.error_at(
+                    inner, "expected an object in looks_like { }, got " + describe(inner));
+            light.looks_like = std::make_shared<const PovObject>(object(inner));
+            parser_.expect("}", "after the looks_like object");
+        } else if (w == "media_interaction" || w == "media_attenuation")
+            optional_amount();  // POV-Ray's media only
+        else if (const auto step = transform_step(t))
+            light.transform = *step * light.transform;
+        else
+            throw parser_.error_at(t, describe(t) + " is not supported in a light_source yet",
+                                   {kSeeCompatibility});
+    }
+    return light;
+}
+
+}  // namespace glint
