@@ -5,7 +5,7 @@
 set -euo pipefail
 
 packages=(
-    build-essential cmake pkg-config clang-format git
+    build-essential cmake pkg-config clang-format git lld
     clang libclang-rt-14-dev
     libyaml-cpp-dev libtbb-dev libpng-dev zlib1g-dev libopenexr-dev libstb-dev
     libassimp-dev libembree-dev libpolyclipping-dev
