@@ -143,6 +143,11 @@ TEST(PovExpressions, ColoursAreFiveComponentVectors) {
         std::vector<std::string>{"1.0,0.0,0.5,0.0,0.2"});
     EXPECT_EQ(debug("#declare C = rgbt <0, 1, 0, 0.7>; #debug str(C.transmit + C.green, 0, 1)"),
               std::vector<std::string>{"1.7"});
+    // As POV-Ray 3.7 prints it: single components after rgb change it (another rgb starts the
+    // next colour: PovScene.CommasBetweenValuesMayBeLeftOut).
+    EXPECT_EQ(debug("#declare C = color rgb <1, 0.5, 0.25> green 0.1 filter 0.3;"
+                    "#debug vstr(5, C, \",\", 0, 2)"),
+              std::vector<std::string>{"1.00,0.10,0.25,0.30,0.00"});
 }
 
 TEST(PovDirectives, IfElseifElseNestAndSkip) {

@@ -345,7 +345,11 @@ PovValue PovParser::color_keywords(const PovToken& first) {
                                   after.is_word("red") || after.is_word("green") ||
                                   after.is_word("blue") || after.is_word("filter") ||
                                   after.is_word("transmit") || after.is_word("srgb");
-            if (!keywords) color = vector_of(additive(), after, "after color", 5);
+            if (keywords) {
+                keyword = next();
+                continue;
+            }
+            color = vector_of(additive(), after, "after color", 5);
         } else if (w == "rgb" || w == "srgb") {
             const PovVector v = vector_of(additive(), keyword, "after " + w, 3);
             for (int i = 0; i < 3; ++i) color[i] = v[i];
