@@ -240,6 +240,15 @@ TEST(PovScene, CamerasAndLightsCanBeDeclaredAndPlacedAsObjects) {
     EXPECT_TRUE(std::holds_alternative<Csg>(s.objects[2].shape));
 }
 
+// POV-Ray's matrix: rows a point multiplies from the left, the last one the translation.
+TEST(PovScene, MatrixShearsAndMoves) {
+    const Scene s = parse("sphere { 0, 1 matrix <1, 0, 0,  0, 1, -0.5,  0, 0, 1,  1, 2, 3> }");
+    const auto& placed = std::get<Transformed>(s.objects[0].shape);
+    // (x, y, z) -> (x + 1, y + 2, z - 0.5 y + 3).
+    EXPECT_EQ(placed.world_from_object()(Point3{0, 2, 0}), (Point3{1, 4, 2}));
+    EXPECT_EQ(placed.world_from_object()(Point3{1, 0, 1}), (Point3{2, 2, 4}));
+}
+
 TEST(PovScene, CommasBetweenValuesMayBeLeftOut) {
     const Scene s = parse(R"(
         #version 3.7;

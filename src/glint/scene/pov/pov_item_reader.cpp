@@ -189,7 +189,7 @@ std::optional<Transform> PovItemReader::transform_step(const PovToken& keyword) 
         // <a, b, c,  d, e, f,  g, h, i,  j, k, l>: rows of a 4x3 matrix that points multiply
         // from the left, the last row the translation.
         const std::vector<double> v = parser_.finite_list("of matrix", 12);
-        Matrix4 m;
+        Matrix4 m = Matrix4::identity();
         for (int c = 0; c < 3; ++c) {
             for (int r = 0; r < 3; ++r) m.m[std::size_t(r)][std::size_t(c)] = float(v[3 * c + r]);
             m.m[std::size_t(c)][3] = float(v[9 + c]);
