@@ -16,20 +16,25 @@ namespace {
 
 namespace fs = std::filesystem;
 
-TEST(PovReference, BasicsMatchesPovRaysRender) {
+class PovReference : public testing::TestWithParam<const char*> {};
+
+TEST_P(PovReference, MatchesPovRaysRender) {
+    const std::string name = GetParam();
     const fs::path folder = fs::path(GLINT_SOURCE_DIR) / "tests/data/pov";
-    Scene scene = load_scene(folder / "basics.pov");
+    Scene scene = load_scene(folder / (name + ".pov"));
     scene.settings.width = 160;
     scene.settings.height = 120;
     const RenderResult result = render(World(scene), {});
-    const fs::path out = fs::path(GLINT_TEST_OUTPUT_DIR) / "pov-basics.png";
+    const fs::path out = fs::path(GLINT_TEST_OUTPUT_DIR) / ("pov-" + name + ".png");
     fs::create_directories(out.parent_path());
     write_image(out, result.image);
     const ImageDifference d =
-        compare_images(read_image(out), read_image(folder / "basics-povray.png"));
+        compare_images(read_image(out), read_image(folder / (name + "-povray.png")));
     const double psnr = 20 * std::log10(1 / d.rmse);
     EXPECT_GE(psnr, 30) << describe(d) << "\n  rendered: " << out;
 }
+
+INSTANTIATE_TEST_SUITE_P(Scenes, PovReference, testing::Values("basics", "patterns"));
 
 }  // namespace
 }  // namespace glint

@@ -1,6 +1,7 @@
 // Colour sources for materials: a constant colour, a checker pattern, either painted on the
-// surface's uv coordinates (2D) or carved out of space (3D, a solid texture), an image, or a
-// noise pattern through a colour ramp (solid).
+// surface's uv coordinates (2D) or carved out of space (3D, a solid texture), an image, a
+// noise pattern through a colour ramp (solid), or one of POV-Ray's patterns through a colour
+// map (solid, placed by its own transform).
 #pragma once
 
 #include <variant>
@@ -9,6 +10,7 @@
 #include "glint/math/color.h"
 #include "glint/shading/image_texture.h"
 #include "glint/shading/noise_texture.h"
+#include "glint/shading/pattern_texture.h"
 
 namespace glint {
 
@@ -21,7 +23,7 @@ struct CheckerTexture {
     CheckerSpace space = CheckerSpace::solid;
 };
 
-using Texture = std::variant<Color, CheckerTexture, ImageTexture, NoiseTexture>;
+using Texture = std::variant<Color, CheckerTexture, ImageTexture, NoiseTexture, PatternTexture>;
 
 // evaluate() for the kinds other than a constant colour.
 Color evaluate_pattern(const Texture& texture, const SurfacePoint& sp);

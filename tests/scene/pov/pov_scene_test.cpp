@@ -154,23 +154,23 @@ TEST(PovScene, WhatIsNotReadIsALocatedErrorNamingIt) {
               "note: docs/povray.md lists what glint reads\n");
     EXPECT_NE(error_of("blob { }").find("POV-Ray's blob is not supported yet"), std::string::npos);
     EXPECT_NE(error_of("sphere { 0, -1 }").find("sphere radius must be > 0"), std::string::npos);
-    EXPECT_NE(error_of("sphere { 0, 1 pigment { bozo } }")
-                  .find("pigment pattern \"bozo\" is not supported yet"),
+    EXPECT_NE(error_of("sphere { 0, 1 pigment { mandel 20 } }")
+                  .find("pigment pattern \"mandel\" is not supported yet"),
               std::string::npos);
 }
 
 // As an include file declares what a scene may never use: only what is used stops the scene.
 TEST(PovScene, UnreadDeclarationsStopOnlyTheObjectsThatUseThem) {
     const Scene s = parse(R"(
-        #declare Cloudy = pigment { bozo color_map { [0 rgb 0] [1 rgb 1] } }
+        #declare Fractal = pigment { mandel 20 color_map { [0 rgb 0] [1 rgb 1] } }
         #declare Map = color_map { [0 rgb 0] [1 rgb 1] }
         #declare Bumpy = normal { bumps 0.5 }
         sphere { 0, 1 pigment { rgb 1 } normal { Bumpy } })");
     EXPECT_EQ(s.objects.size(), 1u);
     ASSERT_EQ(s.warnings.size(), 1u);
     EXPECT_NE(s.warnings[0].find("normal { }"), std::string::npos);
-    EXPECT_NE(error_of("#declare Cloudy = pigment { bozo }\nsphere { 0, 1 pigment { Cloudy } }")
-                  .find("scene.pov:1:29: error: pigment pattern \"bozo\" is not supported yet"),
+    EXPECT_NE(error_of("#declare Cloudy = pigment { mandel 9 }\nsphere { 0, 1 pigment { Cloudy } }")
+                  .find("scene.pov:1:29: error: pigment pattern \"mandel\" is not supported yet"),
               std::string::npos);
 }
 
@@ -257,9 +257,64 @@ TEST(PovScene, CommasBetweenValuesMayBeLeftOut) {
         object { sphere { <0, 0, 0> 1 } pigment { checker rgb 1 rgb 0 } })");
     ASSERT_EQ(s.objects.size(), 3u);
     EXPECT_EQ(std::get<Box>(s.objects[0].shape).max, (Point3{1, 2, 3}));
-    const auto& checker = std::get<CheckerTexture>(s.materials[s.objects[2].material].color);
-    EXPECT_EQ(checker.even, (Color{1, 1, 1}));
-    EXPECT_EQ(checker.odd, (Color{0, 0, 0}));
+    const auto& checker = std::get<PatternTexture>(s.materials[s.objects[2].material].color);
+    EXPECT_EQ(checker.spec.kind, PatternKind::checker);
+    ASSERT_EQ(checker.colors.size(), 2u);
+    EXPECT_EQ(checker.colors[0].color, (Color{1, 1, 1}));
+    EXPECT_EQ(checker.colors[1].color, (Color{0, 0, 0}));
+}
+
+TEST(PovScene, PatternsReadTheirMapsWavesAndTurbulence) {
+    const Scene s = parse(R"(
+        #version 3.7;
+        #declare Map = color_map { [0.5 rgb 1] [0 rgb 0] }
+        sphere { 0, 1 pigment { gradient <0, 2, 0> color_map { Map } frequency 2 phase 0.5
+                                turbulence 0.3 octaves 3 omega 0.4 lambda 3 sine_wave } }
+        sphere { 0, 1 pigment { marble color_map { [0 0.5 color rgb 0 color rgb 1] } } }
+        sphere { 0, 1 pigment { spotted } })");
+    ASSERT_EQ(s.objects.size(), 3u);
+    const auto& gradient = std::get<PatternTexture>(s.materials[s.objects[0].material].color);
+    EXPECT_EQ(gradient.spec.kind, PatternKind::gradient);
+    EXPECT_EQ(gradient.spec.direction, (Vector3{0, 1, 0}));
+    EXPECT_EQ(gradient.spec.frequency, 2);
+    EXPECT_EQ(gradient.spec.phase, 0.5f);
+    EXPECT_EQ(gradient.spec.turbulence, (Vector3{0.3f, 0.3f, 0.3f}));
+    EXPECT_EQ(gradient.spec.octaves, 3);
+    EXPECT_EQ(gradient.spec.omega, 0.4f);
+    EXPECT_EQ(gradient.spec.lambda, 3);
+    EXPECT_EQ(gradient.spec.wave, PatternWave::sine);
+    // Entries written out of order are taken sorted.
+    ASSERT_EQ(gradient.colors.size(), 2u);
+    EXPECT_EQ(gradient.colors[0].at, 0);
+    EXPECT_EQ(gradient.colors[1].color, (Color{1, 1, 1}));
+    const auto& marble = std::get<PatternTexture>(s.materials[s.objects[1].material].color);
+    EXPECT_EQ(marble.spec.wave, PatternWave::triangle);
+    ASSERT_EQ(marble.colors.size(), 2u);  // the old form's two colours
+    EXPECT_EQ(marble.colors[1].at, 0.5f);
+    const auto& spotted = std::get<PatternTexture>(s.materials[s.objects[2].material].color);
+    EXPECT_EQ(spotted.spec.kind, PatternKind::bozo);
+    EXPECT_EQ(spotted.colors.back().color, (Color{1, 1, 1}));  // POV-Ray's default map
+}
+
+// A pattern lies where its object puts it: transforms after the pigment move it, and a union's
+// texture lies in the union's frame for every child.
+TEST(PovScene, PatternsArePlacedByTheirObjectsTransforms) {
+    const Scene s = parse(R"(
+        #version 3.7;
+        sphere { 0, 1 pigment { gradient x scale 2 } translate <5, 0, 0> }
+        union { sphere { 0, 1 } sphere { x, 1 } pigment { gradient x } translate <0, 3, 0> })");
+    ASSERT_EQ(s.objects.size(), 3u);
+    const auto& moved = std::get<PatternTexture>(s.materials[s.objects[0].material].color);
+    EXPECT_EQ(moved.to_pattern(Point3{7, 0, 0}), (Point3{1, 0, 0}));
+    // One material for both children: the same texture in the same frame.
+    EXPECT_EQ(s.objects[1].material, s.objects[2].material);
+    const auto& shared = std::get<PatternTexture>(s.materials[s.objects[1].material].color);
+    EXPECT_EQ(shared.to_pattern(Point3{0.25f, 3, 0}), (Point3{0.25f, 0, 0}));
+    EXPECT_NE(error_of("sphere { 0, 1 pigment { gradient 0 } }")
+                  .find("gradient direction must not be zero"),
+              std::string::npos);
+    EXPECT_NE(error_of("#declare M = color_map { }").find("needs at least one [value colour]"),
+              std::string::npos);
 }
 
 TEST(PovScene, LayeredTexturesKeepTheBottomLayer) {

@@ -110,9 +110,10 @@ std::optional<PovItem> PovItemReader::read(const PovToken& keyword) {
         read_default(keyword);
         return PovUnread{"#default", keyword.at};
     }
-    if (w == "color_map" || w == "colour_map" || w == "pigment_map" || w == "normal_map" ||
-        w == "texture_map" || w == "slope_map" || w == "density_map" || w == "material_map" ||
-        w == "material" || w == "media" || w == "density") {
+    if (w == "color_map" || w == "colour_map") return color_map(keyword);
+    if (w == "pigment_map" || w == "normal_map" || w == "texture_map" || w == "slope_map" ||
+        w == "density_map" || w == "material_map" || w == "material" || w == "media" ||
+        w == "density") {
         parser_.skip_braced(keyword);
         return PovUnread{w, keyword.at};
     }
@@ -486,62 +487,6 @@ PovTexture PovItemReader::texture(const PovTexture& base) {
             t.pigment.transform = *step * t.pigment.transform;
         else
             throw unsupported(token, "in a texture");
-    }
-}
-
-PovPigment PovItemReader::pigment(const PovPigment& base) {
-    parser_.expect("{", "after pigment");
-    PovPigment p = base;
-    const PovToken& first = parser_.peek_item();
-    if (auto d = declared<PovPigment>(first)) {
-        parser_.next();
-        p = *d;
-    } else if (first.is_word("checker")) {
-        parser_.next();
-        p.kind = PovPigment::Kind::checker;
-        // POV-Ray's checker defaults: blue and green.
-        p.color = PovVector::of(0, 5);
-        p.color[2] = 1;
-        p.other = PovVector::of(0, 5);
-        p.other[1] = 1;
-        if (!parser_.peek_item().is_symbol("}") && !parser_.peek_item().is_word("scale") &&
-            !parser_.peek_item().is_word("translate") && !parser_.peek_item().is_word("rotate")) {
-            p.color = parser_.color_expression("as the checker's first colour");
-            parser_.accept(",");
-            p.other = parser_.color_expression("as the checker's second colour");
-        }
-    } else if (first.kind == PovTokenKind::identifier &&
-               !(first.is_word("color") || first.is_word("colour") || first.is_word("rgb") ||
-                 first.is_word("rgbf") || first.is_word("rgbt") || first.is_word("rgbft") ||
-                 first.is_word("red") || first.is_word("green") || first.is_word("blue") ||
-                 first.is_word("srgb") || parser_.symbols().find(first.text))) {
-        // A pattern glint does not read yet: only an object that uses it stops the scene.
-        const PovToken pattern = parser_.next();
-        p = PovPigment{};
-        p.kind = PovPigment::Kind::unsupported;
-        p.pattern = pattern.text;
-        p.at = pattern.at;
-        parser_.skip_to_closing_brace(pattern);
-        return p;
-    } else if (!first.is_symbol("}")) {
-        p.kind = PovPigment::Kind::color;
-        p.color = parser_.color_expression("as the pigment's colour");
-    }
-    for (;;) {
-        const PovToken token = parser_.next();
-        if (token.is_symbol("}")) return p;
-        if (const auto step = transform_step(token)) {
-            p.transform = *step * p.transform;
-            continue;
-        }
-        // A pattern's modifier (color_map, turbulence, ...): the pigment is one glint does not
-        // read yet, an error only where an object uses it.
-        PovPigment unread;
-        unread.kind = PovPigment::Kind::unsupported;
-        unread.pattern = token.text;
-        unread.at = token.at;
-        parser_.skip_to_closing_brace(token);
-        return unread;
     }
 }
 

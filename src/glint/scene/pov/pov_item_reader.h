@@ -26,6 +26,7 @@ public:
     PovObject object(const PovToken& keyword);
     PovTexture texture(const PovTexture& base);
     PovPigment pigment(const PovPigment& base);
+    PovColorMap color_map(const PovToken& keyword);
     PovFinish finish(const PovFinish& base);
     PovInterior interior(const PovInterior& base);
     PovCamera camera(const PovToken& keyword);
@@ -55,6 +56,10 @@ private:
     PovVector point(std::string_view what) { return parser_.finite_vector(what, 3); }
     float number(std::string_view what) { return float(parser_.finite_float(what)); }
     SceneError unsupported(const PovToken& token, std::string_view where);
+    // gradient x, checker C1 C2, marble, ...: the pattern `name` starts, before its modifiers.
+    PovPigment pattern(const PovToken& name);
+    // A pigment modifier of a pattern (color_map, turbulence, waves, ...); false for another word.
+    bool pattern_modifier(const PovToken& token, PovPigment& p);
     // normal { ... }: read past, with a warning the first time.
     void skip_normal(const PovToken& keyword);
     void read_default(const PovToken& directive);
@@ -64,6 +69,7 @@ private:
     std::shared_ptr<const PovTexture> default_texture_ = std::make_shared<const PovTexture>();
     bool warned_normal_ = false;
     bool warned_layers_ = false;
+    bool warned_crackle_ = false;
 };
 
 template <typename Item>

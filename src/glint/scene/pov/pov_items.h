@@ -13,6 +13,7 @@
 #include "glint/math/transform.h"
 #include "glint/scene/pov/pov_files.h"
 #include "glint/scene/pov/pov_value.h"
+#include "glint/shading/pattern.h"
 
 namespace glint {
 
@@ -29,14 +30,26 @@ struct PovFinish {
     bool metallic = false;
 };
 
-// A solid colour (r, g, b, filter, transmit), or a checker of two; or a pattern glint does not
-// read yet, read past so that only an object that uses it stops the scene.
+// One entry of a color_map: the colour (r, g, b, filter, transmit) from the value `at` on.
+struct PovColorStop {
+    double at = 0;
+    PovVector color = PovVector::of(0, 5);
+};
+
+struct PovColorMap {
+    std::vector<PovColorStop> stops;  // sorted by `at`, at least one
+};
+
+// A solid colour (r, g, b, filter, transmit), or a pattern through a colour map (a checker's
+// two colours are the map at 0 and 1); or a pattern glint does not read yet, read past so that
+// only an object that uses it stops the scene.
 struct PovPigment {
-    enum class Kind { color, checker, unsupported } kind = Kind::color;
+    enum class Kind { color, pattern, unsupported } kind = Kind::color;
     std::string pattern;                    // unsupported: its name
     PovPosition at;                         // unsupported: where it was written
     PovVector color = PovVector::of(0, 5);  // POV-Ray's default pigment is black
-    PovVector other = PovVector::of(0, 5);  // checker: the second colour
+    PatternSpec spec;                       // pattern: glint's own
+    PovColorMap map;                        // pattern: its colours
     Transform transform;                    // where the pattern lies, relative to the object
 };
 
@@ -109,7 +122,7 @@ struct PovUnread {
 };
 
 using PovItem = std::variant<PovObject, PovTexture, PovPigment, PovFinish, PovInterior, Transform,
-                             PovUnread, PovCamera>;
+                             PovUnread, PovCamera, PovColorMap>;
 
 // A declared item as an identifier's value holds it.
 struct PovItemRef {

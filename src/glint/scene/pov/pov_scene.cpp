@@ -8,6 +8,7 @@
 #include <map>
 #include <numbers>
 #include <sstream>
+#include <tuple>
 
 #include "glint/scene/pov/pov_item_reader.h"
 #include "glint/scene/quote.h"
@@ -48,6 +49,17 @@ bool not_read_yet(const PovToken& token) {
            std::find(std::begin(kNotYet), std::end(kNotYet), token.text) != std::end(kNotYet);
 }
 
+// The filter and transmit a pigment lets through. A colour map's can vary over the pattern,
+// and glint's material has one: the least of its entries', so the object stays as opaque as
+// its most opaque part.
+double transmitted(const PovPigment& p) {
+    if (p.kind != PovPigment::Kind::pattern) return p.color[3] + p.color[4];
+    double least = 1;
+    for (const PovColorStop& stop : p.map.stops)
+        least = std::min(least, stop.color[3] + stop.color[4]);
+    return least;
+}
+
 class Builder {
 public:
     Builder(PovFiles& files, const ReadSandbox& sandbox)
@@ -73,7 +85,7 @@ public:
             else if (w == "global_settings")
                 global_settings(t);
             else if (t.kind == PovTokenKind::identifier && PovItemReader::starts_object(w))
-                add(items_.object(t), Transform{}, nullptr, nullptr, false);
+                add(items_.object(t), Transform{}, nullptr, Transform{}, nullptr, false);
             else if (not_read_yet(t))
                 throw parser_.error_at(t, "POV-Ray's " + w + " is not supported yet",
                                        {"docs/povray.md lists what glint reads"});
@@ -174,7 +186,7 @@ private:
         if (pov.looks_like) {
             // POV-Ray moves the object to the light; it casts no shadow, so the light shines.
             add(*pov.looks_like, placed * Transform::translate(to_vector(pov.position)), nullptr,
-                nullptr, true);
+                Transform{}, nullptr, true);
         }
         const Point3 target = placed(to_point(pov.point_at));
         const Color c = rgb(pov.color);
@@ -264,24 +276,30 @@ private:
                                   {"docs/povray.md lists what glint reads"});
     }
 
+    // The glint material of a texture and interior. A pattern's material also depends on where
+    // its texture lies (`frame`: the texture's space to the scene's), as it is placed by it.
     std::uint32_t material(const std::shared_ptr<const PovTexture>& texture,
-                           const std::shared_ptr<const PovInterior>& interior) {
-        const auto key = std::make_pair(texture, interior);
+                           const std::shared_ptr<const PovInterior>& interior,
+                           const Transform& frame) {
+        const PovPigment& p = texture->pigment;
+        if (p.kind == PovPigment::Kind::unsupported)
+            throw files_.error_at(p.at,
+                                  "pigment pattern " + quote(p.pattern) + " is not supported yet",
+                                  {"docs/povray.md lists what glint reads"});
+        const bool placed = p.kind == PovPigment::Kind::pattern;
+        const MaterialKey key{texture, interior, placed ? frame.matrix().m : Matrix4::identity().m};
         if (const auto found = materials_.find(key); found != materials_.end())
             return found->second;
         const PovTexture& t = *texture;
         Material m;
         m.name = "pov" + std::to_string(scene_.materials.size());
-        const PovPigment& p = t.pigment;
-        if (p.kind == PovPigment::Kind::unsupported)
-            throw files_.error_at(p.at,
-                                  "pigment pattern " + quote(p.pattern) + " is not supported yet",
-                                  {"docs/povray.md lists what glint reads"});
-        if (p.kind == PovPigment::Kind::checker) {
-            CheckerTexture checker;
-            checker.even = rgb(p.color);
-            checker.odd = rgb(p.other);
-            m.color = checker;
+        if (placed) {
+            PatternTexture pattern;
+            pattern.spec = p.spec;
+            for (const PovColorStop& stop : p.map.stops)
+                pattern.colors.push_back({float(stop.at), rgb(stop.color)});
+            pattern.to_pattern = (frame * p.transform).inverse();
+            m.color = std::move(pattern);
         } else {
             m.color = rgb(p.color);
         }
@@ -302,7 +320,7 @@ private:
         m.reflect = float(std::clamp(f.reflection, 0.0, 1.0));
         if (f.emission > 0 && p.kind == PovPigment::Kind::color)
             m.emission = rgb(p.color) * float(f.emission);
-        m.transmit = float(std::clamp(p.color[3] + p.color[4], 0.0, 1.0));
+        m.transmit = float(std::clamp(transmitted(p), 0.0, 1.0));
         if (interior) m.ior = float(interior->ior);
         scene_.materials.push_back(std::move(m));
         const auto index = std::uint32_t(scene_.materials.size() - 1);
@@ -342,12 +360,17 @@ private:
         return Transformed(object.transform, std::make_shared<const Shape>(std::move(shape)));
     }
 
+    // `texture_frame`: where the texture handed down lies (its space to the scene's). An
+    // object's own texture lies in its parent's space, and moves with the object's transforms
+    // written after it (PovItemReader::modifiers).
     void add(const PovObject& object, const Transform& parent,
-             std::shared_ptr<const PovTexture> texture, std::shared_ptr<const PovInterior> interior,
-             bool no_shadow) {
+             std::shared_ptr<const PovTexture> texture, Transform texture_frame,
+             std::shared_ptr<const PovInterior> interior, bool no_shadow) {
         refuse_unread(object);
-        if (object.texture) texture = object.texture;
-        if (!texture) texture = object.fallback;
+        if (object.texture || !texture) {
+            texture = object.texture ? object.texture : object.fallback;
+            texture_frame = parent;
+        }
         if (object.interior) interior = object.interior;
         no_shadow = no_shadow || object.no_shadow;
         const Transform placement = parent * object.transform;
@@ -358,7 +381,7 @@ private:
         if (!object.shape && object.csg != PovObject::Csg::group) add_lights(object, placement);
         if (!object.shape && object.csg == PovObject::Csg::group) {
             for (const auto& child : object.children)
-                add(*child, placement, texture, interior, no_shadow);
+                add(*child, placement, texture, texture_frame, interior, no_shadow);
             return;
         }
         PovObject local = object;
@@ -366,7 +389,7 @@ private:
         Shape shape = placed_shape(local);
         if (!(placement == Transform{}))
             shape = Transformed(placement, std::make_shared<const Shape>(std::move(shape)));
-        SceneObject o{std::move(shape), material(texture, interior)};
+        SceneObject o{std::move(shape), material(texture, interior, texture_frame)};
         o.casts_shadow = !no_shadow;
         scene_.objects.push_back(std::move(o));
     }
@@ -387,10 +410,8 @@ private:
         };
         for (Material& m : scene_.materials) {
             if (auto* color = std::get_if<Color>(&m.color)) *color = decode(*color);
-            if (auto* checker = std::get_if<CheckerTexture>(&m.color)) {
-                checker->even = decode(checker->even);
-                checker->odd = decode(checker->odd);
-            }
+            if (auto* pattern = std::get_if<PatternTexture>(&m.color))
+                for (ColorStop& stop : pattern->colors) stop.color = decode(stop.color);
             m.emission = decode(m.emission);
         }
         for (Light& light : scene_.lights)
@@ -415,9 +436,9 @@ private:
     PovItemReader items_;
     // By the texture and interior themselves, held so that a freed one's address is never
     // taken for a new one's.
-    std::map<std::pair<std::shared_ptr<const PovTexture>, std::shared_ptr<const PovInterior>>,
-             std::uint32_t>
-        materials_;
+    using MaterialKey = std::tuple<std::shared_ptr<const PovTexture>,
+                                   std::shared_ptr<const PovInterior>, decltype(Matrix4::m)>;
+    std::map<MaterialKey, std::uint32_t> materials_;
     bool any_area_light_ = false;
     std::optional<double> assumed_gamma_;
 };

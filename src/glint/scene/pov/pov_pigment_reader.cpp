@@ -1,0 +1,214 @@
+// POV-Ray's pigments: a colour, or a pattern with its colour map, wave, frequency, phase and
+// turbulence, read onto glint's patterns (shading/pattern.h).
+#include <algorithm>
+#include <optional>
+#include <string_view>
+
+#include "glint/scene/pov/pov_item_reader.h"
+#include "glint/shading/noise.h"
+
+namespace glint {
+
+namespace {
+
+// POV-Ray's own bound on a colour map's entries.
+constexpr std::size_t kMaxColorMapEntries = 256;
+
+std::optional<PatternKind> pattern_kind(std::string_view w) {
+    struct Named {
+        std::string_view name;
+        PatternKind kind;
+    };
+    static constexpr Named kKinds[] = {
+        {"agate", PatternKind::agate},       {"bozo", PatternKind::bozo},
+        {"boxed", PatternKind::boxed},       {"checker", PatternKind::checker},
+        {"crackle", PatternKind::crackle},   {"cylindrical", PatternKind::cylindrical},
+        {"gradient", PatternKind::gradient}, {"granite", PatternKind::granite},
+        {"leopard", PatternKind::leopard},   {"marble", PatternKind::marble},
+        {"onion", PatternKind::onion},       {"planar", PatternKind::planar},
+        {"radial", PatternKind::radial},     {"spherical", PatternKind::spherical},
+        {"spotted", PatternKind::bozo},  // the same function in POV-Ray
+        {"wood", PatternKind::wood},
+    };
+    for (const Named& k : kKinds)
+        if (k.name == w) return k.kind;
+    return std::nullopt;
+}
+
+bool starts_color(const PovToken& t) {
+    return t.is_word("color") || t.is_word("colour") || t.is_word("rgb") || t.is_word("rgbf") ||
+           t.is_word("rgbt") || t.is_word("rgbft") || t.is_word("red") || t.is_word("green") ||
+           t.is_word("blue") || t.is_word("srgb");
+}
+
+PovColorMap black_to_white() {
+    PovColorMap map;
+    map.stops = {{0, PovVector::of(0, 5)}, {1, PovVector::of(0, 5)}};
+    for (int i = 0; i < 3; ++i) map.stops[1].color[i] = 1;
+    return map;
+}
+
+}  // namespace
+
+PovColorMap PovItemReader::color_map(const PovToken& keyword) {
+    parser_.expect("{", "after " + keyword.text);
+    PovColorMap map;
+    if (auto d = declared<PovColorMap>(parser_.peek_item())) {
+        parser_.next();
+        map = *d;
+    }
+    for (PovToken t = parser_.next(); !t.is_symbol("}"); t = parser_.next()) {
+        if (!t.is_symbol("["))
+            throw parser_.error_at(
+                t, "expected '[' or '}' in " + keyword.text + ", got " + describe(t));
+        if (map.stops.size() + 2 > kMaxColorMapEntries)
+            throw parser_.error_at(t, keyword.text + " has more than " +
+                                          std::to_string(kMaxColorMapEntries) + " entries");
+        const double a = parser_.finite_float("as the entry's value");
+        parser_.accept(",");
+        const PovToken& next = parser_.peek();
+        const PovValue* declared_value =
+            next.kind == PovTokenKind::identifier ? parser_.symbols().find(next.text) : nullptr;
+        if (next.kind == PovTokenKind::number ||
+            (declared_value && std::holds_alternative<double>(*declared_value))) {
+            // [a b color C1 color C2]: POV-Ray's old form, C1 at a and C2 at b.
+            const double b = parser_.finite_float("as the entry's end");
+            parser_.accept(",");
+            const PovVector c1 = parser_.color_expression("as the entry's first colour");
+            parser_.accept(",");
+            const PovVector c2 = parser_.color_expression("as the entry's second colour");
+            map.stops.push_back({a, c1});
+            map.stops.push_back({b, c2});
+        } else {
+            map.stops.push_back({a, parser_.color_expression("as the entry's colour")});
+        }
+        parser_.expect("]", "after the entry's colour");
+    }
+    if (map.stops.empty())
+        throw parser_.error_at(keyword, keyword.text + " needs at least one [value colour]");
+    // POV-Ray looks entries up in their order; written out of order, they are taken sorted.
+    std::stable_sort(map.stops.begin(), map.stops.end(),
+                     [](const PovColorStop& x, const PovColorStop& y) { return x.at < y.at; });
+    return map;
+}
+
+PovPigment PovItemReader::pattern(const PovToken& name) {
+    PovPigment p;
+    p.kind = PovPigment::Kind::pattern;
+    p.spec.kind = *pattern_kind(name.text);
+    p.spec.wave = default_wave(p.spec.kind);
+    p.map = black_to_white();
+    if (p.spec.kind == PatternKind::gradient) {
+        const PovToken at = parser_.peek();
+        const Vector3 d = to_vector(parser_.finite_vector("after gradient"));
+        if (!(length(d) > 0)) throw parser_.error_at(at, "gradient direction must not be zero");
+        p.spec.direction = normalize(d);
+    } else if (p.spec.kind == PatternKind::checker) {
+        // Blue and green unless given: the first in even cells.
+        PovVector first = PovVector::of(0, 5), second = PovVector::of(0, 5);
+        first[2] = 1;
+        second[1] = 1;
+        const PovToken& ahead = parser_.peek_item();
+        if (starts_color(ahead) || ahead.is_symbol("<") ||
+            (ahead.kind == PovTokenKind::identifier && parser_.symbols().find(ahead.text) &&
+             !declared<PovColorMap>(ahead))) {
+            first = parser_.color_expression("as the checker's first colour");
+            parser_.accept(",");
+            second = parser_.color_expression("as the checker's second colour");
+        }
+        p.map.stops = {{0, first}, {1, second}};
+    }
+    return p;
+}
+
+bool PovItemReader::pattern_modifier(const PovToken& token, PovPigment& p) {
+    const std::string& w = token.text;
+    PatternSpec& s = p.spec;
+    if (w == "color_map" || w == "colour_map") {
+        p.map = color_map(token);
+    } else if (w == "turbulence") {
+        s.turbulence = to_vector(parser_.finite_vector("after turbulence"));
+    } else if (w == "octaves") {
+        s.octaves = parser_.whole_number("after octaves", 1, kMaxOctaves);
+    } else if (w == "omega" || w == "lambda") {
+        (w == "omega" ? s.omega : s.lambda) = float(parser_.finite_float("after " + w));
+    } else if (w == "frequency" || w == "phase") {
+        (w == "frequency" ? s.frequency : s.phase) = float(parser_.finite_float("after " + w));
+    } else if (w == "ramp_wave") {
+        s.wave = PatternWave::ramp;
+    } else if (w == "triangle_wave") {
+        s.wave = PatternWave::triangle;
+    } else if (w == "sine_wave") {
+        s.wave = PatternWave::sine;
+    } else if (w == "scallop_wave") {
+        s.wave = PatternWave::scallop;
+    } else if (w == "cubic_wave") {
+        s.wave = PatternWave::cubic;
+    } else if (w == "poly_wave") {
+        s.wave = PatternWave::poly;
+        s.exponent = float(optional_amount());
+    } else if (w == "agate_turb" || w == "metric" || w == "offset") {
+        parser_.finite_float("after " + w);
+    } else if (w == "form") {
+        parser_.finite_vector("after form");
+    } else if (w == "solid") {
+    } else if (w == "noise_generator") {
+        parser_.whole_number("after noise_generator", 1, 3);
+    } else if (w == "quick_color" || w == "quick_colour") {
+        parser_.color_expression("after " + w);
+    } else {
+        return false;
+    }
+    if ((w == "form" || w == "metric" || w == "offset" || w == "solid") && !warned_crackle_) {
+        warnings_.push_back(
+            "crackle's form, metric, offset and solid are read, not used: "
+            "glint's crackle is the distance to the second nearest point less "
+            "the nearest's");
+        warned_crackle_ = true;
+    }
+    return true;
+}
+
+PovPigment PovItemReader::pigment(const PovPigment& base) {
+    parser_.expect("{", "after pigment");
+    PovPigment p = base;
+    const PovToken& first = parser_.peek_item();
+    if (auto d = declared<PovPigment>(first)) {
+        parser_.next();
+        p = *d;
+    } else if (first.kind == PovTokenKind::identifier && pattern_kind(first.text)) {
+        p = pattern(parser_.next());
+    } else if (first.kind == PovTokenKind::identifier && !starts_color(first) &&
+               !parser_.symbols().find(first.text)) {
+        // A pattern glint does not read yet: only an object that uses it stops the scene.
+        const PovToken pattern = parser_.next();
+        p = PovPigment{};
+        p.kind = PovPigment::Kind::unsupported;
+        p.pattern = pattern.text;
+        p.at = pattern.at;
+        parser_.skip_to_closing_brace(pattern);
+        return p;
+    } else if (!first.is_symbol("}")) {
+        p.kind = PovPigment::Kind::color;
+        p.color = parser_.color_expression("as the pigment's colour");
+    }
+    for (;;) {
+        const PovToken token = parser_.next();
+        if (token.is_symbol("}")) return p;
+        if (const auto step = transform_step(token)) {
+            p.transform = *step * p.transform;
+            continue;
+        }
+        if (token.kind == PovTokenKind::identifier && pattern_modifier(token, p)) continue;
+        // Another modifier (warp, pigment_map, ...): the pigment is one glint does not read
+        // yet, an error only where an object uses it.
+        PovPigment unread;
+        unread.kind = PovPigment::Kind::unsupported;
+        unread.pattern = token.text;
+        unread.at = token.at;
+        parser_.skip_to_closing_brace(token);
+        return unread;
+    }
+}
+
+}  // namespace glint

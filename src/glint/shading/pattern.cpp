@@ -1,0 +1,153 @@
+// POV-Ray's solid patterns: the value of each kind, then frequency, phase and wave, with the
+// point moved by turbulence first.
+#include "glint/shading/pattern.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+
+#include "glint/math/constants.h"
+#include "glint/math/interval.h"
+#include "glint/sampling/random.h"
+#include "glint/shading/noise.h"
+
+namespace glint {
+
+namespace {
+
+// Three noises far apart in space: a random vector field for turbulence.
+Vector3 noise_vector(Point3 p) {
+    return {perlin_noise(p), perlin_noise(p + Vector3{31.416f, -17.3f, 8.9f}),
+            perlin_noise(p + Vector3{-23.7f, 41.1f, -5.3f})};
+}
+
+Point3 turbulent(const PatternSpec& spec, Point3 p) {
+    Vector3 sum;
+    float weight = 1, scale = 1;
+    for (int i = 0; i < std::clamp(spec.octaves, 1, kMaxOctaves); ++i) {
+        sum += noise_vector(Point3{p.x * scale, p.y * scale, p.z * scale}) * weight;
+        weight *= spec.omega;
+        scale *= spec.lambda;
+    }
+    return p +
+           Vector3{spec.turbulence.x * sum.x, spec.turbulence.y * sum.y, spec.turbulence.z * sum.z};
+}
+
+// A point in the unit cell (x, y, z) at random, the same each time: crackle's feature point.
+Vector3 feature_point(std::int64_t x, std::int64_t y, std::int64_t z) {
+    std::uint64_t h =
+        mix64(std::uint64_t(x) * 0x9e3779b97f4a7c15ull ^ std::uint64_t(y) * 0xc2b2ae3d27d4eb4full ^
+              std::uint64_t(z) * 0x165667b19e3779f9ull);
+    const auto unit = [&h] {
+        h = mix64(h);
+        return float(h >> 40) * 0x1p-24f;
+    };
+    const float a = unit(), b = unit(), c = unit();
+    return {a, b, c};
+}
+
+// Worley's cellular noise: the second-nearest feature point's distance minus the nearest's.
+float crackle(Point3 p) {
+    const double fx = std::floor(double(p.x)), fy = std::floor(double(p.y)),
+                 fz = std::floor(double(p.z));
+    if (!(std::abs(fx) < 0x1p52 && std::abs(fy) < 0x1p52 && std::abs(fz) < 0x1p52)) return 0;
+    const auto cx = std::int64_t(fx), cy = std::int64_t(fy), cz = std::int64_t(fz);
+    const Vector3 local{float(double(p.x) - fx), float(double(p.y) - fy), float(double(p.z) - fz)};
+    float nearest = kInfinity, second = kInfinity;
+    for (int i = -1; i <= 1; ++i)
+        for (int j = -1; j <= 1; ++j)
+            for (int k = -1; k <= 1; ++k) {
+                const Vector3 at =
+                    Vector3{float(i), float(j), float(k)} + feature_point(cx + i, cy + j, cz + k);
+                const float d = length(at - local);
+                if (d < nearest) {
+                    second = nearest;
+                    nearest = d;
+                } else if (d < second) {
+                    second = d;
+                }
+            }
+    return std::clamp(second - nearest, 0.0f, 1.0f);
+}
+
+float raw_value(const PatternSpec& spec, Point3 p) {
+    const float x = p.x, y = p.y, z = p.z;
+    switch (spec.kind) {
+        case PatternKind::agate:
+            return 0.5f + 0.5f * std::sin(2 * kPi * (z + turbulence(p, spec.octaves)));
+        case PatternKind::bozo:
+            return std::clamp(0.5f + 0.5f * perlin_noise(p), 0.0f, 1.0f);
+        case PatternKind::boxed:
+            return std::max(0.0f, 1 - std::max({std::abs(x), std::abs(y), std::abs(z)}));
+        case PatternKind::checker: {
+            const double sum =
+                std::floor(double(x)) + std::floor(double(y)) + std::floor(double(z));
+            return std::abs(std::fmod(sum, 2.0)) == 1.0 ? 1.0f : 0.0f;
+        }
+        case PatternKind::crackle:
+            return crackle(p);
+        case PatternKind::cylindrical:
+            return std::max(0.0f, 1 - std::sqrt(x * x + z * z));
+        case PatternKind::gradient:
+            return dot(to_vector(p), spec.direction);
+        case PatternKind::granite:
+            return granite_pattern(p, spec.octaves);
+        case PatternKind::leopard: {
+            const float s = std::sin(x) + std::sin(y) + std::sin(z);
+            return s * s / 9;
+        }
+        case PatternKind::marble:
+            return x;
+        case PatternKind::onion:
+            return length(to_vector(p));
+        case PatternKind::planar:
+            return std::max(0.0f, 1 - std::abs(y));
+        case PatternKind::radial:
+            return -std::atan2(z, x) / (2 * kPi);
+        case PatternKind::spherical:
+            return std::max(0.0f, 1 - length(to_vector(p)));
+        case PatternKind::wood:
+            return std::sqrt(x * x + y * y);
+    }
+    return 0;
+}
+
+float shaped(const PatternSpec& spec, float f) {
+    switch (spec.wave) {
+        case PatternWave::ramp:
+            return f;
+        case PatternWave::triangle:
+            return f <= 0.5f ? 2 * f : 2 * (1 - f);
+        case PatternWave::sine:
+            return 0.5f * (1 + std::sin(2 * kPi * f));
+        case PatternWave::scallop:
+            return std::abs(std::sin(kPi * f));
+        case PatternWave::cubic:
+            return f * f * (3 - 2 * f);
+        case PatternWave::poly:
+            return std::pow(f, spec.exponent);
+    }
+    return f;
+}
+
+}  // namespace
+
+PatternWave default_wave(PatternKind kind) {
+    return kind == PatternKind::marble || kind == PatternKind::wood ? PatternWave::triangle
+                                                                    : PatternWave::ramp;
+}
+
+float pattern_value(const PatternSpec& spec, Point3 p) {
+    if (!is_finite(p)) return 0;
+    if (!(spec.turbulence == Vector3{})) p = turbulent(spec, p);
+    const float raw = raw_value(spec, p);
+    if (spec.kind == PatternKind::checker) return raw;
+    // In double, so that a far point keeps its fraction. Values in [0, 1] stay as they are (1
+    // too, as in POV-Ray); the others wrap round.
+    double f = double(raw) * spec.frequency + spec.phase;
+    if (!(f >= 0 && f <= 1)) f -= std::floor(f);
+    if (!(f >= 0 && f <= 1)) return 0;  // NaN
+    return std::clamp(shaped(spec, float(f)), 0.0f, 1.0f);
+}
+
+}  // namespace glint

@@ -1,0 +1,59 @@
+// Solid patterns as POV-Ray defines them: a number in [0, 1] at each point of space, shaped by
+// a wave, a frequency and a phase, and disturbed by turbulence, which a colour map turns into a
+// colour (pattern_texture.h). The geometric ones give POV-Ray's own values; the ones made of
+// noise (agate, bozo, crackle, granite) use glint's noise, so they look alike but differ in
+// detail from POV-Ray's.
+#pragma once
+
+#include "glint/math/vector.h"
+
+namespace glint {
+
+enum class PatternKind {
+    agate,        // bands along z bent by turbulence
+    bozo,         // smooth noise (POV-Ray's spotted is the same)
+    boxed,        // 1 - max(|x|, |y|, |z|)
+    checker,      // 0 or 1 by the parity of floor(x) + floor(y) + floor(z): no wave, no frequency
+    crackle,      // cells round random points: the distance to the second nearest minus the nearest
+    cylindrical,  // 1 - sqrt(x^2 + z^2)
+    gradient,     // p . direction
+    granite,      // turbulent noise (noise.h)
+    leopard,      // (sin x + sin y + sin z)^2 / 9
+    marble,       // x, by default through the triangle wave
+    onion,        // |p|
+    planar,       // 1 - |y|
+    radial,       // the angle round y, clockwise seen from above, over a turn
+    spherical,    // 1 - |p|
+    wood,         // sqrt(x^2 + y^2), by default through the triangle wave
+};
+
+// How the value, after frequency and phase and taken modulo 1 (f), becomes the map's index.
+enum class PatternWave {
+    ramp,      // f
+    triangle,  // 2f up to 1/2, then down
+    sine,      // (1 + sin(2 pi f)) / 2
+    scallop,   // |sin(pi f)|
+    cubic,     // 3f^2 - 2f^3
+    poly,      // f^exponent
+};
+
+struct PatternSpec {
+    PatternKind kind = PatternKind::gradient;
+    Vector3 direction{1, 0, 0};  // gradient: unit
+    PatternWave wave = PatternWave::ramp;
+    float exponent = 1;  // poly wave
+    float frequency = 1, phase = 0;
+    // Turbulence moves the point by this much times a vector of noise summed over octaves,
+    // each omega as strong and lambda times as fine as the one before (POV-Ray's defaults).
+    Vector3 turbulence{0, 0, 0};
+    int octaves = 6;  // in [1, kMaxOctaves]
+    float omega = 0.5f, lambda = 2;
+};
+
+// POV-Ray's default wave for the kind: triangle for marble and wood, ramp for the others.
+PatternWave default_wave(PatternKind kind);
+
+// The pattern's value at p (in the pattern's own space), in [0, 1]; 0 at a non-finite point.
+float pattern_value(const PatternSpec& spec, Point3 p);
+
+}  // namespace glint

@@ -1,0 +1,123 @@
+// POV-Ray's patterns against the values POV-Ray 3.7.0.10 itself gives: eval_pigment of
+// pigment { <kind> color_map { [0 rgb 0] [1 rgb 1] } } at the points below, as its #debug
+// printed them to four places.
+#include "glint/shading/pattern.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+
+namespace glint {
+namespace {
+
+PatternSpec spec_of(PatternKind kind) {
+    PatternSpec spec;
+    spec.kind = kind;
+    spec.wave = default_wave(kind);
+    return spec;
+}
+
+// The eight points POV-Ray was asked about: round the unit circle at height 0.3.
+Point3 probe(int i) {
+    const double a = i * std::acos(-1.0) / 4 + 0.1;
+    return {float(std::cos(a)), 0.3f, float(std::sin(a))};
+}
+
+void expect_povray(const PatternSpec& spec, const std::vector<float>& povray, float scale = 1) {
+    for (int i = 0; i < 8; ++i) {
+        const Point3 p = probe(i);
+        EXPECT_NEAR(pattern_value(spec, {p.x / scale, p.y / scale, p.z / scale}), povray[i], 6e-4)
+            << "point " << i;
+    }
+}
+
+TEST(Pattern, GeometricKindsGivePovRaysValues) {
+    expect_povray(spec_of(PatternKind::radial),
+                  {0.9841f, 0.8591f, 0.7341f, 0.6091f, 0.4841f, 0.3591f, 0.2341f, 0.1091f});
+    // wood scale 0.3: rings round z through the triangle wave.
+    expect_povray(spec_of(PatternKind::wood),
+                  {0.9283f, 0.6698f, 0.1078f, 0.4650f, 0.9283f, 0.6698f, 0.1078f, 0.4650f}, 0.3f);
+    // checker rgb 1 rgb 0 printed 1 1 0 0 ...: the first colour (index 0) in even cells.
+    expect_povray(spec_of(PatternKind::checker), {0, 0, 1, 1, 0, 0, 1, 1});
+    expect_povray(spec_of(PatternKind::planar), std::vector<float>(8, 0.7f));
+    expect_povray(spec_of(PatternKind::spherical), std::vector<float>(8, 0));
+    expect_povray(spec_of(PatternKind::cylindrical), std::vector<float>(8, 0));
+    expect_povray(spec_of(PatternKind::boxed),
+                  {0.0050f, 0.2258f, 0.0050f, 0.2258f, 0.0050f, 0.2258f, 0.0050f, 0.2258f});
+    PatternSpec twice = spec_of(PatternKind::radial);
+    twice.frequency = 2;
+    expect_povray(twice, {0.9682f, 0.7182f, 0.4682f, 0.2182f, 0.9682f, 0.7182f, 0.4681f, 0.2181f});
+}
+
+// Along x at -1.96875 + k / 4 (pixels of a 64-pixel render of a plane), as POV-Ray rendered them.
+TEST(Pattern, GradientWavesFrequencyAndPhase) {
+    PatternSpec gradient = spec_of(PatternKind::gradient);
+    const Point3 p{-1.96875f, -0.03125f, 0};  // the fraction of x: 1/32
+    EXPECT_NEAR(pattern_value(gradient, p), 0.03125f, 1e-6);
+    EXPECT_NEAR(pattern_value(gradient, {-1.71875f, 0, 0}), 0.28125f, 1e-6);
+    const auto wave = [&](PatternWave w, float exponent = 1) {
+        PatternSpec s = gradient;
+        s.wave = w;
+        s.exponent = exponent;
+        return pattern_value(s, p);
+    };
+    EXPECT_NEAR(wave(PatternWave::triangle), 0.0625f, 1e-6);
+    EXPECT_NEAR(wave(PatternWave::sine), 0.598f, 1e-3);
+    EXPECT_NEAR(wave(PatternWave::scallop), 0.098f, 1e-3);
+    EXPECT_NEAR(wave(PatternWave::cubic), 0.003f, 1e-3);
+    EXPECT_NEAR(wave(PatternWave::poly, 2), 0.001f, 1e-3);
+    PatternSpec shifted = gradient;
+    shifted.frequency = 2;
+    shifted.phase = 0.25f;
+    EXPECT_NEAR(pattern_value(shifted, p), 0.3125f, 1e-6);
+    // Marble is gradient x through the triangle wave; onion the distance from the origin.
+    EXPECT_NEAR(pattern_value(spec_of(PatternKind::marble), {-1.46875f, 0, 0}), 0.9375f, 1e-6);
+    EXPECT_NEAR(pattern_value(spec_of(PatternKind::onion), {-1.96875f, 0, 0}), 0.96875f, 1e-6);
+    EXPECT_NEAR(pattern_value(spec_of(PatternKind::leopard), p), 0.101f, 1e-3);
+    // 1 stays 1, as POV-Ray keeps it: planar's top is the map's end, not its start.
+    EXPECT_EQ(pattern_value(spec_of(PatternKind::planar), {0, 0, 0}), 1.0f);
+}
+
+TEST(Pattern, NoiseKindsStayInRangeAndAreTheSameEachTime) {
+    std::mt19937 rng(7);
+    std::uniform_real_distribution<float> u(-50, 50);
+    for (const PatternKind kind :
+         {PatternKind::agate, PatternKind::bozo, PatternKind::crackle, PatternKind::granite}) {
+        double sum = 0;
+        float low = 1, high = 0;
+        for (int i = 0; i < 4000; ++i) {
+            const Point3 p{u(rng), u(rng), u(rng)};
+            const float v = pattern_value(spec_of(kind), p);
+            ASSERT_GE(v, 0.0f);
+            ASSERT_LE(v, 1.0f);
+            ASSERT_EQ(v, pattern_value(spec_of(kind), p));
+            sum += v;
+            low = std::min(low, v);
+            high = std::max(high, v);
+        }
+        // Each spreads over a good part of the map (granite's values sit low, as POV-Ray's).
+        EXPECT_GT(high - low, 0.3f) << int(kind);
+        EXPECT_GT(sum / 4000, 0.05) << int(kind);
+    }
+    EXPECT_EQ(pattern_value(spec_of(PatternKind::crackle), {1e30f, 0, 0}), 0.0f);
+    EXPECT_EQ(pattern_value(spec_of(PatternKind::gradient), {NAN, 0, 0}), 0.0f);
+}
+
+TEST(Pattern, TurbulenceMovesThePointAndKeepsTheRange) {
+    PatternSpec calm = spec_of(PatternKind::gradient);
+    PatternSpec stirred = calm;
+    stirred.turbulence = {0.5f, 0.5f, 0.5f};
+    int moved = 0;
+    for (int i = 0; i < 100; ++i) {
+        const Point3 p{0.137f * float(i), 0.3f, 0.71f * float(i)};
+        const float v = pattern_value(stirred, p);
+        EXPECT_GE(v, 0.0f);
+        EXPECT_LE(v, 1.0f);
+        moved += std::abs(v - pattern_value(calm, p)) > 1e-3f;
+    }
+    EXPECT_GT(moved, 80);
+}
+
+}  // namespace
+}  // namespace glint
