@@ -34,7 +34,7 @@ TEST_P(PovReference, MatchesPovRaysRender) {
     EXPECT_GE(psnr, 30) << describe(d) << "\n  rendered: " << out;
 }
 
-INSTANTIATE_TEST_SUITE_P(Scenes, PovReference, testing::Values("basics", "patterns"));
+INSTANTIATE_TEST_SUITE_P(Scenes, PovReference, testing::Values("basics", "patterns", "sky"));
 
 }  // namespace
 }  // namespace glint

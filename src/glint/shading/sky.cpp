@@ -79,6 +79,11 @@ Color integrated_mean(const SkyImage& sky) {
 
 }  // namespace
 
+Vector3 sky_image_direction(Point2 uv) {
+    float sin_theta = 0;
+    return image_direction(uv, &sin_theta);
+}
+
 Sky::Sky(Color uniform) : mean_(uniform) {}
 
 Sky::Sky(const SkyImage& image)

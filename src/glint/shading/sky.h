@@ -23,6 +23,10 @@ struct SkyImage {
     Color scale{1, 1, 1};                // multiplies every pixel
 };
 
+// The direction (unit) that the point uv of an equirectangular image shows, before rotation:
+// what a sky is baked from.
+Vector3 sky_image_direction(Point2 uv);
+
 class Sky {
 public:
     Sky() = default;  // black

@@ -143,6 +143,8 @@ TEST(PovExpressions, ColoursAreFiveComponentVectors) {
         std::vector<std::string>{"1.0,0.0,0.5,0.0,0.2"});
     EXPECT_EQ(debug("#declare C = rgbt <0, 1, 0, 0.7>; #debug str(C.transmit + C.green, 0, 1)"),
               std::vector<std::string>{"1.7"});
+    EXPECT_EQ(debug("#declare V = < -1 2 (1 + 2) >; #debug vstr(3, V, \",\", 0, 0)"),
+              std::vector<std::string>{"-1,2,3"});
     // As POV-Ray 3.7 prints it: single components after rgb change it (another rgb starts the
     // next colour: PovScene.CommasBetweenValuesMayBeLeftOut).
     EXPECT_EQ(debug("#declare C = color rgb <1, 0.5, 0.25> green 0.1 filter 0.3;"

@@ -317,6 +317,31 @@ TEST(PovScene, PatternsArePlacedByTheirObjectsTransforms) {
               std::string::npos);
 }
 
+// A sky_sphere is baked into glint's sky image: its layers over the background, and emission.
+TEST(PovScene, SkySpheresBecomeTheSkyImage) {
+    const Scene s = parse(R"(
+        #version 3.7;
+        #declare Sky = sky_sphere { pigment { gradient y color_map { [0 rgb <1, 0, 0>] [1 rgb <0, 0, 1>] } } }
+        background { rgb <0, 1, 0> }
+        sky_sphere { Sky pigment { rgbt <1, 1, 1, 0.75> } emission 2 })");
+    ASSERT_TRUE(s.sky.has_value());
+    const Sky sky(*s.sky);
+    // Straight up: blue, a quarter of it through the white layer, three quarters white, doubled.
+    const Color up = sky.radiance({0, 1, 0});
+    EXPECT_NEAR(up.r, 2 * 0.25, 0.01);
+    EXPECT_NEAR(up.b, 2 * (0.25 + 0.75), 0.01);
+    // Just above the horizon the gradient is y: mostly red below the layer.
+    const float y = 0.2f / std::sqrt(1.04f);
+    EXPECT_NEAR(sky.radiance({1, 0.2f, 0}).r, 2 * (0.25 + 0.75 * (1 - y)), 0.02);
+    // A transparent sky shows the background.
+    const Scene clear =
+        parse("#version 3.7; background { rgb <0, 1, 0> } sky_sphere { pigment { rgbt 1 } }");
+    EXPECT_NEAR(Sky(*clear.sky).radiance({0, 0, 1}).g, 1, 1e-4);
+    EXPECT_NE(error_of("sky_sphere { sphere { 0, 1 } }")
+                  .find("\"sphere\" is not supported in a sky_sphere yet"),
+              std::string::npos);
+}
+
 TEST(PovScene, LayeredTexturesKeepTheBottomLayer) {
     const Scene s = parse(R"(
         #declare Base = texture { pigment { rgb <0, 0, 1> } } texture { pigment { rgbt <1, 1, 1, 0.5> } }

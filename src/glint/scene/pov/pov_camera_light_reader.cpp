@@ -1,5 +1,5 @@
-// Reads POV-Ray's camera and light_source blocks as written; pov_scene.cpp aims the camera and
-// maps the lights onto glint's.
+// Reads POV-Ray's camera, light_source and sky_sphere blocks as written; pov_scene.cpp aims the
+// camera and maps the lights onto glint's, pov_sky.cpp bakes the sky.
 #include <memory>
 
 #include "glint/scene/pov/pov_item_reader.h"
@@ -56,6 +56,29 @@ PovCamera PovItemReader::camera(const PovToken& keyword) {
                                    {kSeeCompatibility});
     }
     return c;
+}
+
+PovSkySphere PovItemReader::sky_sphere(const PovToken& keyword) {
+    parser_.expect("{", "after sky_sphere");
+    PovSkySphere sky;
+    if (auto declared_sky = declared<PovSkySphere>(parser_.peek_item())) {
+        parser_.next();
+        sky = *declared_sky;
+    }
+    for (PovToken t = parser_.next(); !t.is_symbol("}"); t = parser_.next()) {
+        if (t.is_word("pigment"))
+            sky.pigments.push_back(pigment({}));
+        else if (t.is_word("emission"))
+            sky.emission = parser_.color_expression("after emission");
+        else if (const auto step = transform_step(t))
+            sky.transform = *step * sky.transform;
+        else if (t.kind == PovTokenKind::end)
+            throw parser_.error_at(keyword, "sky_sphere { is not closed by }");
+        else
+            throw parser_.error_at(t, describe(t) + " is not supported in a sky_sphere yet",
+                                   {kSeeCompatibility});
+    }
+    return sky;
 }
 
 PovLight PovItemReader::light_source(const PovToken& keyword) {

@@ -321,11 +321,18 @@ PovValue PovParser::vector_literal(const PovToken& open) {
     in_vector_ = true;
     PovVector v;
     v.size = 0;
+    // Commas between components may be left out, as in POV-Ray: `< -1 0 0 >`.
+    const auto another = [this] {
+        if (accept(",")) return true;
+        const PovToken& t = peek();
+        return t.kind == PovTokenKind::number || t.kind == PovTokenKind::identifier ||
+               t.is_symbol("(") || t.is_symbol("-") || t.is_symbol("+");
+    };
     do {
         const PovToken at = peek();
         if (v.size == 5) throw error_at(at, "a vector has at most 5 components");
         v[v.size++] = float_of(expression(), at, "as a vector component");
-    } while (accept(","));
+    } while (another());
     in_vector_ = was_in_vector;
     expect(">", "to close the vector");
     if (v.size < 2) throw error_at(open, "a vector has at least 2 components");

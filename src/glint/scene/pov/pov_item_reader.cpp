@@ -132,6 +132,7 @@ std::optional<PovItem> PovItemReader::read(const PovToken& keyword) {
     }
     if (starts_object(w)) return object(keyword);
     if (w == "camera") return camera(keyword);
+    if (w == "sky_sphere") return sky_sphere(keyword);
     if (w == "texture") {
         PovTexture bottom = texture({});
         // Layers over it (`texture { } texture { }`): the bottom one is kept. A lookahead past

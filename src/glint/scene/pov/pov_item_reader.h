@@ -31,6 +31,7 @@ public:
     PovInterior interior(const PovInterior& base);
     PovCamera camera(const PovToken& keyword);
     PovLight light_source(const PovToken& keyword);
+    PovSkySphere sky_sphere(const PovToken& keyword);
     // translate, rotate, scale, matrix or transform, whose keyword has been read; nothing for
     // another word.
     std::optional<Transform> transform_step(const PovToken& keyword);

@@ -53,6 +53,14 @@ struct PovPigment {
     Transform transform;                    // where the pattern lies, relative to the object
 };
 
+// sky_sphere: pigments layered from the first up, seen in each direction as at the point of the
+// unit sphere there, moved by the transform; scaled by emission.
+struct PovSkySphere {
+    std::vector<PovPigment> pigments;
+    Transform transform;
+    PovVector emission = PovVector::of(1, 5);
+};
+
 struct PovTexture {
     PovPigment pigment;
     PovFinish finish;
@@ -122,7 +130,7 @@ struct PovUnread {
 };
 
 using PovItem = std::variant<PovObject, PovTexture, PovPigment, PovFinish, PovInterior, Transform,
-                             PovUnread, PovCamera, PovColorMap>;
+                             PovUnread, PovCamera, PovColorMap, PovSkySphere>;
 
 // A declared item as an identifier's value holds it.
 struct PovItemRef {

@@ -11,6 +11,7 @@
 #include <tuple>
 
 #include "glint/scene/pov/pov_item_reader.h"
+#include "glint/scene/pov/pov_sky.h"
 #include "glint/scene/quote.h"
 #include "glint/scene/scene_error.h"
 
@@ -44,7 +45,7 @@ double dot3(const PovVector& a, const PovVector& b) {
 
 // POV-Ray's scene items, besides objects, that glint does not read yet: their error says so.
 bool not_read_yet(const PovToken& token) {
-    static const std::string_view kNotYet[] = {"fog", "media", "photons", "rainbow", "sky_sphere"};
+    static const std::string_view kNotYet[] = {"fog", "media", "photons", "rainbow"};
     return token.kind == PovTokenKind::identifier &&
            std::find(std::begin(kNotYet), std::end(kNotYet), token.text) != std::end(kNotYet);
 }
@@ -80,6 +81,8 @@ public:
             if (t.is_symbol(";")) continue;
             if (w == "camera")
                 camera(items_.camera(t));
+            else if (w == "sky_sphere")
+                sky_ = items_.sky_sphere(t);
             else if (w == "background")
                 background(t);
             else if (w == "global_settings")
@@ -98,7 +101,7 @@ public:
         }
         for (const std::string& message : parser_.messages())
             scene_.warnings.push_back("#debug: " + message);
-        decode_colors();
+        decode_colors_and_bake_sky();
         if (any_area_light_) scene_.settings.integrator = IntegratorKind::distributed;
         return std::move(scene_);
     }
@@ -397,27 +400,31 @@ private:
     // POV-Ray reads a scene's colours as encoded with assumed_gamma, and a scene older than
     // 3.7 that gives none is not gamma-corrected at all: its colour values are the image's.
     // glint renders in linear light, so the colours are decoded first (2.2 for an old scene:
-    // exact for one light on one surface, whose product the encoding gives back).
-    void decode_colors() {
+    // exact for one light on one surface, whose product the encoding gives back). The sky is
+    // baked last, from decoded colours.
+    void decode_colors_and_bake_sky() {
         const std::optional<double> version = parser_.scene_version();
-        const double gamma = assumed_gamma_               ? *assumed_gamma_
-                             : version && *version >= 3.7 ? 1
-                                                          : 2.2;
-        if (gamma == 1) return;
-        const auto decode = [g = float(gamma)](Color c) {
-            return Color{std::pow(std::max(c.r, 0.0f), g), std::pow(std::max(c.g, 0.0f), g),
-                         std::pow(std::max(c.b, 0.0f), g)};
+        const float gamma = float(assumed_gamma_               ? *assumed_gamma_
+                                  : version && *version >= 3.7 ? 1
+                                                               : 2.2);
+        const auto decode = [gamma](Color c) {
+            if (gamma == 1) return c;
+            return Color{std::pow(std::max(c.r, 0.0f), gamma), std::pow(std::max(c.g, 0.0f), gamma),
+                         std::pow(std::max(c.b, 0.0f), gamma)};
         };
-        for (Material& m : scene_.materials) {
-            if (auto* color = std::get_if<Color>(&m.color)) *color = decode(*color);
-            if (auto* pattern = std::get_if<PatternTexture>(&m.color))
-                for (ColorStop& stop : pattern->colors) stop.color = decode(stop.color);
-            m.emission = decode(m.emission);
+        if (gamma != 1) {
+            for (Material& m : scene_.materials) {
+                if (auto* color = std::get_if<Color>(&m.color)) *color = decode(*color);
+                if (auto* pattern = std::get_if<PatternTexture>(&m.color))
+                    for (ColorStop& stop : pattern->colors) stop.color = decode(stop.color);
+                m.emission = decode(m.emission);
+            }
+            for (Light& light : scene_.lights)
+                std::visit([&](auto& l) { l.color = decode(l.color); }, light);
+            scene_.settings.background = decode(scene_.settings.background);
+            scene_.ambient = decode(scene_.ambient);
         }
-        for (Light& light : scene_.lights)
-            std::visit([&](auto& l) { l.color = decode(l.color); }, light);
-        scene_.settings.background = decode(scene_.settings.background);
-        scene_.ambient = decode(scene_.ambient);
+        if (sky_) scene_.sky = bake_sky(*sky_, scene_.settings.background, decode);
     }
 
     // The lights inside a CSG's operands, at any depth.
@@ -441,6 +448,7 @@ private:
     std::map<MaterialKey, std::uint32_t> materials_;
     bool any_area_light_ = false;
     std::optional<double> assumed_gamma_;
+    std::optional<PovSkySphere> sky_;
 };
 
 }  // namespace

@@ -1,0 +1,57 @@
+// Baking a sky_sphere: its pigments seen from the centre of the unit sphere, pixel by pixel.
+#include "glint/scene/pov/pov_sky.h"
+
+#include <algorithm>
+#include <memory>
+
+#include "glint/math/interval.h"
+
+namespace glint {
+
+PovVector pigment_color(const PovPigment& pigment, Point3 p) {
+    if (pigment.kind != PovPigment::Kind::pattern) return pigment.color;
+    const float t = pattern_value(pigment.spec, pigment.transform.inverse()(p));
+    const std::vector<PovColorStop>& stops = pigment.map.stops;
+    // As color_at (pattern_texture.h), over all five components.
+    const auto after = std::upper_bound(stops.begin(), stops.end(), double(t),
+                                        [](double v, const PovColorStop& s) { return v < s.at; });
+    if (after == stops.begin()) return stops.front().color;
+    if (after == stops.end()) return stops.back().color;
+    const PovColorStop& a = *(after - 1);
+    const PovColorStop& b = *after;
+    const double w = (t - a.at) / (b.at - a.at);
+    PovVector c = PovVector::of(0, 5);
+    for (int i = 0; i < 5; ++i) c[i] = a.color[i] * (1 - w) + b.color[i] * w;
+    return c;
+}
+
+SkyImage bake_sky(const PovSkySphere& sky, Color background,
+                  const std::function<Color(Color)>& decode, int width) {
+    const int height = width / 2;
+    auto image = std::make_shared<Image>(width, height);
+    const Transform to_sky = sky.transform.inverse();
+    const Color emission{float(sky.emission[0]), float(sky.emission[1]), float(sky.emission[2])};
+    for (int y = 0; y < height; ++y)
+        for (int x = 0; x < width; ++x) {
+            const Point2 uv{(float(x) + 0.5f) / float(width), (float(y) + 0.5f) / float(height)};
+            const Vector3 d = sky_image_direction(uv);
+            const Point3 p = to_sky(Point3{d.x, d.y, d.z});
+            Color c = background;
+            for (const PovPigment& pigment : sky.pigments) {
+                const PovVector v = pigment_color(pigment, p);
+                const Color rgb = decode(Color{float(v[0]), float(v[1]), float(v[2])});
+                const float filter = float(v[3]), transmit = float(v[4]);
+                c = rgb * std::max(0.0f, 1 - filter - transmit) +
+                    c * (rgb * filter + Color::gray(transmit));
+            }
+            const Color lit = c * emission;
+            // A sky image is finite and non-negative (sky.h).
+            const auto clean = [](float v) { return v > 0 && v < kInfinity ? v : 0.0f; };
+            image->at(x, y) = Color{clean(lit.r), clean(lit.g), clean(lit.b)};
+        }
+    SkyImage baked;
+    baked.image = std::move(image);
+    return baked;
+}
+
+}  // namespace glint
