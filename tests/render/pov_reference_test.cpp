@@ -34,7 +34,8 @@ TEST_P(PovReference, MatchesPovRaysRender) {
     EXPECT_GE(psnr, 30) << describe(d) << "\n  rendered: " << out;
 }
 
-INSTANTIATE_TEST_SUITE_P(Scenes, PovReference, testing::Values("basics", "patterns", "sky"));
+INSTANTIATE_TEST_SUITE_P(Scenes, PovReference,
+                         testing::Values("basics", "inverse", "patterns", "sky"));
 
 }  // namespace
 }  // namespace glint

@@ -342,6 +342,31 @@ TEST(PovScene, SkySpheresBecomeTheSkyImage) {
               std::string::npos);
 }
 
+// An inverse operand is the rest of space: intersection takes it away, difference keeps it; an
+// inverse plane is the other half-space.
+TEST(PovScene, InverseOperandsTurnTheirCsgOver) {
+    const Scene s = parse(R"(
+        plane { y, 1 inverse }
+        intersection { box { -1, 1 } sphere { 0, 1.2 inverse } }
+        difference { box { -1, 1 } plane { y, 0 inverse } })");
+    ASSERT_EQ(s.objects.size(), 3u);
+    const auto& plane = std::get<Plane>(s.objects[0].shape);
+    EXPECT_EQ(plane.normal, (Normal3{0, -1, 0}));
+    EXPECT_EQ(plane.point, (Point3{0, 1, 0}));
+    EXPECT_EQ(std::get<Csg>(s.objects[1].shape).operation, CsgOperation::difference);
+    // The plane turned over: the difference takes the upper half-space away.
+    EXPECT_EQ(std::get<Csg>(s.objects[2].shape).operation, CsgOperation::difference);
+    // The box's corners are left, outside the sphere; the difference keeps its lower half.
+    const Ray corner{{0.95f, 0.95f, -5}, {0, 0, 1}};
+    EXPECT_TRUE(intersect(s.objects[1].shape, corner, {0, kInfinity}).has_value());
+    EXPECT_FALSE(intersect(s.objects[1].shape, Ray{{0, 0, -5}, {0, 0, 1}}, {0, kInfinity}));
+    EXPECT_FALSE(intersect(s.objects[2].shape, Ray{{0, 0.5f, -5}, {0, 0, 1}}, {0, kInfinity}));
+    EXPECT_TRUE(intersect(s.objects[2].shape, Ray{{0, -0.5f, -5}, {0, 0, 1}}, {0, kInfinity}));
+    EXPECT_NE(error_of("merge { sphere { 0, 1 } sphere { x, 1 inverse } }")
+                  .find("supported only as an operand of intersection or difference"),
+              std::string::npos);
+}
+
 TEST(PovScene, LayeredTexturesKeepTheBottomLayer) {
     const Scene s = parse(R"(
         #declare Base = texture { pigment { rgb <0, 0, 1> } } texture { pigment { rgbt <1, 1, 1, 0.5> } }

@@ -246,6 +246,12 @@ PovObject PovItemReader::object(const PovToken& keyword) {
     modifiers(object);
     object.fallback = default_texture_;
     object.at = keyword.at;
+    // An inverse plane is the other half-space: the plane turned over.
+    if (auto* plane =
+            object.inverse && object.shape ? std::get_if<Plane>(&*object.shape) : nullptr) {
+        plane->normal = -plane->normal;
+        object.inverse = false;
+    }
     return object;
 }
 
@@ -459,6 +465,8 @@ void PovItemReader::modifiers(PovObject& object) {
             object.no_shadow = true;
         } else if (w == "hollow") {
             object.hollow = optional_amount() != 0;
+        } else if (w == "inverse") {
+            object.inverse = !object.inverse;
         } else if (w == "bounded_by") {
             // Only a hint for POV-Ray's own bounding: the object is read and dropped.
             parser_.skip_braced(token);

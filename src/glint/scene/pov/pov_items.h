@@ -117,6 +117,7 @@ struct PovObject {
     std::shared_ptr<const PovInterior> interior;
     bool no_shadow = false;
     bool hollow = false;
+    bool inverse = false;  // inside and outside swapped: what a CSG keeps of it turns over
     std::shared_ptr<const PovUnread> unread;  // an object glint does not read yet: its name, place
     std::shared_ptr<const PovLight> light;    // a light_source, placed as objects are
     PovPosition at;                           // where it was written

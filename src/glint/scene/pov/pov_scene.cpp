@@ -339,28 +339,58 @@ private:
         if (object.shape) {
             shape = *object.shape;
         } else {
-            const CsgOperation op =
-                object.csg == PovObject::Csg::merge          ? CsgOperation::merge
-                : object.csg == PovObject::Csg::intersection ? CsgOperation::intersection
-                : object.csg == PovObject::Csg::difference   ? CsgOperation::difference
-                                                             : CsgOperation::union_of;
             // Lights among the operands shine (add_lights) but are no part of the solid.
-            std::vector<Shape> operands;
+            std::vector<const PovObject*> operands;
             for (const auto& child : object.children)
-                if (!child->light) operands.push_back(placed_shape(*child));
+                if (!child->light) operands.push_back(child.get());
             if (operands.empty())
                 throw files_.error_at(object.at, "a CSG of lights alone has no surface");
-            shape = operands[0];
-            for (std::size_t i = 1; i < operands.size(); ++i) {
-                Csg csg;
-                csg.operation = op;
-                csg.a = std::make_shared<const Shape>(std::move(shape));
-                csg.b = std::make_shared<const Shape>(std::move(operands[i]));
-                shape = csg;
-            }
+            shape = csg_of(object, operands);
         }
         if (object.transform == Transform{}) return shape;
         return Transformed(object.transform, std::make_shared<const Shape>(std::move(shape)));
+    }
+
+    // POV-Ray's CSG onto glint's. An inverse operand is the rest of space: an intersection
+    // takes it away, a difference keeps it (difference { A B } is intersection { A, B inverse }).
+    Shape csg_of(const PovObject& object, const std::vector<const PovObject*>& operands) {
+        const bool intersection = object.csg == PovObject::Csg::intersection;
+        const bool difference = object.csg == PovObject::Csg::difference;
+        const CsgOperation op = object.csg == PovObject::Csg::merge ? CsgOperation::merge
+                                : intersection                      ? CsgOperation::intersection
+                                : difference                        ? CsgOperation::difference
+                                                                    : CsgOperation::union_of;
+        const auto combine = [](Shape a, Shape b, CsgOperation operation) {
+            Csg csg;
+            csg.operation = operation;
+            csg.a = std::make_shared<const Shape>(std::move(a));
+            csg.b = std::make_shared<const Shape>(std::move(b));
+            return Shape{csg};
+        };
+        // The first operand that is not inverse starts; an intersection may list it anywhere.
+        std::size_t first = 0;
+        if (intersection)
+            while (first < operands.size() && operands[first]->inverse) ++first;
+        if (first == operands.size() || operands[first]->inverse)
+            throw files_.error_at(operands[std::min(first, operands.size() - 1)]->at,
+                                  "an inverse object is supported only as an operand of "
+                                  "intersection or difference, after one that is not",
+                                  {"docs/povray.md lists what glint reads"});
+        Shape shape = placed_shape(*operands[first]);
+        for (std::size_t i = 0; i < operands.size(); ++i) {
+            if (i == first) continue;
+            const PovObject& operand = *operands[i];
+            if (operand.inverse && !intersection && !difference)
+                throw files_.error_at(operand.at,
+                                      "an inverse object is supported only as an operand of "
+                                      "intersection or difference",
+                                      {"docs/povray.md lists what glint reads"});
+            const CsgOperation applied = !operand.inverse ? op
+                                         : intersection   ? CsgOperation::difference
+                                                          : CsgOperation::intersection;
+            shape = combine(std::move(shape), placed_shape(operand), applied);
+        }
+        return shape;
     }
 
     // `texture_frame`: where the texture handed down lies (its space to the scene's). An
