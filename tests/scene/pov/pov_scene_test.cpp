@@ -383,13 +383,19 @@ TEST(PovScene, DefaultTexturesApplyToLaterObjectsWithoutOne) {
         sphere { 0, 1 }
         #default { pigment { rgb <1, 0, 0> } finish { ambient 0.3 } }
         sphere { 0, 1 }
-        sphere { 0, 1 pigment { rgb 1 } })");
-    ASSERT_EQ(s.objects.size(), 3u);
+        sphere { 0, 1 pigment { rgb 1 } }
+        #declare Shiny = finish { phong 1 }
+        sphere { 0, 1 texture { pigment { rgb 1 } finish { Shiny } } })");
+    ASSERT_EQ(s.objects.size(), 4u);
     EXPECT_EQ(std::get<Color>(s.materials[s.objects[0].material].color), (Color{0, 0, 0}));
     const Material& red = s.materials[s.objects[1].material];
     EXPECT_EQ(std::get<Color>(red.color), (Color{1, 0, 0}));
     EXPECT_FLOAT_EQ(red.ka, 0.3f);
     EXPECT_EQ(std::get<Color>(s.materials[s.objects[2].material].color), (Color{1, 1, 1}));
+    // A texture, pigment or finish written after #default starts from its values, as in POV-Ray.
+    EXPECT_FLOAT_EQ(s.materials[s.objects[2].material].ka, 0.3f);
+    EXPECT_FLOAT_EQ(s.materials[s.objects[3].material].ka, 0.3f);
+    EXPECT_FLOAT_EQ(s.materials[s.objects[3].material].ks, 1);
 }
 
 }  // namespace

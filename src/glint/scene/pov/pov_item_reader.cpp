@@ -134,20 +134,20 @@ std::optional<PovItem> PovItemReader::read(const PovToken& keyword) {
     if (w == "camera") return camera(keyword);
     if (w == "sky_sphere") return sky_sphere(keyword);
     if (w == "texture") {
-        PovTexture bottom = texture({});
+        PovTexture bottom = texture(*default_texture_);
         // Layers over it (`texture { } texture { }`): the bottom one is kept. A lookahead past
         // a complete value: a directive after it must not run before the value is declared.
         while (parser_.peek().is_word("texture")) {
             parser_.next();
-            texture({});
+            texture(*default_texture_);
             if (!warned_layers_)
                 warnings_.push_back("layered textures: only each object's bottom layer is used");
             warned_layers_ = true;
         }
         return bottom;
     }
-    if (w == "pigment") return pigment({});
-    if (w == "finish") return finish({});
+    if (w == "pigment") return pigment(default_texture_->pigment);
+    if (w == "finish") return finish(default_texture_->finish);
     if (w == "interior") return interior({});
     if (w == "transform") {
         parser_.expect("{", "after transform");
@@ -441,19 +441,19 @@ void PovItemReader::modifiers(PovObject& object) {
             }
         } else if (w == "texture" && layered) {
             // A layer over the texture just given: the bottom layer is kept.
-            texture(PovTexture{});
+            texture(*default_texture_);
             if (!warned_layers_)
                 warnings_.push_back("layered textures: only each object's bottom layer is used");
             warned_layers_ = true;
         } else if (w == "texture") {
             object.texture = std::make_shared<const PovTexture>(
-                texture(object.texture ? *object.texture : PovTexture{}));
+                texture(object.texture ? *object.texture : *default_texture_));
         } else if (w == "pigment") {
-            PovTexture t = object.texture ? *object.texture : PovTexture{};
+            PovTexture t = object.texture ? *object.texture : *default_texture_;
             t.pigment = pigment(t.pigment);
             object.texture = std::make_shared<const PovTexture>(t);
         } else if (w == "finish") {
-            PovTexture t = object.texture ? *object.texture : PovTexture{};
+            PovTexture t = object.texture ? *object.texture : *default_texture_;
             t.finish = finish(t.finish);
             object.texture = std::make_shared<const PovTexture>(t);
         } else if (w == "interior") {
