@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <functional>
 #include <numbers>
 
 #include "glint/scene/scene_error.h"
@@ -117,10 +118,24 @@ TEST(PovScene, TransformsCsgAndDeclaredObjects) {
     EXPECT_EQ(placed.world_from_object()(Point3{1, 0, 0}), (Point3{2, 0, 5}));
     EXPECT_FALSE(s.objects[0].casts_shadow);
     EXPECT_TRUE(std::holds_alternative<Transformed>(s.objects[1].shape));
-    const auto& outer = std::get<Csg>(s.objects[3].shape);  // (box - sphere) - sphere
+    const auto& outer = std::get<Csg>(s.objects[3].shape);  // box - (sphere + sphere)
     EXPECT_EQ(outer.operation, CsgOperation::difference);
-    EXPECT_TRUE(std::holds_alternative<Csg>(*outer.a));
-    EXPECT_TRUE(std::holds_alternative<Sphere>(*outer.b));
+    EXPECT_TRUE(std::holds_alternative<Box>(*outer.a));
+    EXPECT_EQ(std::get<Csg>(*outer.b).operation, CsgOperation::union_of);
+}
+
+// Long CSGs (a polyhedron is an intersection of its faces' planes) become balanced trees: each
+// level of glint's CSG walks its operands' hits again, so depth, not count, sets the cost.
+TEST(PovScene, LongCsgsAreBalancedTrees) {
+    const Scene s = parse(R"(
+        intersection { #for (I, 0, 11) plane { x, 1 rotate <I * 30, I * 45, 0> } #end
+                       sphere { 0, 2 } })");
+    ASSERT_EQ(s.objects.size(), 1u);
+    const std::function<int(const Shape&)> depth = [&](const Shape& shape) {
+        const auto* csg = std::get_if<Csg>(&shape);
+        return csg ? 1 + std::max(depth(*csg->a), depth(*csg->b)) : 0;
+    };
+    EXPECT_EQ(depth(s.objects[0].shape), 4);  // 13 operands: ceil(log2 13)
 }
 
 TEST(PovScene, SmoothTrianglesCarryTheirNormals) {
@@ -363,7 +378,8 @@ TEST(PovScene, InverseOperandsTurnTheirCsgOver) {
     EXPECT_FALSE(intersect(s.objects[2].shape, Ray{{0, 0.5f, -5}, {0, 0, 1}}, {0, kInfinity}));
     EXPECT_TRUE(intersect(s.objects[2].shape, Ray{{0, -0.5f, -5}, {0, 0, 1}}, {0, kInfinity}));
     EXPECT_NE(error_of("merge { sphere { 0, 1 } sphere { x, 1 inverse } }")
-                  .find("supported only as an operand of intersection or difference"),
+                  .find("supported only as an operand of intersection, or of difference after its "
+                        "first"),
               std::string::npos);
 }
 

@@ -353,44 +353,52 @@ private:
 
     // POV-Ray's CSG onto glint's. An inverse operand is the rest of space: an intersection
     // takes it away, a difference keeps it (difference { A B } is intersection { A, B inverse }).
+    // So every CSG is what it keeps, less what it takes away; each side is a balanced tree, as
+    // glint's CSG walks its operands' hits again at every level: a chain of n levels (a
+    // polyhedron of planes) would cost exponentially in n, a tree costs in its depth, log n.
     Shape csg_of(const PovObject& object, const std::vector<const PovObject*>& operands) {
         const bool intersection = object.csg == PovObject::Csg::intersection;
         const bool difference = object.csg == PovObject::Csg::difference;
-        const CsgOperation op = object.csg == PovObject::Csg::merge ? CsgOperation::merge
-                                : intersection                      ? CsgOperation::intersection
-                                : difference                        ? CsgOperation::difference
-                                                                    : CsgOperation::union_of;
-        const auto combine = [](Shape a, Shape b, CsgOperation operation) {
-            Csg csg;
-            csg.operation = operation;
-            csg.a = std::make_shared<const Shape>(std::move(a));
-            csg.b = std::make_shared<const Shape>(std::move(b));
-            return Shape{csg};
-        };
-        // The first operand that is not inverse starts; an intersection may list it anywhere.
-        std::size_t first = 0;
-        if (intersection)
-            while (first < operands.size() && operands[first]->inverse) ++first;
-        if (first == operands.size() || operands[first]->inverse)
-            throw files_.error_at(operands[std::min(first, operands.size() - 1)]->at,
-                                  "an inverse object is supported only as an operand of "
-                                  "intersection or difference, after one that is not",
-                                  {"docs/povray.md lists what glint reads"});
-        Shape shape = placed_shape(*operands[first]);
+        std::vector<Shape> kept, taken;
         for (std::size_t i = 0; i < operands.size(); ++i) {
-            if (i == first) continue;
             const PovObject& operand = *operands[i];
-            if (operand.inverse && !intersection && !difference)
+            if (operand.inverse && !(intersection || (difference && i > 0)))
                 throw files_.error_at(operand.at,
                                       "an inverse object is supported only as an operand of "
-                                      "intersection or difference",
+                                      "intersection, or of difference after its first",
                                       {"docs/povray.md lists what glint reads"});
-            const CsgOperation applied = !operand.inverse ? op
-                                         : intersection   ? CsgOperation::difference
-                                                          : CsgOperation::intersection;
-            shape = combine(std::move(shape), placed_shape(operand), applied);
+            const bool keeps = intersection ? !operand.inverse
+                               : difference ? i == 0 || operand.inverse
+                                            : true;
+            (keeps ? kept : taken).push_back(placed_shape(operand));
         }
-        return shape;
+        if (kept.empty())
+            throw files_.error_at(object.at,
+                                  "an intersection of inverse objects alone is not supported",
+                                  {"docs/povray.md lists what glint reads"});
+        const CsgOperation op = object.csg == PovObject::Csg::merge ? CsgOperation::merge
+                                : intersection || difference        ? CsgOperation::intersection
+                                                                    : CsgOperation::union_of;
+        Shape shape = balanced(kept, 0, kept.size(), op);
+        if (taken.empty()) return shape;
+        return combined(std::move(shape), balanced(taken, 0, taken.size(), CsgOperation::union_of),
+                        CsgOperation::difference);
+    }
+
+    static Shape combined(Shape a, Shape b, CsgOperation operation) {
+        Csg csg;
+        csg.operation = operation;
+        csg.a = std::make_shared<const Shape>(std::move(a));
+        csg.b = std::make_shared<const Shape>(std::move(b));
+        return csg;
+    }
+
+    // The operands [begin, end) joined by `op` (associative) two halves at a time.
+    static Shape balanced(std::vector<Shape>& shapes, std::size_t begin, std::size_t end,
+                          CsgOperation op) {
+        if (end - begin == 1) return std::move(shapes[begin]);
+        const std::size_t middle = begin + (end - begin) / 2;
+        return combined(balanced(shapes, begin, middle, op), balanced(shapes, middle, end, op), op);
     }
 
     // `texture_frame`: where the texture handed down lies (its space to the scene's). An
