@@ -186,10 +186,13 @@ TEST(YamlScene, NamedInlineAndDefaultMaterialsAreShared) {
                               "  - {type: sphere, center: [9, 0, 0], radius: 1}\n"
                               "  - {type: sphere, center: [9, 0, 0], radius: 1, material: shiny}\n"
                               "materials:\n"  // after the objects: order in the file is free
-                              "  shiny: {ks: 0.9, shininess: 80, emission: [0.1, 0, 0]}\n");
+                              "  shiny: {ks: 0.9, shininess: 80, emission: [0.1, 0, 0],\n"
+                              "          brilliance: 3, metallic: 0.4}\n");
     ASSERT_EQ(scene.materials.size(), 3u);
     EXPECT_EQ(scene.materials[0].name, "shiny");
     EXPECT_EQ(scene.materials[0].ks, 0.9f);
+    EXPECT_EQ(scene.materials[0].brilliance, 3);
+    EXPECT_EQ(scene.materials[0].metallic, 0.4f);
     EXPECT_EQ(scene.materials[0].emission, (Color{0.1f, 0, 0}));
     EXPECT_EQ(scene.materials[1].name, "default");
     EXPECT_EQ(scene.materials[2].name, "(object 2)");

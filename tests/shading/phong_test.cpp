@@ -64,5 +64,27 @@ TEST(Phong, HighlightIsWhiteAndAddsToDiffuse) {
     expect_near(c, {0.745477f, 0.349497f, 0.349497f});
 }
 
+// POV-Ray's brilliance b: kd C (N.L)^b; at N.L = cos 45, b = 2 halves the cosine's square.
+TEST(Phong, BrillianceIsTheDiffuseCosinesExponent) {
+    EXPECT_NEAR(diffuse_factor(kN, kL, 2), 0.5f, 1e-6);
+    EXPECT_NEAR(diffuse_factor(kN, kL, 0.5f), 0.840896f, 1e-6);  // 0.7071^0.5
+    EXPECT_EQ(diffuse_factor(kN, Vector3{0, -1, 0}, 2), 0);
+    Material m = red();
+    m.ks = 0;
+    m.brilliance = 2;
+    expect_near(light_term(m, kRed, kN, kL, {0, 1, 0}, Color::gray(1)), {0.315f, 0.035f, 0.035f});
+}
+
+// POV-Ray's metallic: the highlight mixed from white towards the surface colour.
+TEST(Phong, MetallicTintsTheHighlight) {
+    Material m = red();
+    m.kd = 0;
+    m.metallic = 1;
+    const Vector3 mirror = normalize(Vector3{-1, 1, 0});
+    expect_near(light_term(m, kRed, kN, kL, mirror, Color::gray(1)), {0.27f, 0.03f, 0.03f});
+    m.metallic = 0.5f;
+    expect_near(highlight_color(m, kRed), {0.95f, 0.55f, 0.55f});
+}
+
 }  // namespace
 }  // namespace glint

@@ -27,8 +27,13 @@ struct Material {
     Texture color = Color{1, 1, 1};  // the surface colour; scales the ambient and diffuse terms
     float ka = 0.1f;                 // ambient coefficient
     float kd = 0.7f;                 // diffuse coefficient
-    float ks = 0;                    // specular (highlight) coefficient; the highlight is white
+    float ks = 0;                    // specular (highlight) coefficient
     float shininess = 20;            // highlight exponent n
+    // POV-Ray's finish: the exponent b of the diffuse term's (N.L)^b (1: Lambert's cosine), and
+    // how far the highlight takes the surface colour, from white (0) to the colour (1). The
+    // local model of the Whitted family reads them.
+    float brilliance = 1;
+    float metallic = 0;
     Highlight highlight = Highlight::blinn;
     float reflect = 0;   // kr, weight of the mirror-reflected ray
     float transmit = 0;  // kt, weight of the refracted ray

@@ -24,10 +24,11 @@ float specular_factor(Highlight model, Normal3 n, Vector3 to_light, Vector3 to_v
 
 Color light_term(const Material& m, Color surface_color, Normal3 n, Vector3 to_light,
                  Vector3 to_viewer, Color light_intensity) {
-    const float diffuse = m.kd * diffuse_factor(n, to_light);
+    const float diffuse = m.kd * diffuse_factor(n, to_light, m.brilliance);
     const float specular =
         m.ks > 0 ? m.ks * specular_factor(m.highlight, n, to_light, to_viewer, m.shininess) : 0;
-    return light_intensity * (diffuse * surface_color + Color::gray(specular));
+    return light_intensity *
+           (diffuse * surface_color + specular * highlight_color(m, surface_color));
 }
 
 }  // namespace glint

@@ -53,8 +53,10 @@ struct LightSampleRecord {
     bool blinn = true;                      // the highlight is Blinn's (H.N), else Phong's (R.V)
     Vector3 highlight_vector;               // H or R
     float highlight_cosine = 0;             // H.N or R.V before the exponent
-    Color diffuse;                          // shadow IL kd C (N.L)
-    Color highlight;                        // shadow IL ks spec^n
+    float brilliance = 1;                   // b of (N.L)^b
+    float metallic = 0;                     // the highlight's colour S: white to C
+    Color diffuse;                          // shadow IL kd C (N.L)^b
+    Color highlight;                        // shadow IL ks S spec^n
     Color term;                             // what the integrator added: exactly its value
 };
 

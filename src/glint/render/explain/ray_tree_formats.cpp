@@ -294,8 +294,10 @@ private:
             line(indent, text + ", IL " + read(s.intensity));
         }
         const std::string spec = s.blinn ? "(H.N)^n" : "(R.V)^n";
-        line(indent + 1, "diffuse kd C (N.L) IL " + read(s.diffuse) + ", highlight ks " + spec +
-                             " IL " + read(s.highlight) +
+        const std::string cosine = s.brilliance == 1 ? "(N.L)" : "(N.L)^" + read(s.brilliance);
+        const std::string tint = s.metallic == 0 ? "" : " S(metallic " + read(s.metallic) + ")";
+        line(indent + 1, "diffuse kd C " + cosine + " IL " + read(s.diffuse) + ", highlight ks" +
+                             tint + " " + spec + " IL " + read(s.highlight) +
                              (s.blinn ? " with H.N = " : " with R.V = ") +
                              read(s.highlight_cosine) + "; adds " + read(s.term));
     }
@@ -351,6 +353,7 @@ std::string light_sample_json(const LightSampleRecord& s) {
     f.add("highlight_model", s.blinn ? "\"blinn\"" : "\"phong\"");
     f.add("highlight_vector", exact(s.highlight_vector));
     f.add("highlight_cosine", exact(s.highlight_cosine));
+    f.add("brilliance", exact(s.brilliance)).add("metallic", exact(s.metallic));
     f.add("diffuse", exact(s.diffuse)).add("highlight", exact(s.highlight));
     return f.add("term", exact(s.term)).object();
 }

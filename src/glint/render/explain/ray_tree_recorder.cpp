@@ -117,8 +117,11 @@ LightSampleRecord RayTreeRecorder::sample_record(std::size_t light, const Surfac
     const float spec =
         m.ks > 0 ? m.ks * specular_factor(m.highlight, c.n, ls.to_light, c.to_viewer, m.shininess)
                  : 0;
-    r.diffuse = r.shadow * ls.intensity * (m.kd * diffuse_factor(c.n, ls.to_light) * c.color);
-    r.highlight = r.shadow * ls.intensity * Color::gray(spec);
+    r.brilliance = m.brilliance;
+    r.metallic = m.metallic;
+    r.diffuse =
+        r.shadow * ls.intensity * (m.kd * diffuse_factor(c.n, ls.to_light, m.brilliance) * c.color);
+    r.highlight = r.shadow * ls.intensity * (spec * highlight_color(m, c.color));
     return r;
 }
 

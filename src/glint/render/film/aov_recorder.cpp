@@ -51,14 +51,16 @@ void AovRecorder::hit(const SurfaceContext& c, const Hit& hit) {
 
 Color AovRecorder::diffuse_part(const SurfaceContext& c, const LightSample& ls, Color term) {
     const Material& m = *c.material;
-    const Color diffuse = m.kd * diffuse_factor(c.n, ls.to_light) * c.color;
-    const float highlight =
-        m.ks > 0 ? m.ks * specular_factor(m.highlight, c.n, ls.to_light, c.to_viewer, m.shininess)
-                 : 0;
-    const auto share = [&](float d, float t) {
-        return d + highlight > 0 ? t * (d / (d + highlight)) : 0.0f;
+    const Color diffuse = m.kd * diffuse_factor(c.n, ls.to_light, m.brilliance) * c.color;
+    const Color highlight =
+        m.ks > 0 ? m.ks * specular_factor(m.highlight, c.n, ls.to_light, c.to_viewer, m.shininess) *
+                       highlight_color(m, c.color)
+                 : Color{};
+    const auto share = [&](float d, float h, float t) {
+        return d + h > 0 ? t * (d / (d + h)) : 0.0f;
     };
-    return {share(diffuse.r, term.r), share(diffuse.g, term.g), share(diffuse.b, term.b)};
+    return {share(diffuse.r, highlight.r, term.r), share(diffuse.g, highlight.g, term.g),
+            share(diffuse.b, highlight.b, term.b)};
 }
 
 void AovRecorder::light(std::size_t, const SurfaceContext& c, const LightSample& ls, float,

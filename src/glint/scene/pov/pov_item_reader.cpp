@@ -530,7 +530,7 @@ PovFinish PovItemReader::finish(const PovFinish& base) {
         else if (w == "roughness")
             f.roughness = parser_.finite_float("after roughness");
         else if (w == "metallic")
-            f.metallic = optional_amount() != 0;
+            f.metallic = optional_amount();
         else if (w == "crand")
             parser_.finite_float("after crand");
         else if (w == "conserve_energy")
@@ -547,7 +547,7 @@ PovFinish PovItemReader::finish(const PovFinish& base) {
                     if (r.is_word("fresnel"))
                         f.fresnel = optional_amount() != 0;
                     else if (r.is_word("metallic"))
-                        f.metallic = optional_amount() != 0;
+                        optional_amount();  // tints the reflection: glint's is not tinted
                     else if (r.is_word("falloff") || r.is_word("exponent"))
                         parser_.finite_float("in reflection");
                     else

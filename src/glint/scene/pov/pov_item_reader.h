@@ -14,7 +14,7 @@ namespace glint {
 
 class PovItemReader {
 public:
-    // Warnings go to `warnings` ("brilliance 2 is read as 1").
+    // Warnings go to `warnings` ("layered textures: only each object's bottom layer is used").
     PovItemReader(PovParser& parser, std::vector<std::string>& warnings);
 
     // The item that `keyword` starts, or nothing when it starts none.

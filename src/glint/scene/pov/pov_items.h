@@ -27,7 +27,7 @@ struct PovFinish {
     double reflection = 0;
     double emission = 0;   // the pigment's colour given off, unlit
     bool fresnel = false;  // reflection { ... fresnel }
-    bool metallic = false;
+    double metallic = 0;   // the highlight's tint by the pigment
 };
 
 // One entry of a color_map: the colour (r, g, b, filter, transmit) from the value `at` on.

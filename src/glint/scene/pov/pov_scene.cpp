@@ -320,6 +320,8 @@ private:
         } else {
             m.ks = 0;
         }
+        m.brilliance = float(std::max(f.brilliance, 0.0));
+        m.metallic = float(std::clamp(f.metallic, 0.0, 1.0));
         m.reflect = float(std::clamp(f.reflection, 0.0, 1.0));
         if (f.emission > 0 && p.kind == PovPigment::Kind::color)
             m.emission = rgb(p.color) * float(f.emission);

@@ -263,6 +263,8 @@ Material read_material(const YamlSource& source, const ReadSandbox& sandbox, con
     m.kd = map.number_or("kd", m.kd);
     m.ks = map.number_or("ks", m.ks);
     m.shininess = map.number_or("shininess", m.shininess);
+    m.brilliance = map.number_or("brilliance", m.brilliance);
+    m.metallic = map.number_or("metallic", m.metallic);
     const std::string highlight =
         map.choice("highlight", kHighlights, "highlight", "highlights", "blinn");
     m.highlight = highlight == "phong" ? Highlight::phong : Highlight::blinn;
