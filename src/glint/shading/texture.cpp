@@ -34,7 +34,9 @@ struct Evaluate {
     }
     Color operator()(const ImageTexture& image) const { return sample(image, sp.uv, sp.footprint); }
     Color operator()(const NoiseTexture& noise) const { return glint::evaluate(noise, sp.p); }
-    Color operator()(const PatternTexture& pattern) const { return glint::evaluate(pattern, sp.p); }
+    Color operator()(const PatternTexturePtr& pattern) const {
+        return glint::evaluate(*pattern, sp.p);
+    }
 };
 
 }  // namespace

@@ -4,6 +4,7 @@
 // map (solid, placed by its own transform).
 #pragma once
 
+#include <memory>
 #include <variant>
 
 #include "glint/geometry/surface_point.h"
@@ -23,7 +24,10 @@ struct CheckerTexture {
     CheckerSpace space = CheckerSpace::solid;
 };
 
-using Texture = std::variant<Color, CheckerTexture, ImageTexture, NoiseTexture, PatternTexture>;
+// A pattern is held by pointer: its transform would double the size of every material.
+using PatternTexturePtr = std::shared_ptr<const PatternTexture>;
+
+using Texture = std::variant<Color, CheckerTexture, ImageTexture, NoiseTexture, PatternTexturePtr>;
 
 // evaluate() for the kinds other than a constant colour.
 Color evaluate_pattern(const Texture& texture, const SurfacePoint& sp);

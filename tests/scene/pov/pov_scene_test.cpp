@@ -272,7 +272,8 @@ TEST(PovScene, CommasBetweenValuesMayBeLeftOut) {
         object { sphere { <0, 0, 0> 1 } pigment { checker rgb 1 rgb 0 } })");
     ASSERT_EQ(s.objects.size(), 3u);
     EXPECT_EQ(std::get<Box>(s.objects[0].shape).max, (Point3{1, 2, 3}));
-    const auto& checker = std::get<PatternTexture>(s.materials[s.objects[2].material].color);
+    const PatternTexture& checker =
+        *std::get<PatternTexturePtr>(s.materials[s.objects[2].material].color);
     EXPECT_EQ(checker.spec.kind, PatternKind::checker);
     ASSERT_EQ(checker.colors.size(), 2u);
     EXPECT_EQ(checker.colors[0].color, (Color{1, 1, 1}));
@@ -288,7 +289,8 @@ TEST(PovScene, PatternsReadTheirMapsWavesAndTurbulence) {
         sphere { 0, 1 pigment { marble color_map { [0 0.5 color rgb 0 color rgb 1] } } }
         sphere { 0, 1 pigment { spotted } })");
     ASSERT_EQ(s.objects.size(), 3u);
-    const auto& gradient = std::get<PatternTexture>(s.materials[s.objects[0].material].color);
+    const PatternTexture& gradient =
+        *std::get<PatternTexturePtr>(s.materials[s.objects[0].material].color);
     EXPECT_EQ(gradient.spec.kind, PatternKind::gradient);
     EXPECT_EQ(gradient.spec.direction, (Vector3{0, 1, 0}));
     EXPECT_EQ(gradient.spec.frequency, 2);
@@ -302,11 +304,13 @@ TEST(PovScene, PatternsReadTheirMapsWavesAndTurbulence) {
     ASSERT_EQ(gradient.colors.size(), 2u);
     EXPECT_EQ(gradient.colors[0].at, 0);
     EXPECT_EQ(gradient.colors[1].color, (Color{1, 1, 1}));
-    const auto& marble = std::get<PatternTexture>(s.materials[s.objects[1].material].color);
+    const PatternTexture& marble =
+        *std::get<PatternTexturePtr>(s.materials[s.objects[1].material].color);
     EXPECT_EQ(marble.spec.wave, PatternWave::triangle);
     ASSERT_EQ(marble.colors.size(), 2u);  // the old form's two colours
     EXPECT_EQ(marble.colors[1].at, 0.5f);
-    const auto& spotted = std::get<PatternTexture>(s.materials[s.objects[2].material].color);
+    const PatternTexture& spotted =
+        *std::get<PatternTexturePtr>(s.materials[s.objects[2].material].color);
     EXPECT_EQ(spotted.spec.kind, PatternKind::bozo);
     EXPECT_EQ(spotted.colors.back().color, (Color{1, 1, 1}));  // POV-Ray's default map
 }
@@ -319,11 +323,13 @@ TEST(PovScene, PatternsArePlacedByTheirObjectsTransforms) {
         sphere { 0, 1 pigment { gradient x scale 2 } translate <5, 0, 0> }
         union { sphere { 0, 1 } sphere { x, 1 } pigment { gradient x } translate <0, 3, 0> })");
     ASSERT_EQ(s.objects.size(), 3u);
-    const auto& moved = std::get<PatternTexture>(s.materials[s.objects[0].material].color);
+    const PatternTexture& moved =
+        *std::get<PatternTexturePtr>(s.materials[s.objects[0].material].color);
     EXPECT_EQ(moved.to_pattern(Point3{7, 0, 0}), (Point3{1, 0, 0}));
     // One material for both children: the same texture in the same frame.
     EXPECT_EQ(s.objects[1].material, s.objects[2].material);
-    const auto& shared = std::get<PatternTexture>(s.materials[s.objects[1].material].color);
+    const PatternTexture& shared =
+        *std::get<PatternTexturePtr>(s.materials[s.objects[1].material].color);
     EXPECT_EQ(shared.to_pattern(Point3{0.25f, 3, 0}), (Point3{0.25f, 0, 0}));
     EXPECT_NE(error_of("sphere { 0, 1 pigment { gradient 0 } }")
                   .find("gradient direction must not be zero"),

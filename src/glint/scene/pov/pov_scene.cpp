@@ -297,11 +297,11 @@ private:
         Material m;
         m.name = "pov" + std::to_string(scene_.materials.size());
         if (placed) {
-            PatternTexture pattern;
-            pattern.spec = p.spec;
+            auto pattern = std::make_shared<PatternTexture>();
+            pattern->spec = p.spec;
             for (const PovColorStop& stop : p.map.stops)
-                pattern.colors.push_back({float(stop.at), rgb(stop.color)});
-            pattern.to_pattern = (frame * p.transform).inverse();
+                pattern->colors.push_back({float(stop.at), rgb(stop.color)});
+            pattern->to_pattern = (frame * p.transform).inverse();
             m.color = std::move(pattern);
         } else {
             m.color = rgb(p.color);
@@ -455,8 +455,11 @@ private:
         if (gamma != 1) {
             for (Material& m : scene_.materials) {
                 if (auto* color = std::get_if<Color>(&m.color)) *color = decode(*color);
-                if (auto* pattern = std::get_if<PatternTexture>(&m.color))
-                    for (ColorStop& stop : pattern->colors) stop.color = decode(stop.color);
+                if (auto* pattern = std::get_if<PatternTexturePtr>(&m.color)) {
+                    auto decoded = std::make_shared<PatternTexture>(**pattern);
+                    for (ColorStop& stop : decoded->colors) stop.color = decode(stop.color);
+                    *pattern = std::move(decoded);
+                }
                 m.emission = decode(m.emission);
             }
             for (Light& light : scene_.lights)

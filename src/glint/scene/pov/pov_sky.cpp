@@ -3,27 +3,29 @@
 
 #include <algorithm>
 #include <memory>
+#include <vector>
 
 #include "glint/math/interval.h"
+#include "glint/shading/pattern_texture.h"
 
 namespace glint {
 
-PovVector pigment_color(const PovPigment& pigment, Point3 p) {
+namespace {
+
+// The pigment's five components (r, g, b, filter, transmit) at a point of its pattern's space:
+// a colour, or its pattern through its colour map.
+PovVector pigment_color(const PovPigment& pigment, Point3 pattern_p) {
     if (pigment.kind != PovPigment::Kind::pattern) return pigment.color;
-    const float t = pattern_value(pigment.spec, pigment.transform.inverse()(p));
     const std::vector<PovColorStop>& stops = pigment.map.stops;
-    // As color_at (pattern_texture.h), over all five components.
-    const auto after = std::upper_bound(stops.begin(), stops.end(), double(t),
-                                        [](double v, const PovColorStop& s) { return v < s.at; });
-    if (after == stops.begin()) return stops.front().color;
-    if (after == stops.end()) return stops.back().color;
-    const PovColorStop& a = *(after - 1);
-    const PovColorStop& b = *after;
-    const double w = (t - a.at) / (b.at - a.at);
+    const MapSpan span = span_at(stops, pattern_value(pigment.spec, pattern_p));
     PovVector c = PovVector::of(0, 5);
-    for (int i = 0; i < 5; ++i) c[i] = a.color[i] * (1 - w) + b.color[i] * w;
+    for (int i = 0; i < 5; ++i)
+        c[i] = stops[span.lower].color[i] * (1 - span.weight) +
+               stops[span.upper].color[i] * span.weight;
     return c;
 }
+
+}  // namespace
 
 SkyImage bake_sky(const PovSkySphere& sky, Color background,
                   const std::function<Color(Color)>& decode, int width) {
@@ -31,14 +33,17 @@ SkyImage bake_sky(const PovSkySphere& sky, Color background,
     auto image = std::make_shared<Image>(width, height);
     const Transform to_sky = sky.transform.inverse();
     const Color emission{float(sky.emission[0]), float(sky.emission[1]), float(sky.emission[2])};
+    std::vector<Transform> to_pigment;  // sky space to each pigment's pattern space
+    for (const PovPigment& pigment : sky.pigments)
+        to_pigment.push_back(pigment.transform.inverse());
     for (int y = 0; y < height; ++y)
         for (int x = 0; x < width; ++x) {
             const Point2 uv{(float(x) + 0.5f) / float(width), (float(y) + 0.5f) / float(height)};
             const Vector3 d = sky_image_direction(uv);
             const Point3 p = to_sky(Point3{d.x, d.y, d.z});
             Color c = background;
-            for (const PovPigment& pigment : sky.pigments) {
-                const PovVector v = pigment_color(pigment, p);
+            for (std::size_t i = 0; i < sky.pigments.size(); ++i) {
+                const PovVector v = pigment_color(sky.pigments[i], to_pigment[i](p));
                 const Color rgb = decode(Color{float(v[0]), float(v[1]), float(v[2])});
                 const float filter = float(v[3]), transmit = float(v[4]);
                 c = rgb * std::max(0.0f, 1 - filter - transmit) +

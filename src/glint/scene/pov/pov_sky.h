@@ -8,10 +8,6 @@
 
 namespace glint {
 
-// The colour (r, g, b, filter, transmit) of a pigment at the point p of its object's space: a
-// colour, or its pattern through its colour map.
-PovVector pigment_color(const PovPigment& pigment, Point3 p);
-
 // The sky image of `sky`, `width` by width / 2 pixels. In each direction its pigments are
 // layered from the first up, each letting what lies below through by its filter and transmit,
 // with `background` below them all; `decode` turns each pigment colour into linear light.
