@@ -44,9 +44,10 @@ AovSet all_but_counts() { return parse_aov_list("contributions,surface,ids,tree_
 TEST(AovList, NamesAndGroups) {
     const AovSet set = parse_aov_list("depth,normal");
     EXPECT_EQ(set.list(), (std::vector<Aov>{Aov::depth, Aov::normal}));
-    EXPECT_EQ(parse_aov_list("contributions").list(),
-              (std::vector<Aov>{Aov::emission, Aov::ambient, Aov::diffuse, Aov::specular,
-                                Aov::reflected, Aov::refracted, Aov::direct, Aov::indirect}));
+    EXPECT_EQ(
+        parse_aov_list("contributions").list(),
+        (std::vector<Aov>{Aov::emission, Aov::ambient, Aov::diffuse, Aov::specular, Aov::reflected,
+                          Aov::refracted, Aov::direct, Aov::indirect, Aov::fog}));
     EXPECT_EQ(parse_aov_list("ids").list(), (std::vector<Aov>{Aov::object, Aov::material}));
     EXPECT_EQ(parse_aov_list("surface,uv").list().size(), 5u);
     EXPECT_EQ(parse_aov_list("all").list().size(), counts_traversal() ? kAovCount : kAovCount - 2);
@@ -88,8 +89,8 @@ TEST_P(AovScenes, ContributionsAddUpToTheImageWhichStaysAsItWas) {
     const RenderResult r = render_with(scene, all_but_counts());
     EXPECT_TRUE(same_bits(r.image, plain.image)) << "the recorder changed the image";
     // Whitted's parts, and the path tracer's.
-    const Aov parts[] = {Aov::emission,  Aov::ambient,   Aov::diffuse, Aov::specular,
-                         Aov::reflected, Aov::refracted, Aov::direct,  Aov::indirect};
+    const Aov parts[] = {Aov::emission,  Aov::ambient, Aov::diffuse,  Aov::specular, Aov::reflected,
+                         Aov::refracted, Aov::direct,  Aov::indirect, Aov::fog};
     float largest_part = 0;
     for (std::size_t i = 0; i < r.image.pixels.size(); ++i) {
         Color sum;

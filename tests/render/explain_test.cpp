@@ -333,5 +333,19 @@ TEST(Explain, JsonCarriesTheSampleExactlyAndDotIsAGraph) {
     EXPECT_EQ(dot.back(), '\n');
 }
 
+TEST(Explain, EachRayShowsTheFogItCrossed) {
+    const Scene scene = small("scenes/features/fog.yaml", 1);
+    const World world(scene);
+    // The middle of the image: the eye ray meets the far floor or the sky through both fogs.
+    const RayTree tree = explain(world, {12, 9, 0, 0});
+    ASSERT_TRUE(tree.nodes[0].fog.has_value());
+    const FogEffect& fog = *tree.nodes[0].fog;
+    EXPECT_LT(fog.transmittance.g, 1);
+    EXPECT_GT(fog.added.g, 0);
+    EXPECT_TRUE(same_bits(evaluate(tree), tree.sample_value));
+    EXPECT_NE(ray_tree_text(tree).find("through fog: lets "), std::string::npos);
+    EXPECT_NE(ray_tree_json(tree).find("\"fog\": {\"transmittance\": ["), std::string::npos);
+}
+
 }  // namespace
 }  // namespace glint

@@ -27,6 +27,7 @@ inline constexpr const char* kRecorderTestScenes[] = {
     "scenes/features/cornell-box.yaml",
     "scenes/features/colour-bleeding.yaml",
     "scenes/features/sky.yaml",
+    "scenes/features/fog.yaml",
 };
 
 inline std::string scene_test_name(const ::testing::TestParamInfo<const char*>& param) {

@@ -48,6 +48,39 @@ TEST(Whitted, MissingRaySeesTheBackground) {
     EXPECT_EQ(stats, (counts(1, 0, 0, 0, 0)));
 }
 
+TEST(Whitted, FogFadesWhatARayBringsTowardsTheFogsColour) {
+    // A glowing sphere 4 units ahead through fog of distance 10: T = exp(-0.4) = 0.670320, so
+    // the red glow arrives as 0.670320 (1, 0, 0) + 0.329680 (0.3, 0.3, 0.3). A ray that misses
+    // crosses endless fog: it sees the fog's colour, not the background.
+    Scene scene = base_scene();
+    Material& m = scene.materials[0];
+    m.ka = m.kd = m.ks = 0;
+    m.emission = {1, 0, 0};
+    scene.objects.push_back({Sphere{{0, 0, 0}, 1}, 0});
+    Fog fog;
+    fog.distance = 10;
+    fog.color = Color::gray(0.3f);
+    scene.fogs.push_back(fog);
+    const World world(scene);
+    RayStats stats;
+    expect_near(WhittedIntegrator(world).trace_eye_ray(kEyeRay, stats),
+                {0.670320f + 0.329680f * 0.3f, 0.329680f * 0.3f, 0.329680f * 0.3f});
+    const Ray past{{0, 0, -5}, {0, 1, 0}};
+    expect_near(WhittedIntegrator(world).trace_eye_ray(past, stats), Color::gray(0.3f));
+}
+
+TEST(Whitted, OtherIntegratorsWarnThatTheyDrawNoFog) {
+    Scene scene = base_scene();
+    scene.fogs.push_back(Fog{});
+    EXPECT_TRUE(World(scene).warnings().empty());
+    scene.settings.integrator = IntegratorKind::path;
+    const World path(scene);
+    ASSERT_EQ(path.warnings().size(), 1u);
+    EXPECT_EQ(path.warnings()[0],
+              "the path integrator draws no fog: fog is drawn by the whitted and distributed "
+              "integrators");
+}
+
 TEST(Whitted, LocalTermIsAmbientPlusDiffusePlusHighlight) {
     // Light from the eye: at the sphere's front N = L = V, so N.L = H.N = R.V = 1 and
     // I = ka Ia C + IL (kd C + ks) = 0.1*0.5*C + 0.8 * (0.6 C + 0.3).

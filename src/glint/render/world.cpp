@@ -34,6 +34,7 @@ World::World(Scene scene, AccelKind accel, ShadowAcceleration shadows)
       camera_(scene.camera, scene.settings.width, scene.settings.height),
       ambient_(scene.ambient),
       sky_(scene.sky ? Sky(*scene.sky) : Sky(scene.settings.background)),
+      fogs_(scene.fogs),
       materials_(std::move(scene.materials)),
       lights_(std::move(scene.lights)) {
     primitives_.reserve(scene.objects.size());
@@ -73,6 +74,11 @@ World::World(Scene scene, AccelKind accel, ShadowAcceleration shadows)
         eye_media_ = eye_media_.entered(p, &m, m.ior);
     }
     warnings_.insert(warnings_.end(), eye.warnings.begin(), eye.warnings.end());
+    const IntegratorKind kind = settings_.integrator;
+    if (!fogs_.empty() && kind != IntegratorKind::whitted && kind != IntegratorKind::distributed)
+        warnings_.push_back("the " + std::string(integrator_info(kind).name) +
+                            " integrator draws no fog: fog is drawn by the whitted and "
+                            "distributed integrators");
     aggregate_ = make_aggregate(accel, primitives_);
     scene_scale_ = scene_scale(aggregate_->bounds(), camera_.eye());
     const Bounds3 bounded = aggregate_->bounds();

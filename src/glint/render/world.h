@@ -42,6 +42,7 @@ public:
     Color ambient() const { return ambient_; }
     // What rays that leave the scene see: the scene's sky image, or its background colour.
     const Sky& sky() const { return sky_; }
+    std::span<const Fog> fogs() const { return fogs_; }
     // The scene's lights, in scene order (light buffers and shadow caches are indexed by it).
     std::span<const Light> lights() const { return lights_; }
     // The objects whose material emits light and whose surface can be drawn on, in scene order.
@@ -119,6 +120,7 @@ private:
     Camera camera_;
     Color ambient_;
     Sky sky_;
+    std::vector<Fog> fogs_;
     std::vector<Material> materials_;
     std::vector<Light> lights_;
     std::vector<ObjectLight> object_lights_;

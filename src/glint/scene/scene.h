@@ -18,6 +18,7 @@
 #include "glint/sampling/sampler.h"
 #include "glint/scene/integrators.h"
 #include "glint/scene/scene_limits.h"
+#include "glint/shading/fog.h"
 #include "glint/shading/light.h"
 #include "glint/shading/material.h"
 #include "glint/shading/sky.h"
@@ -135,6 +136,8 @@ struct Scene {
     LargeVector<SceneObject> objects;
     // An image round the scene in place of settings.background.
     std::optional<SkyImage> sky;
+    // Fog between the surfaces, seen by the rays that carry light to the eye.
+    std::vector<Fog> fogs;
     // What the loader accepted but the user should know ("3 degenerate triangles dropped").
     std::vector<std::string> warnings;
     SceneSources sources;

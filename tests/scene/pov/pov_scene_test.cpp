@@ -389,6 +389,28 @@ TEST(PovScene, InverseOperandsTurnTheirCsgOver) {
               std::string::npos);
 }
 
+TEST(PovScene, FogsBecomeGlintsFogs) {
+    const Scene s = parse(
+        "#version 3.7;\n"
+        "fog { distance 25 color rgbft <0.5, 0.6, 0.7, 0.2, 0.1> }\n"
+        "fog { fog_type 2 distance 3 color rgb 1 fog_offset 0.5 fog_alt 2 up z "
+        "turbulence 0.4 turb_depth 0.3 }\n"
+        "fog { color rgb 1 }\n");
+    ASSERT_EQ(s.fogs.size(), 2u);  // the one without a distance does nothing: left out
+    EXPECT_EQ(s.fogs[0].kind, FogKind::constant);
+    EXPECT_FLOAT_EQ(s.fogs[0].distance, 25);
+    EXPECT_EQ(s.fogs[0].color, (Color{0.5f, 0.6f, 0.7f}));
+    EXPECT_FLOAT_EQ(s.fogs[0].filter, 0.2f);
+    EXPECT_FLOAT_EQ(s.fogs[0].transmit, 0.1f);
+    EXPECT_EQ(s.fogs[1].kind, FogKind::ground);
+    EXPECT_FLOAT_EQ(s.fogs[1].offset, 0.5f);
+    EXPECT_FLOAT_EQ(s.fogs[1].altitude, 2);
+    EXPECT_EQ(s.fogs[1].up, (Vector3{0, 0, 1}));
+    EXPECT_EQ(s.fogs[1].turbulence, (Vector3{0.4f, 0.4f, 0.4f}));
+    EXPECT_FLOAT_EQ(s.fogs[1].turbulence_depth, 0.3f);
+    EXPECT_EQ(s.warnings.size(), 1u);
+}
+
 TEST(PovScene, LayeredTexturesKeepTheBottomLayer) {
     const Scene s = parse(R"(
         #declare Base = texture { pigment { rgb <0, 0, 1> } } texture { pigment { rgbt <1, 1, 1, 0.5> } }

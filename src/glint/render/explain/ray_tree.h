@@ -15,6 +15,7 @@
 #include "glint/math/vector.h"
 #include "glint/render/pencil.h"
 #include "glint/render/ray_stats.h"
+#include "glint/shading/fog.h"
 
 namespace glint {
 
@@ -153,7 +154,10 @@ struct RayNode {
     bool total_internal_reflection = false;
     std::vector<BranchRecord> branches;
     std::optional<PathVertexRecord> path;  // the path tracer's numbers at the point
-    Color value;                           // exactly what the ray brought back
+    // The fog between the ray's origin and its end: the ray brings back T x (its terms and
+    // branches) + the fog's own light.
+    std::optional<FogEffect> fog;
+    Color value;  // exactly what the ray brought back
 };
 
 // A particle of the light integrator that landed on the explained pixel.
@@ -201,8 +205,9 @@ Color evaluate(const RayTree& tree);
 // The same for one node: its local terms and its children's colours times their factors.
 Color evaluate(const RayTree& tree, int node);
 
-// A node's own terms (emission, ambient and lights) times its throughput: its share of the
-// sample; over the whole tree these add up to the sample (up to rounding).
+// A node's own terms (emission, ambient and lights, seen through its fog, and the fog's own
+// light) times its throughput: its share of the sample; over the whole tree these add up to the
+// sample (up to rounding).
 Color contribution(const RayNode& node);
 
 }  // namespace glint

@@ -127,8 +127,14 @@ private:
                          read(n.ray.direction) + ", depth " + std::to_string(n.depth) +
                          ", weight " + read(n.weight));
         const int in = indent + 1;
+        const auto fog_line = [&] {
+            if (n.fog)
+                line(in, "through fog: lets " + read(n.fog->transmittance) + " through, adds " +
+                             read(n.fog->added) + " (brings T x what lies behind + that)");
+        };
         if (n.stop == StopReason::missed) {
             line(in, "missed everything: brings the background " + read(n.background));
+            fog_line();
             line(in, "contributes " + read(contribution(n)) + " to the sample");
             return;
         }
@@ -141,6 +147,7 @@ private:
                               ? ""
                               : ", shading normal " + read(n.shading_normal)) +
                          (n.entering ? ", entering (front side)" : ", leaving (back side)"));
+        fog_line();
         if (n.pencil) {
             const UvFootprint& f = n.pencil->footprint;
             line(in + 1, "pencil " + read(pencil_width(*n.pencil)) + " wide: steps " +
@@ -424,6 +431,13 @@ std::string node_json(const RayTree& tree, int index) {
     f.add("origin", exact(n.ray.origin)).add("direction", exact(n.ray.direction));
     f.add("time", exact(n.ray.time));
     f.add("stop", n.stop == StopReason::none ? "null" : json_string(stop_reason_name(n.stop)));
+    if (n.fog) {
+        Fields fog;
+        fog.add("transmittance", exact(n.fog->transmittance)).add("added", exact(n.fog->added));
+        f.add("fog", fog.object());
+    } else {
+        f.add("fog", "null");
+    }
     if (n.stop == StopReason::missed) {
         f.add("hit", "null").add("background", exact(n.background));
     } else {

@@ -26,7 +26,9 @@ void RayTreeRecorder::begin_ray(const Ray& ray, int depth, float weight) {
         b.child = index;
         node.kind = b.kind;
         node.parent = stack_.back();
-        node.throughput = parent.throughput * b.factor;
+        // What the child brings passes through its parent's fog too.
+        const Color fog = parent.fog ? parent.fog->transmittance : Color{1, 1, 1};
+        node.throughput = parent.throughput * fog * b.factor;
     }
     next_.reset();
     tree_.nodes.push_back(std::move(node));
@@ -63,6 +65,8 @@ void RayTreeRecorder::hit(const SurfaceContext& c, const Hit& hit) {
     n.emission = c.emission;
     n.ambient = ambient_term(m, c.color, world_.ambient());
 }
+
+void RayTreeRecorder::fog(const FogEffect& effect) { current().fog = effect; }
 
 void RayTreeRecorder::stop(StopReason reason) { current().stop = reason; }
 

@@ -26,6 +26,7 @@ constexpr std::array<AovInfo, kAovCount> kAovs = {{
     {"refracted", sample_mean, 3, {"R", "G", "B"}, "kt I(refracted)"},
     {"direct", sample_mean, 3, {"R", "G", "B"}, "light straight from emitters (path)"},
     {"indirect", sample_mean, 3, {"R", "G", "B"}, "light scattered on its way (path)"},
+    {"fog", sample_mean, 3, {"R", "G", "B"}, "light the fog adds along the eye ray"},
     {"tree_depth", sample_mean, 1, {"Y"}, "depth of the ray tree, 1 for the eye ray alone"},
     {"samples", pixel, 1, {"Y"}, "samples the pixel took"},
     {"nodes", sample_mean, 1, {"Y"}, "acceleration nodes visited per sample"},
@@ -57,7 +58,7 @@ AovSet parse_aov_list(std::string_view list) {
         const std::string_view name = list.substr(start, comma - start);
         start = comma + 1;
         if (name == "contributions") {
-            add_range(set, Aov::emission, Aov::indirect);
+            add_range(set, Aov::emission, Aov::fog);
         } else if (name == "surface") {
             add_range(set, Aov::depth, Aov::uv);
         } else if (name == "ids") {
@@ -74,10 +75,8 @@ AovSet parse_aov_list(std::string_view list) {
                 throw std::invalid_argument(
                     "unknown output variable '" + std::string(name) +
                     "' (depth, position, normal, albedo, uv, object, material, emission, ambient, "
-                    "diffuse, specular, reflected, refracted, direct, indirect, tree_depth, "
-                    "samples, "
-                    "nodes, "
-                    "primitives; or contributions, surface, ids, cost, all)");
+                    "diffuse, specular, reflected, refracted, direct, indirect, fog, tree_depth, "
+                    "samples, nodes, primitives; or contributions, surface, ids, cost, all)");
             set.add(Aov(a));
         }
     }
@@ -121,6 +120,8 @@ Color AovSample::value(Aov a) const {
             return direct;
         case Aov::indirect:
             return indirect;
+        case Aov::fog:
+            return fog;
         case Aov::tree_depth:
             return Color::gray(float(tree_depth));
         case Aov::samples:

@@ -37,12 +37,13 @@ enum class Aov : std::uint8_t {
     refracted,   // kt I(refracted): the refracted branch
     direct,      // path tracing: light that reaches the eye ray's hit straight from an emitter
     indirect,    // path tracing: light that reaches it after scattering on the way
+    fog,         // the light the fog adds along the eye ray (the other parts arrive through it)
     tree_depth,  // the depth of the sample's ray tree (1: the eye ray alone)
     samples,     // samples the pixel took
     nodes,       // acceleration-structure nodes visited, by all the sample's rays
     primitives,  // primitives tested for a hit, by all the sample's rays
 };
-inline constexpr std::size_t kAovCount = 19;
+inline constexpr std::size_t kAovCount = 20;
 
 enum class AovKind : std::uint8_t { surface, sample_mean, id, pixel };
 
@@ -74,7 +75,7 @@ private:
 };
 
 // "depth,normal,contributions": names of aov_info, and the groups `contributions` (emission to
-// indirect), `surface` (depth to uv), `ids`, `cost` (nodes, primitives) and `all`. Throws
+// fog), `surface` (depth to uv), `ids`, `cost` (nodes, primitives) and `all`. Throws
 // std::invalid_argument naming an unknown or unavailable name.
 AovSet parse_aov_list(std::string_view list);
 
@@ -87,7 +88,7 @@ struct AovSample {
     Color albedo;
     Point2 uv;
     std::int32_t object = -1, material = -1;
-    Color emission, ambient, diffuse, specular, reflected, refracted, direct, indirect;
+    Color emission, ambient, diffuse, specular, reflected, refracted, direct, indirect, fog;
     int tree_depth = 0;
     std::uint64_t nodes = 0, primitives = 0;
 

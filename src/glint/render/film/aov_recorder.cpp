@@ -22,6 +22,13 @@ void AovRecorder::end_ray(Color value) {
     } else if (level_ == 2) {
         Color& share = branch_kind_ == RayKind::reflected ? sample_.reflected : sample_.refracted;
         share += branch_factor_ * value;
+    } else if (level_ == 1 && eye_fog_) {
+        AovSample& s = sample_;
+        const Color t = eye_fog_->transmittance;
+        for (Color* part : {&s.emission, &s.ambient, &s.diffuse, &s.specular, &s.reflected,
+                            &s.refracted, &s.direct, &s.indirect})
+            *part *= t;
+        s.fog = eye_fog_->added;
     }
     --level_;
 }
@@ -29,6 +36,10 @@ void AovRecorder::end_ray(Color value) {
 void AovRecorder::missed(Color background) {
     if (at_eye()) sample_.emission = background;
     if (level_ == 2) child_emission_ = background;  // the sky, met by the scattered ray
+}
+
+void AovRecorder::fog(const FogEffect& effect) {
+    if (at_eye()) eye_fog_ = effect;
 }
 
 void AovRecorder::hit(const SurfaceContext& c, const Hit& hit) {

@@ -4,6 +4,8 @@
 // depth. It allocates nothing, so the render loop can keep one per tile.
 #pragma once
 
+#include <optional>
+
 #include "glint/render/film/aov.h"
 #include "glint/render/integrators/ray_recorder.h"
 #include "glint/render/world.h"
@@ -25,6 +27,7 @@ public:
         level_ = 0;
         path_ = false;
         child_emission_ = {};
+        eye_fog_.reset();
     }
     // What the sample's events told, once its eye ray has returned.
     const AovSample& sample() const { return sample_; }
@@ -33,6 +36,9 @@ public:
     void end_ray(Color value) override;
     void missed(Color background) override;
     void hit(const SurfaceContext& c, const Hit& hit) override;
+    // The eye ray's fog: once it returns, its parts are seen through it and the fog's own light
+    // is a part of its own.
+    void fog(const FogEffect& effect) override;
     void light(std::size_t light, const SurfaceContext& c, const LightSample& ls, float time,
                Color term) override;
     void begin_light(std::size_t light, bool object_light) override;
@@ -63,6 +69,7 @@ private:
     RayKind branch_kind_ = RayKind::reflected;
     bool path_ = false;     // the eye ray's vertex was a path tracer's
     Color child_emission_;  // the weighted emission met by the eye vertex's scattered ray
+    std::optional<FogEffect> eye_fog_;
 };
 
 }  // namespace glint

@@ -3,6 +3,7 @@
 
 #include "glint/render/integrators/glossy_lobe.h"
 #include "glint/render/integrators/local_lighting.h"
+#include "glint/render/integrators/ray_fog.h"
 #include "glint/render/integrators/surface_context.h"
 #include "glint/render/integrators/wavelength_split.h"
 
@@ -68,22 +69,30 @@ Color DistributedIntegrator::shade(const Ray& ray, int depth, float weight, Samp
                                    const RayDifferential* pencil) {
     const RenderSettings& settings = world_.settings();
     const auto hit = world_.intersect(ray, {0, kInfinity}, kVisibleToCameraRays);
+    const std::optional<FogEffect> fog =
+        ray_fog(world_, ray, media, hit ? hit->shape_hit.t : kInfinity);
     if (!hit) {
         const Color sky = world_.sky().radiance(ray.direction);
-        if constexpr (kRecord) recorder_->missed(sky);
-        return sky;
+        if constexpr (kRecord) {
+            recorder_->missed(sky);
+            if (fog) recorder_->fog(*fog);
+        }
+        return through(fog, sky);
     }
     if (depth == 1) ++stats.primary_hits;
 
     const SurfaceContext c = surface_context(world_, ray, *hit, pencil);
-    if constexpr (kRecord) recorder_->hit(c, *hit);
+    if constexpr (kRecord) {
+        recorder_->hit(c, *hit);
+        if (fog) recorder_->fog(*fog);
+    }
     const Material& m = *c.material;
     Color color = c.emission + ambient_term(m, c.color, world_.ambient());
     color = plus_direct_light<kRecord>(c, ray, stream, stats, color);
 
     if (depth >= settings.max_depth) {
         if constexpr (kRecord) recorder_->stop(StopReason::max_depth);
-        return color;
+        return through(fog, color);
     }
     // A dispersive surface splits a ray that carries every wavelength: the refracted ray takes
     // the sample's wavelength, and what it brings back counts by that wavelength's colour.
@@ -134,7 +143,7 @@ Color DistributedIntegrator::shade(const Ray& ray, int depth, float weight, Samp
             recorder_->blocked(RayKind::refracted, u);
         }
     }
-    return color;
+    return through(fog, color);
 }
 
 template <bool kRecord>

@@ -15,6 +15,7 @@
 #include "glint/render/integrators/medium_stack.h"
 #include "glint/render/integrators/surface_context.h"
 #include "glint/render/ray_stats.h"
+#include "glint/shading/fog.h"
 #include "glint/shading/light.h"
 
 namespace glint {
@@ -30,6 +31,9 @@ public:
 
     virtual void missed(Color background) = 0;
     virtual void hit(const SurfaceContext& c, const Hit& hit) = 0;
+    // The fog between the ray's origin and its end, which acts on all the ray brings back;
+    // after missed() or hit(), before the ray's terms.
+    virtual void fog(const FogEffect&) {}
     virtual void stop(StopReason) {}  // max_depth: no branches
 
     // The local term, light by light: a light of one sample (a point light, or any light to

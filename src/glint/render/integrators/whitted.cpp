@@ -3,6 +3,7 @@
 #include "glint/render/integrators/whitted.h"
 
 #include "glint/render/integrators/local_lighting.h"
+#include "glint/render/integrators/ray_fog.h"
 #include "glint/render/integrators/surface_context.h"
 
 namespace glint {
@@ -47,15 +48,23 @@ Color WhittedIntegrator::shade(const Ray& ray, int depth, float weight, RayStats
                                const MediumStack& media, const RayDifferential* pencil) {
     const RenderSettings& settings = world_.settings();
     const auto hit = world_.intersect(ray, {0, kInfinity}, kVisibleToCameraRays);
+    const std::optional<FogEffect> fog =
+        ray_fog(world_, ray, media, hit ? hit->shape_hit.t : kInfinity);
     if (!hit) {
         const Color sky = world_.sky().radiance(ray.direction);
-        if constexpr (kRecord) recorder_->missed(sky);
-        return sky;
+        if constexpr (kRecord) {
+            recorder_->missed(sky);
+            if (fog) recorder_->fog(*fog);
+        }
+        return through(fog, sky);
     }
     if (depth == 1) ++stats.primary_hits;
 
     const SurfaceContext c = surface_context(world_, ray, *hit, pencil);
-    if constexpr (kRecord) recorder_->hit(c, *hit);
+    if constexpr (kRecord) {
+        recorder_->hit(c, *hit);
+        if (fog) recorder_->fog(*fog);
+    }
     const Material& m = *c.material;
     Color color = c.emission + ambient_term(m, c.color, world_.ambient());
     const auto lights = world_.lights();
@@ -68,7 +77,7 @@ Color WhittedIntegrator::shade(const Ray& ray, int depth, float weight, RayStats
 
     if (depth >= settings.max_depth) {
         if constexpr (kRecord) recorder_->stop(StopReason::max_depth);
-        return color;
+        return through(fog, color);
     }
     const Branches b = branches_at(c, ray.direction, media, ray.wavelength);
     if constexpr (kRecord) recorder_->branches(c, b, media, ray.wavelength, ray.direction, weight);
@@ -87,7 +96,7 @@ Color WhittedIntegrator::shade(const Ray& ray, int depth, float weight, RayStats
                  trace_ray<kRecord>(t, depth + 1, weight * b.kt, stats, media_beyond(c, b, media),
                                     or_null(refraction_pencil(c, ray, pencil, b.eta, b.refracted)));
     }
-    return color;
+    return through(fog, color);
 }
 
 }  // namespace glint

@@ -81,6 +81,46 @@ PovSkySphere PovItemReader::sky_sphere(const PovToken& keyword) {
     return sky;
 }
 
+PovFog PovItemReader::fog(const PovToken& keyword) {
+    parser_.expect("{", "after fog");
+    PovFog fog;
+    fog.at = keyword.at;
+    for (PovToken t = parser_.peek(); !t.is_symbol("}"); t = parser_.peek()) {
+        const std::string& w = t.text;
+        if (w == "color" || w == "colour" || w.starts_with("rgb")) {
+            fog.color = parser_.color_expression("of the fog");
+            continue;
+        }
+        parser_.next();
+        if (w == "fog_type")
+            fog.type = parser_.whole_number("after fog_type", 1, 2);
+        else if (w == "distance")
+            fog.distance = parser_.finite_float("after distance");
+        else if (w == "fog_offset")
+            fog.offset = parser_.finite_float("after fog_offset");
+        else if (w == "fog_alt")
+            fog.alt = parser_.finite_float("after fog_alt");
+        else if (w == "up")
+            fog.up = parser_.finite_vector("after up");
+        else if (w == "turbulence")
+            fog.turbulence = parser_.finite_vector("after turbulence");
+        else if (w == "turb_depth")
+            fog.turbulence_depth = parser_.finite_float("after turb_depth");
+        else if (w == "octaves" || w == "omega" || w == "lambda") {
+            parser_.finite_float("after " + w);
+            if (!warned_fog_noise_)
+                warnings_.push_back("fog " + w + ": glint's turbulence keeps its own octaves");
+            warned_fog_noise_ = true;
+        } else if (t.kind == PovTokenKind::end)
+            throw parser_.error_at(keyword, "fog { is not closed by }");
+        else
+            throw parser_.error_at(t, describe(t) + " is not supported in a fog yet",
+                                   {kSeeCompatibility});
+    }
+    parser_.next();
+    return fog;
+}
+
 PovLight PovItemReader::light_source(const PovToken& keyword) {
     parser_.expect("{", "after light_source");
     PovLight light;

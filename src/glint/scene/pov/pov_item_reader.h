@@ -32,6 +32,7 @@ public:
     PovCamera camera(const PovToken& keyword);
     PovLight light_source(const PovToken& keyword);
     PovSkySphere sky_sphere(const PovToken& keyword);
+    PovFog fog(const PovToken& keyword);
     // translate, rotate, scale, matrix or transform, whose keyword has been read; nothing for
     // another word.
     std::optional<Transform> transform_step(const PovToken& keyword);
@@ -70,6 +71,7 @@ private:
     std::shared_ptr<const PovTexture> default_texture_ = std::make_shared<const PovTexture>();
     bool warned_normal_ = false;
     bool warned_layers_ = false;
+    bool warned_fog_noise_ = false;
     bool warned_crackle_ = false;
 };
 

@@ -61,6 +61,18 @@ struct PovSkySphere {
     PovVector emission = PovVector::of(1, 5);
 };
 
+// fog: constant (fog_type 1) or ground fog (fog_type 2), as written.
+struct PovFog {
+    int type = 1;
+    double distance = 0;
+    PovVector color = PovVector::of(0, 5);
+    double offset = 0, alt = 0;  // fog_offset, fog_alt
+    PovVector up{{0, 1, 0}};
+    PovVector turbulence{{0, 0, 0}};
+    double turbulence_depth = 0.5;  // turb_depth
+    PovPosition at;
+};
+
 struct PovTexture {
     PovPigment pigment;
     PovFinish finish;

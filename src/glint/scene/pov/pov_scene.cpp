@@ -45,7 +45,7 @@ double dot3(const PovVector& a, const PovVector& b) {
 
 // POV-Ray's scene items, besides objects, that glint does not read yet: their error says so.
 bool not_read_yet(const PovToken& token) {
-    static const std::string_view kNotYet[] = {"fog", "media", "photons", "rainbow"};
+    static const std::string_view kNotYet[] = {"media", "photons", "rainbow"};
     return token.kind == PovTokenKind::identifier &&
            std::find(std::begin(kNotYet), std::end(kNotYet), token.text) != std::end(kNotYet);
 }
@@ -85,6 +85,8 @@ public:
                 sky_ = items_.sky_sphere(t);
             else if (w == "background")
                 background(t);
+            else if (w == "fog")
+                fog(items_.fog(t));
             else if (w == "global_settings")
                 global_settings(t);
             else if (t.kind == PovTokenKind::identifier && PovItemReader::starts_object(w))
@@ -240,6 +242,36 @@ private:
         parser_.expect("{", "after background");
         scene_.settings.background = rgb(parser_.color_expression("as the background"));
         parser_.expect("}", "after the background's colour");
+    }
+
+    // POV-Ray's fog onto glint's: its colour's filter and transmit are the fog's.
+    void fog(const PovFog& f) {
+        if (f.distance == 0) {
+            scene_.warnings.push_back("a fog without a distance does nothing: it is left out");
+            return;
+        }
+        if (f.distance < 0)
+            throw files_.error_at(f.at,
+                                  "fog distance must be > 0, got " + format_pov_number(f.distance));
+        Fog fog;
+        fog.color = rgb(f.color);
+        fog.filter = float(std::clamp(f.color[3], 0.0, 1.0));
+        fog.transmit = float(std::clamp(f.color[4], 0.0, 1.0));
+        fog.distance = float(f.distance);
+        if (f.type == 2) {
+            if (!(f.alt > 0))
+                throw files_.error_at(f.at, "ground fog (fog_type 2) needs fog_alt > 0, got " +
+                                                format_pov_number(f.alt));
+            const Vector3 up{float(f.up[0]), float(f.up[1]), float(f.up[2])};
+            if (length(up) == 0) throw files_.error_at(f.at, "fog up must not be zero");
+            fog.kind = FogKind::ground;
+            fog.offset = float(f.offset);
+            fog.altitude = float(f.alt);
+            fog.up = normalize(up);
+        }
+        fog.turbulence = {float(f.turbulence[0]), float(f.turbulence[1]), float(f.turbulence[2])};
+        fog.turbulence_depth = float(std::max(f.turbulence_depth, 0.0));
+        scene_.fogs.push_back(fog);
     }
 
     void global_settings(const PovToken&) {
@@ -466,6 +498,7 @@ private:
                 std::visit([&](auto& l) { l.color = decode(l.color); }, light);
             scene_.settings.background = decode(scene_.settings.background);
             scene_.ambient = decode(scene_.ambient);
+            for (Fog& fog : scene_.fogs) fog.color = decode(fog.color);
         }
         if (sky_) scene_.sky = bake_sky(*sky_, scene_.settings.background, decode);
     }

@@ -14,6 +14,7 @@
 #include <new>
 #include <sstream>
 
+#include "glint/scene/yaml/yaml_fog.h"
 #include "glint/scene/yaml/yaml_lights.h"
 #include "glint/scene/yaml/yaml_map_reader.h"
 #include "glint/scene/yaml/yaml_materials.h"
@@ -86,7 +87,7 @@ void add_light_face(LightEntry& entry, std::size_t index, TextPosition where,
 Scene read_scene(const YamlSource& source, const ReadSandbox& sandbox, const YAML::Node& root) {
     const MapReader scene(
         source, root, Field("", "scene"), "scene",
-        {"image", "camera", "ambient", "sky", "materials", "lights", "define", "objects"});
+        {"image", "camera", "ambient", "sky", "fog", "materials", "lights", "define", "objects"});
     Scene result;
     if (const MapEntry* image = section(scene, "image")) {
         result.settings = read_image(source, image->value, scene.field("image"), sandbox.limits);
@@ -112,6 +113,8 @@ Scene read_scene(const YamlSource& source, const ReadSandbox& sandbox, const YAM
         }
         result.sky = read_sky(source, sandbox, sky->value, scene.field("sky"));
     }
+    if (const MapEntry* fog = section(scene, "fog"))
+        result.fogs = read_fogs(source, fog->value, scene.field("fog"));
 
     result.sources.file = source.file_name();
     MaterialTable materials(source, sandbox, result.materials, result.sources.materials);
