@@ -43,6 +43,7 @@ Solid combine(CsgOperation op, const Solid& a, const Solid& b) {
             inside = [=](Point3 p) { return a.inside(p) || b.inside(p); };
             break;
         case CsgOperation::intersection:
+        case CsgOperation::clip:  // its surface is a's inside b (clip tests check it themselves)
             inside = [=](Point3 p) { return a.inside(p) && b.inside(p); };
             break;
         case CsgOperation::difference:
@@ -132,6 +133,54 @@ TEST(Csg, IntersectionIsTheCommonPart) {
 TEST(Csg, DifferenceCarvesTheSecondOutOfTheFirst) {
     expect_matches_membership(combine(CsgOperation::difference, kCube, kBall));
     expect_matches_membership(combine(CsgOperation::difference, kBall, kCube));
+}
+
+// A clip's first hit is a's first hit inside b, found by walking a's hits one by one; its
+// normal is a's own.
+void expect_clip_matches_brute_force(const Solid& a, const Solid& b) {
+    const Shape clip = Csg{CsgOperation::clip, a.shape, b.shape};
+    testing::RandomRays rays({0, 0, 0}, 1.6f, 11);
+    int hits = 0;
+    for (int i = 0; i < 400; ++i) {
+        const Ray ray = rays.next();
+        std::optional<ShapeHit> expected;
+        for (float t_min = 0;;) {
+            const auto h = intersect(*a.shape, ray, {t_min, kInfinity});
+            if (!h) break;
+            if (b.inside(ray.at(h->t))) {
+                expected = h;
+                break;
+            }
+            t_min = std::nextafter(h->t, kInfinity);
+        }
+        const auto hit = intersect(clip, ray, {});
+        ASSERT_EQ(hit.has_value(), expected.has_value()) << "ray " << i;
+        if (!hit) continue;
+        ++hits;
+        EXPECT_NEAR(hit->t, expected->t, 1e-5f) << "ray " << i;
+        const Normal3 n = surface_at(clip, ray, *hit).normal;
+        const Normal3 n_a = surface_at(*a.shape, ray, *expected).normal;
+        EXPECT_NEAR(dot(n, n_a), 1, 1e-5f) << "ray " << i;
+    }
+    EXPECT_GT(hits, 40);
+}
+
+TEST(Csg, ClipKeepsTheFirstSurfaceInsideTheSecondAndNothingOfIt) {
+    // A sphere cut open by a box (a bowl whose inside rays reach), a box by a sphere, and an
+    // open surface (a disk) by a half-space.
+    expect_clip_matches_brute_force(sphere({0, 0, 0}, 1), box({-2, -2, -2}, {2, 0.3f, 2}));
+    expect_clip_matches_brute_force(box({-0.8f, -0.8f, -0.8f}, {0.8f, 0.8f, 0.8f}),
+                                    sphere({0, 0, 0}, 1));
+    const Solid disk{std::make_shared<const Shape>(Disk{{0, 0, 0}, {0, 1, 0}, 1.2f}),
+                     [](Point3) { return false; }};
+    const Solid below{std::make_shared<const Shape>(Plane{{0.3f, 0, 0}, {1, 0, 0}}),
+                      [](Point3 p) { return p.x < 0.3f; }};
+    expect_clip_matches_brute_force(disk, below);
+    // Its bounds are its operands' common part.
+    const Shape clip =
+        Csg{CsgOperation::clip, sphere({0, 0, 0}, 1).shape, box({-2, -2, -2}, {2, 0.3f, 2}).shape};
+    EXPECT_EQ(bounds(clip).max.y, 0.3f);
+    EXPECT_EQ(bounds(clip).min.y, -1);
 }
 
 TEST(Csg, NestedOperationsToSeveralLevels) {

@@ -35,7 +35,7 @@ TEST_P(PovReference, MatchesPovRaysRender) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Scenes, PovReference,
-                         testing::Values("basics", "fog", "inverse", "patterns", "sky"));
+                         testing::Values("basics", "clip", "fog", "inverse", "patterns", "sky"));
 
 }  // namespace
 }  // namespace glint

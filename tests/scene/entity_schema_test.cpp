@@ -40,7 +40,7 @@ DocPlace doc_place(const EntitySchema& schema) {
             return {"\n## `objects`\n", ""};
         case EntityFamily::shape:
             if (name == "union" || name == "merge" || name == "intersection" ||
-                name == "difference")
+                name == "difference" || name == "clip")
                 return {"\n## CSG: ", ""};
             if (name == "instance") return {"\n## Definitions and instances", ""};
             return {"\n## `objects`\n", "\n`type: " + name + "`"};

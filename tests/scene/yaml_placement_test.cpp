@@ -75,6 +75,26 @@ TEST(YamlPlacement, DifferenceTakesTheMergeOfTheOperandsAfterTheFirst) {
     EXPECT_TRUE(std::holds_alternative<Transformed>(*carved.b));
 }
 
+// A clip of [a, b, c] clips a by the intersection of b and c; a may be an open surface.
+TEST(YamlPlacement, ClipCutsTheFirstByTheIntersectionOfTheRest) {
+    const Scene scene = parse(R"(objects:
+  - type: clip
+    objects:
+      - {type: disk, center: [0, 0, 0], normal: [0, 1, 0], radius: 2}
+      - {type: plane, point: [0, 0, 0], normal: [1, 0, 0]}
+      - {type: sphere, center: [0, 0, 0], radius: 1.5}
+)");
+    const auto& clip = std::get<Csg>(scene.objects[0].shape);
+    EXPECT_EQ(clip.operation, CsgOperation::clip);
+    EXPECT_TRUE(std::holds_alternative<Disk>(*clip.a));
+    EXPECT_EQ(std::get<Csg>(*clip.b).operation, CsgOperation::intersection);
+    // The disk is kept where x < 0 and within 1.5 of the centre.
+    const Shape& s = scene.objects[0].shape;
+    EXPECT_TRUE(intersect(s, Ray{{-1, 1, 0}, {0, -1, 0}}, {0, kInfinity}).has_value());
+    EXPECT_FALSE(intersect(s, Ray{{1, 1, 0}, {0, -1, 0}}, {0, kInfinity}).has_value());
+    EXPECT_FALSE(intersect(s, Ray{{-1.8f, 1, 0}, {0, -1, 0}}, {0, kInfinity}).has_value());
+}
+
 // Long lists nest in log2 of their length: a union of 40 spheres is 6 levels deep, not 39
 // (beyond kMaxCsgDepth), and every sphere is in it once.
 TEST(YamlPlacement, LongCsgListsFoldIntoABalancedTree) {

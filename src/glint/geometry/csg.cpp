@@ -90,6 +90,7 @@ bool inside_without_crossing(const Shape& shape, const Ray& ray, float t_min) {
             case CsgOperation::merge:
                 return in_a || in_b;
             case CsgOperation::intersection:
+            case CsgOperation::clip:
                 return in_a && in_b;
             case CsgOperation::difference:
                 return in_a && !in_b;
@@ -112,6 +113,8 @@ bool on_result_surface(CsgOperation op, bool on_b, bool inside_other, bool& flip
         case CsgOperation::difference:
             flipped = on_b;
             return on_b ? inside_other : !inside_other;
+        case CsgOperation::clip:
+            return !on_b && inside_other;
     }
     return false;
 }
@@ -128,6 +131,7 @@ Bounds3 Csg::bounds() const {
         case CsgOperation::merge:
             return merge(ba, bb);
         case CsgOperation::intersection:
+        case CsgOperation::clip:
             return {max(ba.min, bb.min), min(ba.max, bb.max)};
         case CsgOperation::difference:
             return ba;

@@ -2,7 +2,9 @@
 //   union         every surface of both operands, internal ones included;
 //   merge         the surface of the union only (no internal surfaces);
 //   intersection  the surface of the common part;
-//   difference    a minus b: a's surface outside b, and b's inside a, turned inside out.
+//   difference    a minus b: a's surface outside b, and b's inside a, turned inside out;
+// and POV-Ray's clipped_by:
+//   clip          a's surface inside b, and nothing of b's: a cut open where b ends.
 #pragma once
 
 #include <cstdint>
@@ -18,10 +20,11 @@ namespace glint {
 
 struct Shape;
 
-enum class CsgOperation { union_of, merge, intersection, difference };
+enum class CsgOperation { union_of, merge, intersection, difference, clip };
 
 // Operands must be closed solids (or half-spaces: planes), so that a ray alternately enters and
-// leaves them; they may be CSG shapes themselves up to kMaxCsgDepth levels.
+// leaves them; they may be CSG shapes themselves up to kMaxCsgDepth levels. A clip's a may be
+// any surface: only b's inside counts.
 struct Csg {
     CsgOperation operation = CsgOperation::union_of;
     std::shared_ptr<const Shape> a, b;  // never null

@@ -45,7 +45,8 @@ struct IsSolid {
     bool operator()(const Mandelbulb&) const { return true; }
     bool operator()(const Transformed& t) const { return is_solid(*t.shape); }
     bool operator()(const Moving& m) const { return is_solid(*m.shape); }
-    bool operator()(const Csg&) const { return true; }
+    // A clip cuts its first operand open.
+    bool operator()(const Csg& c) const { return c.operation != CsgOperation::clip; }
 };
 
 struct CsgDepth {

@@ -162,10 +162,10 @@ TEST(PovScene, RotateIsAboutXThenYThenZ) {
 }
 
 TEST(PovScene, WhatIsNotReadIsALocatedErrorNamingIt) {
-    EXPECT_EQ(error_of("sphere { 0, 1\n  clipped_by { plane { y, 0 } } }"),
-              "scene.pov:2:3: error: \"clipped_by\" is not supported as an object modifier yet\n"
-              "    2 |   clipped_by { plane { y, 0 } } }\n"
-              "      |   ^~~~~~~~~~\n"
+    EXPECT_EQ(error_of("sphere { 0, 1\n  no_image }"),
+              "scene.pov:2:3: error: \"no_image\" is not supported as an object modifier yet\n"
+              "    2 |   no_image }\n"
+              "      |   ^~~~~~~~\n"
               "note: docs/povray.md lists what glint reads\n");
     EXPECT_NE(error_of("blob { }").find("POV-Ray's blob is not supported yet"), std::string::npos);
     EXPECT_NE(error_of("sphere { 0, -1 }").find("sphere radius must be > 0"), std::string::npos);
@@ -386,6 +386,31 @@ TEST(PovScene, InverseOperandsTurnTheirCsgOver) {
     EXPECT_NE(error_of("merge { sphere { 0, 1 } sphere { x, 1 inverse } }")
                   .find("supported only as an operand of intersection, or of difference after its "
                         "first"),
+              std::string::npos);
+}
+
+// clipped_by keeps the surface inside the clipping objects, which are written in the space the
+// object has reached and move with its later transforms; a clipped union clips each object.
+TEST(PovScene, ClippedByCutsSurfacesOpen) {
+    const Scene s = parse(R"(
+        sphere { 0, 1 translate x * 3 clipped_by { plane { y, 0 } } translate y * 5 }
+        union { sphere { 0, 1 } sphere { z * 4, 1 } clipped_by { plane { -y, 0 } } })");
+    ASSERT_EQ(s.objects.size(), 3u);
+    // Down onto the bowl at (3, 5, 0): its top is cut away, so the ray meets the inside of its
+    // lower half at y = 4, 6 below the start.
+    const Ray down{{3, 10, 0}, {0, -1, 0}};
+    const auto bowl = intersect(s.objects[0].shape, down, {0, kInfinity});
+    ASSERT_TRUE(bowl.has_value());
+    EXPECT_NEAR(bowl->t, 6, 1e-4);
+    // The union's spheres keep their upper halves only: from below, a ray meets the inside of
+    // the top at y = 1.
+    for (std::size_t i = 1; i < 3; ++i) {
+        const float z = i == 1 ? 0 : 4;
+        const auto top = intersect(s.objects[i].shape, Ray{{0, -5, z}, {0, 1, 0}}, {0, kInfinity});
+        ASSERT_TRUE(top.has_value());
+        EXPECT_NEAR(top->t, 6, 1e-4);
+    }
+    EXPECT_NE(error_of("sphere { 0, 1 clipped_by { } }").find("clipped_by needs objects inside it"),
               std::string::npos);
 }
 

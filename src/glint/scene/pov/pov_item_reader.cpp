@@ -420,6 +420,29 @@ void PovItemReader::csg(const PovToken& keyword, PovObject& object) {
     if (object.children.empty()) throw parser_.error_at(keyword, w + " needs objects inside it");
 }
 
+void PovItemReader::clipped_by(const PovToken& keyword, PovObject& object) {
+    parser_.expect("{", "after clipped_by");
+    // Several clipped_by blocks clip by all their objects.
+    PovObject clip = object.clipped_by ? *object.clipped_by : PovObject{};
+    clip.csg = PovObject::Csg::intersection;
+    clip.at = keyword.at;
+    // The objects are written in the object's parent space, as it stands after the transforms
+    // read so far.
+    const Transform to_object = object.transform.inverse();
+    while (starts_object(parser_.peek_item().text) &&
+           parser_.peek_item().kind == PovTokenKind::identifier) {
+        const PovToken child = parser_.next();
+        PovObject o = this->object(child);
+        o.transform = to_object * o.transform;
+        clip.children.push_back(std::make_shared<const PovObject>(std::move(o)));
+    }
+    const PovToken close = parser_.next();
+    if (!close.is_symbol("}")) throw unsupported(close, "in clipped_by");
+    if (clip.children.empty())
+        throw parser_.error_at(keyword, "clipped_by needs objects inside it");
+    object.clipped_by = std::make_shared<const PovObject>(std::move(clip));
+}
+
 void PovItemReader::modifiers(PovObject& object) {
     bool last_was_texture = false;
     for (;;) {
@@ -467,6 +490,8 @@ void PovItemReader::modifiers(PovObject& object) {
             object.hollow = optional_amount() != 0;
         } else if (w == "inverse") {
             object.inverse = !object.inverse;
+        } else if (w == "clipped_by") {
+            clipped_by(token, object);
         } else if (w == "bounded_by") {
             // Only a hint for POV-Ray's own bounding: the object is read and dropped.
             parser_.skip_braced(token);

@@ -51,6 +51,7 @@ private:
     // The arrays of a mesh: normals at every corner when any triangle is smooth.
     static MeshData mesh_arrays(const MeshCorners& corners);
     void csg(const PovToken& keyword, PovObject& object);
+    void clipped_by(const PovToken& keyword, PovObject& object);
     // The modifiers after an object's own values, to the closing brace.
     void modifiers(PovObject& object);
     template <typename Item>

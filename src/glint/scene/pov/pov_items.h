@@ -130,6 +130,9 @@ struct PovObject {
     bool no_shadow = false;
     bool hollow = false;
     bool inverse = false;  // inside and outside swapped: what a CSG keeps of it turns over
+    // clipped_by: an intersection of objects in this object's own space (so that its later
+    // transforms move them with it); its surface is kept inside them only.
+    std::shared_ptr<const PovObject> clipped_by;
     std::shared_ptr<const PovUnread> unread;  // an object glint does not read yet: its name, place
     std::shared_ptr<const PovLight> light;    // a light_source, placed as objects are
     PovPosition at;                           // where it was written

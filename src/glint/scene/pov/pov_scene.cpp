@@ -381,6 +381,9 @@ private:
                 throw files_.error_at(object.at, "a CSG of lights alone has no surface");
             shape = csg_of(object, operands);
         }
+        if (object.clipped_by)
+            shape =
+                combined(std::move(shape), placed_shape(*object.clipped_by), CsgOperation::clip);
         if (object.transform == Transform{}) return shape;
         return Transformed(object.transform, std::make_shared<const Shape>(std::move(shape)));
     }
@@ -440,7 +443,8 @@ private:
     // written after it (PovItemReader::modifiers).
     void add(const PovObject& object, const Transform& parent,
              std::shared_ptr<const PovTexture> texture, Transform texture_frame,
-             std::shared_ptr<const PovInterior> interior, bool no_shadow) {
+             std::shared_ptr<const PovInterior> interior, bool no_shadow,
+             std::shared_ptr<const Shape> clip = nullptr) {
         refuse_unread(object);
         if (object.texture || !texture) {
             texture = object.texture ? object.texture : object.fallback;
@@ -455,8 +459,15 @@ private:
         }
         if (!object.shape && object.csg != PovObject::Csg::group) add_lights(object, placement);
         if (!object.shape && object.csg == PovObject::Csg::group) {
+            // A clipped group clips each of its objects, in the scene's space.
+            if (object.clipped_by) {
+                Shape own = Transformed(
+                    placement, std::make_shared<const Shape>(placed_shape(*object.clipped_by)));
+                clip = std::make_shared<const Shape>(
+                    clip ? combined(*clip, std::move(own), CsgOperation::intersection) : own);
+            }
             for (const auto& child : object.children)
-                add(*child, placement, texture, texture_frame, interior, no_shadow);
+                add(*child, placement, texture, texture_frame, interior, no_shadow, clip);
             return;
         }
         PovObject local = object;
@@ -464,6 +475,7 @@ private:
         Shape shape = placed_shape(local);
         if (!(placement == Transform{}))
             shape = Transformed(placement, std::make_shared<const Shape>(std::move(shape)));
+        if (clip) shape = combined(std::move(shape), *clip, CsgOperation::clip);
         SceneObject o{std::move(shape), material(texture, interior, texture_frame)};
         o.casts_shadow = !no_shadow;
         scene_.objects.push_back(std::move(o));

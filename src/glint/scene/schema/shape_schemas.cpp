@@ -7,7 +7,7 @@ namespace {
 
 const KeySchema kOperands{"objects", "list of shape maps", "required",
                           "the operands; a difference of `[a, b, c]` is `(a − b) − c`",
-                          "at least 2; each a solid"};
+                          "at least 2; each a solid (a clip's first: any surface)"};
 const KeySchema kCenter{"center", "point", "required", "the centre", ""};
 const KeySchema kRadius{"radius", "number", "required", "the radius", "> 0", kPositive};
 const KeySchema kOppositeCorner{"max", "point", "required", "the opposite corner", ""};
@@ -188,6 +188,7 @@ std::vector<EntitySchema> shape_schemas() {
         {EntityFamily::shape, "merge", {kOperands}},
         {EntityFamily::shape, "intersection", {kOperands}},
         {EntityFamily::shape, "difference", {kOperands}},
+        {EntityFamily::shape, "clip", {kOperands}},
         {EntityFamily::shape,
          "instance",
          {

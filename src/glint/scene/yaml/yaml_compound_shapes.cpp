@@ -23,7 +23,8 @@ std::shared_ptr<const Shape> balanced(CsgOperation op,
 // A CSG shape of a list of operands, nested as little as the operation allows: each level costs
 // two bits of a hit's CSG path (kMaxCsgDepth). Union, merge and intersection are associative, so
 // the list becomes a balanced tree; a difference of [a, b, c, ...] is a minus the merge of the
-// rest, as (a - b) - c = a - (b merge c). A thousand operands nest ten levels.
+// rest, as (a - b) - c = a - (b merge c), and a clip of [a, b, c, ...] clips a by the
+// intersection of the rest. A thousand operands nest ten levels.
 Shape parse_csg(CsgOperation op, const MapReader& object, ShapeReader& shapes) {
     const MapEntry& entry = object.require("objects");
     const auto items = read_sequence(object.source(), entry.value, object.field("objects"),
@@ -37,10 +38,15 @@ Shape parse_csg(CsgOperation op, const MapReader& object, ShapeReader& shapes) {
     operands.reserve(items.size());
     for (std::size_t i = 0; i < items.size(); ++i) {
         operands.push_back(
-            shapes.read_operand(items[i], {object.what(), "objects[" + std::to_string(i) + "]"}));
+            shapes.read_operand(items[i], {object.what(), "objects[" + std::to_string(i) + "]"},
+                                /*solid=*/op != CsgOperation::clip || i > 0));
     }
     if (op == CsgOperation::difference) {
         return Csg{op, operands[0], balanced(CsgOperation::merge, operands, 1, operands.size())};
+    }
+    if (op == CsgOperation::clip) {
+        return Csg{op, operands[0],
+                   balanced(CsgOperation::intersection, operands, 1, operands.size())};
     }
     return *balanced(op, operands, 0, operands.size());
 }

@@ -106,13 +106,14 @@ ShapeReader::ObjectResult ShapeReader::read_shapes(const YAML::Node& node, const
     return {std::move(shapes), std::move(mesh_model), std::move(map)};
 }
 
-std::shared_ptr<const Shape> ShapeReader::read_operand(const YAML::Node& node, const Field& field) {
+std::shared_ptr<const Shape> ShapeReader::read_operand(const YAML::Node& node, const Field& field,
+                                                       bool solid) {
     Result r = read(node, field, {"material"});
     if (const MapEntry* material = r.map.find("material")) {
         throw source_.error_at(material->key_node, "a CSG operand has no material of its own",
                                {"the material of the CSG object applies to all its operands"});
     }
-    if (!is_solid(r.shape)) {
+    if (solid && !is_solid(r.shape)) {
         std::vector<std::string> notes;
         if (const auto cut = implicit_cut_open(r.shape)) {
             notes.push_back("the function is negative at " + format_vector(to_vector(*cut)) +
@@ -122,7 +123,7 @@ std::shared_ptr<const Shape> ShapeReader::read_operand(const YAML::Node& node, c
         notes.push_back(
             "CSG operands are solids: spheres, boxes, capped cylinders and cones, tori, implicit "
             "surfaces inside their box, fractals, closed meshes, planes (half-spaces), CSG "
-            "shapes, and transforms and instances of these");
+            "shapes other than clip, and transforms and instances of these");
         throw source_.error_at(
             node, r.map.what() + " is not a closed solid, so it cannot be a CSG operand", notes);
     }

@@ -44,8 +44,10 @@ public:
     ObjectResult read_object(const YAML::Node& node, const Field& field,
                              std::vector<std::string_view> extra_keys);
 
-    // A CSG operand: a shape map that must describe a closed solid.
-    std::shared_ptr<const Shape> read_operand(const YAML::Node& node, const Field& field);
+    // A CSG operand: a shape map that must describe a closed solid, unless not `solid` (the
+    // surface a clip cuts).
+    std::shared_ptr<const Shape> read_operand(const YAML::Node& node, const Field& field,
+                                              bool solid = true);
 
     // The shape defined under the name that `key` of the map gives (an instance's `of`).
     std::shared_ptr<const Shape> definition(const MapReader& map, std::string_view key) const;

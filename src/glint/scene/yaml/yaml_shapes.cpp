@@ -16,6 +16,7 @@ Shape parse_csg_of(const MapReader& object, ShapeReader& shapes) {
 
 const ShapeType kShapeTypes[] = {
     {"box", parse_box},
+    {"clip", parse_csg_of<CsgOperation::clip>},
     {"cone", parse_cone},
     {"cylinder", parse_cylinder},
     {"difference", parse_csg_of<CsgOperation::difference>},
