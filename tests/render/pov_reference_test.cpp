@@ -35,7 +35,8 @@ TEST_P(PovReference, MatchesPovRaysRender) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Scenes, PovReference,
-                         testing::Values("basics", "clip", "fog", "inverse", "patterns", "sky"));
+                         testing::Values("basics", "clip", "fog", "inverse", "patterns",
+                                         "polynomials", "sky"));
 
 }  // namespace
 }  // namespace glint

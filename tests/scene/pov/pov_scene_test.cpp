@@ -412,6 +412,46 @@ TEST(PovScene, ClippedByCutsSurfacesOpen) {
     }
     EXPECT_NE(error_of("sphere { 0, 1 clipped_by { } }").find("clipped_by needs objects inside it"),
               std::string::npos);
+    // clipped_by { bounded_by } clips by the bounding objects.
+    const Scene bounded =
+        parse("sphere { 0, 1 bounded_by { box { -1, <1, 0.3, 1> } } clipped_by { bounded_by } }");
+    EXPECT_EQ(std::get<Csg>(bounded.objects[0].shape).operation, CsgOperation::clip);
+}
+
+// quadric, cubic, quartic and poly are glint's quadric and implicit surfaces, searched within
+// the box of their bounded_by (or clipped_by) objects, or of the other operands of their
+// intersection; an unbounded one stops the scene only where it is placed.
+TEST(PovScene, PolynomialSurfacesAreSearchedWithinTheirBounds) {
+    const Scene s = parse(R"(
+        #declare Unused = quadric { <1, 1, 0>, <0, 0, 0>, <0, 0, 0>, -1 }
+        quartic { <1, 0, 0, 0, 2, 0, 0, 2, 0, -104, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0,
+                   1, 0, 0, 2, 0, 56, 0, 0, 0, 0, 1, 0, -104, 0, 784> sturm
+                  bounded_by { sphere { 0, 10 } } translate z * 20 }
+        quadric { <1, 1, 1>, <0, 0, 0>, <0, 0, 0>, -4 clipped_by { box { -3, 3 } } }
+        intersection { poly { 2, <1, 0, 0, 0, 1, 0, 0, 0, 0, -1> } box { -2, 2 } })");
+    ASSERT_EQ(s.objects.size(), 3u);
+    const auto& torus = std::get<ImplicitSurface>(*std::get<Transformed>(s.objects[0].shape).shape);
+    EXPECT_EQ(torus.region.min, (Point3{-10, -10, -10}));
+    EXPECT_EQ(torus.region.max, (Point3{10, 10, 10}));
+    // Along x through the torus's centre plane at z = 20: the tube's outside at
+    // sqrt(40) + sqrt(12) = 9.78888.
+    const auto hit = intersect(s.objects[0].shape, Ray{{-20, 0, 20}, {1, 0, 0}}, {0, kInfinity});
+    ASSERT_TRUE(hit.has_value());
+    EXPECT_NEAR(hit->t, 20 - 9.78888, 1e-3);
+    // The sphere of radius 2 as a quadric, clipped by its box.
+    const auto& sphere = std::get<Csg>(s.objects[1].shape);
+    EXPECT_EQ(std::get<Quadric>(*sphere.a).clip.max, (Point3{3, 3, 3}));
+    const auto front = intersect(s.objects[1].shape, Ray{{0, 0, -5}, {0, 0, 1}}, {0, kInfinity});
+    ASSERT_TRUE(front.has_value());
+    EXPECT_NEAR(front->t, 3, 1e-4);
+    // The cylinder x^2 + y^2 = 1 cut to the box's height.
+    const auto side = intersect(s.objects[2].shape, Ray{{-5, 0, 0}, {1, 0, 0}}, {0, kInfinity});
+    ASSERT_TRUE(side.has_value());
+    EXPECT_NEAR(side->t, 4, 1e-3);
+    EXPECT_NE(error_of("quartic { <1, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, "
+                       "1, 0, 0, 0, 0, 0, 0, 0, 0, 0, 1, 0, 0, 0, -1> }")
+                  .find("POV-Ray's quartic needs bounded_by or clipped_by in glint"),
+              std::string::npos);
 }
 
 TEST(PovScene, FogsBecomeGlintsFogs) {

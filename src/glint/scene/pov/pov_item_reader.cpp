@@ -5,7 +5,10 @@
 #include <algorithm>
 #include <cmath>
 
+#include "glint/geometry/expression.h"
 #include "glint/geometry/polygon.h"
+#include "glint/math/interval.h"
+#include "glint/scene/pov/pov_polynomial.h"
 #include "glint/scene/quote.h"
 
 namespace glint {
@@ -14,20 +17,25 @@ namespace {
 
 constexpr const char* kSeeCompatibility = "docs/povray.md lists what glint reads";
 
+// The surfaces of a polynomial, unbounded but for their bounded_by or clipped_by objects.
+bool is_polynomial(const std::string& keyword) {
+    return keyword == "quadric" || keyword == "cubic" || keyword == "quartic" || keyword == "poly";
+}
+
 bool is_shape(const std::string& keyword) {
     return keyword == "sphere" || keyword == "box" || keyword == "plane" || keyword == "cylinder" ||
            keyword == "cone" || keyword == "torus" || keyword == "disc" || keyword == "triangle" ||
-           keyword == "smooth_triangle" || keyword == "polygon" || keyword == "mesh";
+           keyword == "smooth_triangle" || keyword == "polygon" || keyword == "mesh" ||
+           is_polynomial(keyword);
 }
 
 // POV-Ray's objects that glint does not read yet: read past, so that only using one stops the
 // scene (include files declare many).
 bool is_unread_object(const std::string& keyword) {
     static const std::string_view kUnread[] = {
-        "bicubic_patch", "blob",  "cubic",        "height_field",   "isosurface",
-        "julia_fractal", "lathe", "lemon",        "mesh2",          "ovus",
-        "parametric",    "poly",  "polynomial",   "prism",          "quadric",
-        "quartic",       "sor",   "sphere_sweep", "superellipsoid", "text"};
+        "bicubic_patch", "blob",         "height_field",   "isosurface", "julia_fractal", "lathe",
+        "lemon",         "mesh2",        "ovus",           "parametric", "polynomial",    "prism",
+        "sor",           "sphere_sweep", "superellipsoid", "text"};
     return std::find(std::begin(kUnread), std::end(kUnread), keyword) != std::end(kUnread);
 }
 
@@ -242,8 +250,10 @@ PovObject PovItemReader::object(const PovToken& keyword) {
         object.shape = mesh(keyword);
     } else {
         object.shape = shape(keyword);
+        if (is_polynomial(keyword.text)) object.polynomial = keyword.text;
     }
     modifiers(object);
+    if (!object.polynomial.empty()) set_polynomial_region(keyword, object);
     object.fallback = default_texture_;
     object.at = keyword.at;
     // An inverse plane is the other half-space: the plane turned over.
@@ -305,6 +315,35 @@ Shape PovItemReader::shape(const PovToken& keyword) {
             std::swap(ra, rb);
         }
         return checked_shape(parser_, keyword, Cone{a, ra, b, rb, !open});
+    }
+    if (w == "quadric") {
+        // <A, B, C>, <D, E, F>, <G, H, I>, J: A x^2 + B y^2 + C z^2 + D xy + E xz + F yz + G x +
+        // H y + I z + J, as glint's quadric; its clip box comes with its bounded_by.
+        Quadric q;
+        q.clip = Bounds3{};  // none yet
+        for (int i = 0; i < 3; ++i) {
+            const PovVector v = parser_.finite_vector("as the quadric's coefficients");
+            for (int k = 0; k < 3; ++k) q.coefficients[std::size_t(3 * i + k)] = float(v[k]);
+            parser_.accept(",");
+        }
+        q.coefficients[9] = number("as the quadric's constant");
+        return q;
+    }
+    if (w == "cubic" || w == "quartic" || w == "poly") {
+        int order = w == "cubic" ? 3 : 4;
+        if (w == "poly") {
+            order = parser_.whole_number("as the polynomial's order", 2, 7);
+            parser_.accept(",");
+        }
+        const std::vector<double> c = parser_.finite_list(
+            "as the " + w + "'s coefficients", std::size_t(polynomial_term_count(order)));
+        auto compiled = compile_expression(polynomial_text(order, c), {});
+        if (auto* error = std::get_if<ExpressionError>(&compiled))
+            throw parser_.error_at(keyword, w + ": " + error->message);
+        ImplicitSurface surface;
+        surface.f = std::make_shared<const Expression>(std::move(std::get<Expression>(compiled)));
+        surface.region = Bounds3{};  // none yet: it comes with its bounded_by
+        return surface;
     }
     if (w == "torus") {
         const float major = number("as the torus's major radius");
@@ -420,10 +459,20 @@ void PovItemReader::csg(const PovToken& keyword, PovObject& object) {
     if (object.children.empty()) throw parser_.error_at(keyword, w + " needs objects inside it");
 }
 
-void PovItemReader::clipped_by(const PovToken& keyword, PovObject& object) {
-    parser_.expect("{", "after clipped_by");
-    // Several clipped_by blocks clip by all their objects.
-    PovObject clip = object.clipped_by ? *object.clipped_by : PovObject{};
+std::shared_ptr<const PovObject> PovItemReader::object_list(const PovToken& keyword,
+                                                            const PovObject& object,
+                                                            std::shared_ptr<const PovObject> so_far,
+                                                            bool* names_other) {
+    parser_.expect("{", "after " + keyword.text);
+    const std::string other = keyword.text == "clipped_by" ? "bounded_by" : "clipped_by";
+    if (parser_.peek().is_word(other)) {
+        parser_.next();
+        parser_.expect("}", "after " + other);
+        *names_other = true;
+        return so_far;
+    }
+    // Several blocks of one kind add up: all their objects count.
+    PovObject clip = so_far ? *so_far : PovObject{};
     clip.csg = PovObject::Csg::intersection;
     clip.at = keyword.at;
     // The objects are written in the object's parent space, as it stands after the transforms
@@ -437,19 +486,55 @@ void PovItemReader::clipped_by(const PovToken& keyword, PovObject& object) {
         clip.children.push_back(std::make_shared<const PovObject>(std::move(o)));
     }
     const PovToken close = parser_.next();
-    if (!close.is_symbol("}")) throw unsupported(close, "in clipped_by");
+    if (!close.is_symbol("}")) throw unsupported(close, "in " + keyword.text);
     if (clip.children.empty())
-        throw parser_.error_at(keyword, "clipped_by needs objects inside it");
-    object.clipped_by = std::make_shared<const PovObject>(std::move(clip));
+        throw parser_.error_at(keyword, keyword.text + " needs objects inside it");
+    return std::make_shared<const PovObject>(std::move(clip));
+}
+
+void PovItemReader::set_polynomial_region(const PovToken& keyword, PovObject& object) {
+    const PovObject* bound = object.bounded_by ? object.bounded_by.get() : object.clipped_by.get();
+    if (!bound) return;
+    const std::string& what = object.polynomial;
+    Bounds3 region{{-kInfinity, -kInfinity, -kInfinity}, {kInfinity, kInfinity, kInfinity}};
+    for (const auto& child : bound->children) {
+        if (!child->shape)
+            throw parser_.error_at(keyword, "the " + what +
+                                                "'s bounding objects must be simple shapes "
+                                                "(a sphere, a box) for glint to take their box");
+        const Bounds3 b =
+            bounds(Transformed(child->transform, std::make_shared<const Shape>(*child->shape)));
+        region = {max(region.min, b.min), min(region.max, b.max)};
+    }
+    const Vector3 size = region.diagonal();
+    if (!region.is_finite() || !(size.x > 0 && size.y > 0 && size.z > 0))
+        throw parser_.error_at(keyword, "the " + what +
+                                            "'s bounded_by or clipped_by objects must enclose a "
+                                            "finite box for glint to search the surface in");
+    bound_polynomial(*object.shape, region);
+}
+
+void bound_polynomial(Shape& shape, const Bounds3& region) {
+    if (auto* quadric = std::get_if<Quadric>(&shape)) {
+        quadric->clip = region;
+    } else if (auto* surface = std::get_if<ImplicitSurface>(&shape)) {
+        surface->region = region;
+        surface->tolerance = 1e-4f * max_component(region.diagonal());
+    }
 }
 
 void PovItemReader::modifiers(PovObject& object) {
     bool last_was_texture = false;
+    bool clip_by_bounds = false, bound_by_clip = false;  // `clipped_by { bounded_by }` and back
     for (;;) {
         const bool layered = last_was_texture;
         last_was_texture = parser_.peek_item().is_word("texture");
         const PovToken token = parser_.next();
-        if (token.is_symbol("}")) return;
+        if (token.is_symbol("}")) {
+            if (clip_by_bounds) object.clipped_by = object.bounded_by;
+            if (bound_by_clip) object.bounded_by = object.clipped_by;
+            return;
+        }
         if (token.kind != PovTokenKind::identifier) {
             throw parser_.error_at(token, "expected a modifier or '}', got " + describe(token));
         }
@@ -491,10 +576,11 @@ void PovItemReader::modifiers(PovObject& object) {
         } else if (w == "inverse") {
             object.inverse = !object.inverse;
         } else if (w == "clipped_by") {
-            clipped_by(token, object);
+            object.clipped_by = object_list(token, object, object.clipped_by, &clip_by_bounds);
         } else if (w == "bounded_by") {
-            // Only a hint for POV-Ray's own bounding: the object is read and dropped.
-            parser_.skip_braced(token);
+            object.bounded_by = object_list(token, object, object.bounded_by, &bound_by_clip);
+        } else if (w == "sturm") {
+            // POV-Ray's choice of root solver: glint's search needs none.
         } else {
             throw unsupported(token, "as an object modifier");
         }

@@ -51,7 +51,15 @@ private:
     // The arrays of a mesh: normals at every corner when any triangle is smooth.
     static MeshData mesh_arrays(const MeshCorners& corners);
     void csg(const PovToken& keyword, PovObject& object);
-    void clipped_by(const PovToken& keyword, PovObject& object);
+    // The objects of a clipped_by or bounded_by block, added to `so_far`: an intersection in the
+    // object's own space. Nothing for `clipped_by { bounded_by }` and `bounded_by { clipped_by }`,
+    // which name the other block (`*names_other` is then set).
+    std::shared_ptr<const PovObject> object_list(const PovToken& keyword, const PovObject& object,
+                                                 std::shared_ptr<const PovObject> so_far,
+                                                 bool* names_other);
+    // A polynomial surface's region: the box of its bounded_by (or clipped_by) objects, when it
+    // has them.
+    void set_polynomial_region(const PovToken& keyword, PovObject& object);
     // The modifiers after an object's own values, to the closing brace.
     void modifiers(PovObject& object);
     template <typename Item>
@@ -86,6 +94,9 @@ std::optional<Item> PovItemReader::declared(const PovToken& name) {
     if (const Item* item = std::get_if<Item>(&(*ref)->item)) return *item;
     return std::nullopt;
 }
+
+// A polynomial surface (quadric or implicit) searched within `region`, finite and not empty.
+void bound_polynomial(Shape& shape, const Bounds3& region);
 
 Point3 to_point(const PovVector& v);
 Vector3 to_vector(const PovVector& v);

@@ -133,6 +133,12 @@ struct PovObject {
     // clipped_by: an intersection of objects in this object's own space (so that its later
     // transforms move them with it); its surface is kept inside them only.
     std::shared_ptr<const PovObject> clipped_by;
+    // bounded_by, read the same way: only a hint to POV-Ray, but the region of a polynomial
+    // surface (quartic, poly), which is unbounded.
+    std::shared_ptr<const PovObject> bounded_by;
+    // "quartic", "poly", ...: a polynomial surface, whose region (its shape's box) is set from
+    // its bounded_by or clipped_by objects; without them it cannot be placed.
+    std::string polynomial;
     std::shared_ptr<const PovUnread> unread;  // an object glint does not read yet: its name, place
     std::shared_ptr<const PovLight> light;    // a light_source, placed as objects are
     PovPosition at;                           // where it was written

@@ -372,6 +372,12 @@ private:
         Shape shape;
         if (object.shape) {
             shape = *object.shape;
+            if (!object.polynomial.empty() && bounds(shape).is_empty())
+                throw files_.error_at(object.at,
+                                      "POV-Ray's " + object.polynomial +
+                                          " needs bounded_by or clipped_by in glint: its surface "
+                                          "is unbounded, and glint searches it within their box",
+                                      {"docs/povray.md lists what glint reads"});
         } else {
             // Lights among the operands shine (add_lights) but are no part of the solid.
             std::vector<const PovObject*> operands;
@@ -397,8 +403,26 @@ private:
         const bool intersection = object.csg == PovObject::Csg::intersection;
         const bool difference = object.csg == PovObject::Csg::difference;
         std::vector<Shape> kept, taken;
+        // An intersection bounds an unbounded polynomial operand by its other operands' box.
+        Bounds3 common{{-kInfinity, -kInfinity, -kInfinity}, {kInfinity, kInfinity, kInfinity}};
+        if (intersection)
+            for (const PovObject* operand : operands)
+                if (!unbounded_polynomial(*operand) && !operand->inverse) {
+                    const Bounds3 b = bounds(placed_shape(*operand));
+                    common = {max(common.min, b.min), min(common.max, b.max)};
+                }
         for (std::size_t i = 0; i < operands.size(); ++i) {
-            const PovObject& operand = *operands[i];
+            PovObject bounded;
+            const PovObject* operand_ptr = operands[i];
+            if (intersection && unbounded_polynomial(*operand_ptr) && common.is_finite()) {
+                bounded = *operand_ptr;
+                const Box box{common.min, common.max};
+                const Bounds3 region = bounds(Transformed(
+                    bounded.transform.inverse(), std::make_shared<const Shape>(Shape{box})));
+                bound_polynomial(*bounded.shape, region);
+                operand_ptr = &bounded;
+            }
+            const PovObject& operand = *operand_ptr;
             if (operand.inverse && !(intersection || (difference && i > 0)))
                 throw files_.error_at(operand.at,
                                       "an inverse object is supported only as an operand of "
@@ -420,6 +444,16 @@ private:
         if (taken.empty()) return shape;
         return combined(std::move(shape), balanced(taken, 0, taken.size(), CsgOperation::union_of),
                         CsgOperation::difference);
+    }
+
+    static const PovObject* first_textured_operand(const PovObject& csg) {
+        for (const auto& child : csg.children)
+            if (!child->light && child->texture) return child.get();
+        return nullptr;
+    }
+
+    static bool unbounded_polynomial(const PovObject& object) {
+        return !object.polynomial.empty() && object.shape && bounds(*object.shape).is_empty();
     }
 
     static Shape combined(Shape a, Shape b, CsgOperation operation) {
@@ -449,6 +483,18 @@ private:
         if (object.texture || !texture) {
             texture = object.texture ? object.texture : object.fallback;
             texture_frame = parent;
+            // A CSG without a texture of its own: glint gives it one material, its first
+            // textured operand's (POV-Ray paints each operand's part with its own).
+            if (!object.texture && !object.shape && object.csg != PovObject::Csg::group)
+                if (const PovObject* painted = first_textured_operand(object)) {
+                    texture = painted->texture;
+                    texture_frame = parent * object.transform;
+                    if (!warned_operand_textures_)
+                        scene_.warnings.push_back(
+                            "a CSG without a texture takes its first textured operand's for all "
+                            "of it: glint gives a CSG one material");
+                    warned_operand_textures_ = true;
+                }
         }
         if (object.interior) interior = object.interior;
         no_shadow = no_shadow || object.no_shadow;
@@ -537,6 +583,7 @@ private:
     bool any_area_light_ = false;
     std::optional<double> assumed_gamma_;
     std::optional<PovSkySphere> sky_;
+    bool warned_operand_textures_ = false;
 };
 
 }  // namespace
