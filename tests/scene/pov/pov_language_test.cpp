@@ -241,7 +241,7 @@ TEST(PovDirectives, MistakesAreLocatedErrors) {
     EXPECT_NE(error_of("#declare A = sin(\"x\");").find("expected a float in sin, got a string"),
               std::string::npos);
     EXPECT_NE(error_of("#error \"stop here\"").find("error: #error: stop here"), std::string::npos);
-    EXPECT_NE(error_of("#fopen F \"x\" read").find("#fopen is not supported"), std::string::npos);
+    EXPECT_NE(error_of("#fopen F \"x\" read").find("cannot find the file \"x\""), std::string::npos);
     EXPECT_NE(
         error_of("#declare S = seed(1); #declare R = rand(S + 1);").find("rand() takes a stream"),
         std::string::npos);
@@ -324,6 +324,64 @@ TEST_F(PovIncludes, TheSandboxRefusesFilesOutsideIt) {
     options.sandbox = &sandbox;
     EXPECT_NE(error_of("#include \"" + outside.string() + "\"", options).find("may not read"),
               std::string::npos);
+}
+
+// A scene never writes a file: #write keeps its text in memory for the scene's own #read and
+// #include; #read reads the scene's files through the sandbox, value by value.
+TEST_F(PovIncludes, FileDirectivesWriteToMemoryAndReadBack) {
+    const Outcome r =
+        run("#fopen F \"data.txt\" write\n"
+            "#write (F, \"\\\"two\\\",\", 2, \",\", <1, 2, 3>, \"\\n\")\n"
+            "#fclose F\n"
+            "#fopen F \"data.txt\" read\n"
+            "#read (F, S, N, V)\n"
+            "#debug concat(S, \" \", str(N, 0, 1), \" \", vstr(3, V, \",\", 0, 0))\n"
+            "#debug str(defined(F), 0, 0)\n"
+            "#read (F, More)\n"
+            "#debug str(defined(F), 0, 0)\n"
+            "#ifdef (More) defined #end\n"
+            "#fclose F\n"
+            "#fopen G \"part.inc\" write #write (G \"#declare Made = 7;\") #fclose G\n"
+            "#include \"part.inc\" #debug str(Made, 0, 0)\n",
+            test_options(), (folder_ / "scene.pov").string());
+    // The last value read, the handle is undefined: a #while (defined(F)) loop ends there.
+    EXPECT_EQ(r.messages, (std::vector<std::string>{"two 2.0 1,2,3", "0", "0", "7"}));
+    EXPECT_TRUE(r.tokens.empty());
+    EXPECT_FALSE(std::filesystem::exists(folder_ / "data.txt"));  // nothing was written
+    // A file of the scene's folder, read to its end in a loop.
+    write("list.txt", "1, 2,\n3");
+    EXPECT_EQ(run("#declare Sum = 0; #fopen L \"list.txt\" read\n"
+                  "#while (defined(L)) #read (L, X) #declare Sum = Sum + X; #end\n"
+                  "#debug str(Sum, 0, 0)",
+                  test_options(), (folder_ / "scene.pov").string())
+                  .messages,
+              std::vector<std::string>{"6"});
+    write("bad.txt", "1, oops");
+    EXPECT_NE(error_of("#fopen B \"" + (folder_ / "bad.txt").string() + "\" read #read (B, X, Y)")
+                  .find("cannot read a value for \"Y\""),
+              std::string::npos);
+    EXPECT_NE(error_of("#fclose Nothing").find("is not an open file"), std::string::npos);
+    EXPECT_NE(error_of("#fopen W \"w.txt\" write #read (W, X)").find("not a file open for reading"),
+              std::string::npos);
+    EXPECT_NE(error_of("#fopen W \"w.txt\" readonly").find("expected read, write or append"),
+              std::string::npos);
+    // An array's element is defined once it has a value.
+    EXPECT_EQ(run("#declare A = array[2]; #declare A[1] = 3;\n"
+                  "#ifdef (A[0]) zero #end #ifdef (A[1]) one #end #ifndef (A[0]) none #end")
+                  .tokens,
+              (std::vector<std::string>{"one", "none"}));
+}
+
+TEST_F(PovIncludes, FilesReadAreInsideTheSandbox) {
+    write("lib/secret.txt", "1");
+    std::filesystem::create_directories(folder_ / "scene");
+    const ReadSandbox sandbox = make_read_sandbox(folder_ / "scene" / "scene.pov");
+    PovLanguageOptions options = test_options();
+    options.sandbox = &sandbox;
+    EXPECT_NE(
+        error_of("#fopen S \"" + (folder_ / "lib" / "secret.txt").string() + "\" read", options)
+            .find("may not read"),
+        std::string::npos);
 }
 
 TEST(PovStandardIncludes, ColorsIncDeclaresPovRaysColours) {

@@ -195,6 +195,22 @@ void PovParser::include(const PovToken& directive) {
     if (include_depth_ >= options_.max_include_depth)
         throw error_at(directive, "#include nests deeper than " +
                                       std::to_string(options_.max_include_depth) + " files");
+    auto [found, text] = read_file(directive, name_token, name, "include file");
+    const std::uint32_t file = files_.add(found.string(), std::move(text), &directive.at);
+    token_lists_.push_back(lex_pov(files_, file));
+    const auto& tokens = token_lists_.back();
+    ++include_depth_;
+    symbols_.push_scope();
+    frames_.push_back({&tokens, 0, tokens.size() - 1, Frame::Kind::include, controls_.size()});
+}
+
+std::pair<std::filesystem::path, std::string> PovParser::read_file(const PovToken& directive,
+                                                                   const PovToken& name_token,
+                                                                   const std::string& name,
+                                                                   std::string_view what) {
+    // A file the scene wrote itself (#write) is read back from memory.
+    if (const auto written = written_.find(name); written != written_.end())
+        return {name, written->second};
     // The including file's folder, the scene's, then the include folders.
     std::vector<std::filesystem::path> folders;
     const auto folder_of = [&](std::uint32_t file) {
@@ -221,7 +237,8 @@ void PovParser::include(const PovToken& directive) {
         notes.push_back("looked in " + looked);
         if (options_.include_folders.empty())
             notes.push_back("POV-Ray's standard includes come with Debian's povray-includes");
-        throw error_at(name_token, "cannot find the include file " + quote(name), std::move(notes));
+        throw error_at(name_token, "cannot find the " + std::string(what) + " " + quote(name),
+                       std::move(notes));
     }
     if (options_.sandbox && !may_read(*options_.sandbox, found) &&
         !std::any_of(options_.include_folders.begin(), options_.include_folders.end(),
@@ -235,12 +252,7 @@ void PovParser::include(const PovToken& directive) {
     std::ostringstream text;
     text << in.rdbuf();
     if (!in && !in.eof()) throw error_at(name_token, "cannot read " + quote(found.string()));
-    const std::uint32_t file = files_.add(found.string(), text.str(), &directive.at);
-    token_lists_.push_back(lex_pov(files_, file));
-    const auto& tokens = token_lists_.back();
-    ++include_depth_;
-    symbols_.push_scope();
-    frames_.push_back({&tokens, 0, tokens.size() - 1, Frame::Kind::include, controls_.size()});
+    return {found, text.str()};
 }
 
 }  // namespace glint

@@ -41,8 +41,15 @@ void PovParser::directive(const PovToken& token) {
         const PovToken name = raw_next();
         if (name.kind != PovTokenKind::identifier)
             throw error_at(name, "expected an identifier in #" + word + ", got " + describe(name));
+        bool defined = symbols_.find(name.text) || macros_.contains(name.text);
+        // An array's element (`#ifdef (Names[I])`) is defined once it is given a value.
+        if (peek().is_symbol("[")) {
+            PovValue* value = symbols_.find(name.text);
+            auto* array = value ? std::get_if<std::shared_ptr<PovArray>>(value) : nullptr;
+            if (!array) throw error_at(name, quote(name.text) + " is not an array");
+            defined = element_slot(name, **array) != nullptr;
+        }
         expect(")", "after #" + word + "'s identifier");
-        const bool defined = symbols_.find(name.text) || macros_.contains(name.text);
         return if_directive(token, word == "ifdef" ? defined : !defined);
     }
     if (word == "else" || word == "elseif") {
@@ -78,6 +85,10 @@ void PovParser::directive(const PovToken& token) {
     if (word == "end") return end_directive(token);
     if (word == "macro") return macro_definition(token);
     if (word == "include") return include(token);
+    if (word == "fopen") return fopen_directive(token);
+    if (word == "fclose") return fclose_directive(token);
+    if (word == "read") return read_directive(token);
+    if (word == "write") return write_directive(token);
     if (word == "version") {
         const double version = float_expression("after #version");
         symbols_.declare("version", version);
@@ -96,8 +107,9 @@ void PovParser::directive(const PovToken& token) {
     }
     throw error_at(token, "#" + word + " is not supported",
                    {"glint reads POV-Ray's directives #declare, #local, #undef, #if, #ifdef, "
-                    "#ifndef, #else, #elseif, #while, #for, #switch, #macro, #include, #version, "
-                    "#debug, #warning and #error (docs/povray.md)"});
+                    "#ifndef, #else, #elseif, #while, #for, #switch, #macro, #include, #fopen, "
+                    "#fclose, #read, #write, #version, #debug, #warning and #error "
+                    "(docs/povray.md)"});
 }
 
 void PovParser::declare(const PovToken& directive, bool local) {

@@ -445,6 +445,15 @@ PovValue PovParser::array_declaration(const PovToken& keyword) {
 }
 
 PovValue& PovParser::element(const PovToken& name, PovArray& array, bool assigning) {
+    auto& slot = element_slot(name, array);
+    if (!slot && !assigning)
+        throw error_at(name,
+                       "element of " + quote(name.text) + " is read before it is given a value");
+    if (!slot) slot = std::make_shared<PovValue>(0.0);
+    return *slot;
+}
+
+std::shared_ptr<PovValue>& PovParser::element_slot(const PovToken& name, PovArray& array) {
     std::size_t index = 0;
     for (std::size_t dim = 0; dim < array.sizes.size(); ++dim) {
         expect("[", "for the array's next dimension");
@@ -456,12 +465,7 @@ PovValue& PovParser::element(const PovToken& name, PovArray& array, bool assigni
                                    "'s 0.." + std::to_string(array.sizes[dim] - 1));
         index = index * array.sizes[dim] + std::size_t(i);
     }
-    auto& slot = array.elements[index];
-    if (!slot && !assigning)
-        throw error_at(name,
-                       "element of " + quote(name.text) + " is read before it is given a value");
-    if (!slot) slot = std::make_shared<PovValue>(0.0);
-    return *slot;
+    return array.elements[index];
 }
 
 }  // namespace glint

@@ -273,6 +273,9 @@ std::optional<PovValue> PovParser::builtin(const PovToken& name) {
         expect("(", "after defined");
         const PovToken id = raw_next();  // a macro's name is not called here
         expect(")", "after defined's identifier");
+        // A file handle is defined while it is open, and a file read to its end no more.
+        if (const auto file = open_files_.find(id.text); file != open_files_.end())
+            return double(!file->second.at_end);
         return double(symbols_.find(id.text) != nullptr || macros_.contains(id.text));
     }
     if (w == "dimensions" || w == "dimension_size") {

@@ -9,11 +9,13 @@
 #include <deque>
 #include <filesystem>
 #include <functional>
+#include <map>
 #include <memory>
 #include <optional>
 #include <string>
 #include <string_view>
 #include <unordered_map>
+#include <utility>
 #include <vector>
 
 #include "glint/scene/pov/pov_files.h"
@@ -156,6 +158,17 @@ private:
     void macro_definition(const PovToken& directive);
     void call_macro(const PovToken& name, const Macro& macro);
     void include(const PovToken& directive);
+    // The file `name` as #include and #fopen find it: in the including file's folder, the
+    // scene's, then the include folders; inside the sandbox. Its path and text.
+    std::pair<std::filesystem::path, std::string> read_file(const PovToken& directive,
+                                                            const PovToken& name_token,
+                                                            const std::string& name,
+                                                            std::string_view what);
+    // #fopen, #fclose, #read and #write (pov_file_io.cpp).
+    void fopen_directive(const PovToken& directive);
+    void fclose_directive(const PovToken& directive);
+    void read_directive(const PovToken& directive);
+    void write_directive(const PovToken& directive);
     void count_loop(const Control& control);
     // Skips raw tokens to the #end that closes an opened block (or, with stop_at_else, to an
     // #else, #elseif, #case, #range or #break at its level, which it returns).
@@ -179,6 +192,8 @@ private:
     PovValue array_declaration(const PovToken& keyword);
     // The element that [i][j]... names; reading one never given a value is an error.
     PovValue& element(const PovToken& name, PovArray& array, bool assigning);
+    // The element's slot, null while it has no value: the [i][j]... after the name read.
+    std::shared_ptr<PovValue>& element_slot(const PovToken& name, PovArray& array);
     std::vector<PovValue> arguments(const PovToken& name, std::size_t min, std::size_t max);
     double float_of(const PovValue& value, const PovToken& at, std::string_view what) const;
     PovVector vector_of(const PovValue& value, const PovToken& at, std::string_view what,
@@ -203,6 +218,18 @@ private:
     // One stream of rand() numbers per seed() call, as POV-Ray keeps them.
     std::vector<std::uint32_t> random_streams_;
     bool in_vector_ = false;  // '>' closes the vector rather than comparing
+    // A scene never writes a file: what it writes is kept here, by the name it gave, for its own
+    // #read and #include, and dropped with the parse.
+    std::map<std::string, std::string> written_;
+    std::size_t written_bytes_ = 0;
+    struct OpenFile {
+        std::string name;
+        bool writing = false;
+        std::string text;  // read: the file's text
+        std::size_t at = 0;
+        bool at_end = false;
+    };
+    std::map<std::string, OpenFile> open_files_;  // by handle
     ItemReader item_reader_;
 };
 
