@@ -241,7 +241,8 @@ TEST(PovDirectives, MistakesAreLocatedErrors) {
     EXPECT_NE(error_of("#declare A = sin(\"x\");").find("expected a float in sin, got a string"),
               std::string::npos);
     EXPECT_NE(error_of("#error \"stop here\"").find("error: #error: stop here"), std::string::npos);
-    EXPECT_NE(error_of("#fopen F \"x\" read").find("cannot find the file \"x\""), std::string::npos);
+    EXPECT_NE(error_of("#fopen F \"x\" read").find("cannot find the file \"x\""),
+              std::string::npos);
     EXPECT_NE(
         error_of("#declare S = seed(1); #declare R = rand(S + 1);").find("rand() takes a stream"),
         std::string::npos);
