@@ -454,6 +454,51 @@ TEST(PovScene, PolynomialSurfacesAreSearchedWithinTheirBounds) {
               std::string::npos);
 }
 
+TEST(PovScene, MaterialsGiveTextureAndInterior) {
+    const Scene s = parse(R"(
+        #declare Glass = material { texture { pigment { rgbf <1, 0, 0, 0.5> } } interior { ior 1.5 } }
+        sphere { 0, 1 material { Glass } }
+        sphere { x * 3, 1 material { Glass interior { ior 1.2 } } })");
+    ASSERT_EQ(s.objects.size(), 2u);
+    const Material& a = s.materials[s.objects[0].material];
+    EXPECT_EQ(std::get<Color>(a.color), (Color{1, 0, 0}));
+    EXPECT_FLOAT_EQ(a.ior, 1.5f);
+    EXPECT_FLOAT_EQ(a.transmit, 0.5f);
+    EXPECT_FLOAT_EQ(s.materials[s.objects[1].material].ior, 1.2f);
+}
+
+// min_extent and max_extent: the corners of an object's bounding box, transforms and CSG
+// included.
+TEST(PovScene, ExtentsAreTheCornersOfAnObjectsBox) {
+    const Scene s = parse(R"(
+        #declare B = box { -1, <2, 3, 4> translate x }
+        #declare I = intersection { sphere { 0, 2 } box { 0, 5 } }
+        #debug vstr(3, min_extent(B), ",", 0, 0) #debug vstr(3, max_extent(B), ",", 0, 0)
+        #debug vstr(3, min_extent(I), ",", 0, 0) #debug vstr(3, max_extent(I), ",", 0, 0)
+        sphere { 0, 1 })");
+    EXPECT_EQ(s.warnings, (std::vector<std::string>{"#debug: 0,-1,-1", "#debug: 3,3,4",
+                                                    "#debug: 0,0,0", "#debug: 2,2,2"}));
+}
+
+TEST(PovScene, ACheckerOfTexturesIsACheckerOfTheirColours) {
+    const Scene s = parse(R"(#version 3.7;
+        plane { y, 0 texture { checker
+            texture { pigment { rgb <1, 1, 1> } finish { ambient 0.3 diffuse 0.6 } }
+            texture { pigment { rgb <0.1, 0.2, 0.3> } } scale 2 } })");
+    ASSERT_EQ(s.objects.size(), 1u);
+    const Material& m = s.materials[s.objects[0].material];
+    const PatternTexture& checker = *std::get<PatternTexturePtr>(m.color);
+    EXPECT_EQ(checker.spec.kind, PatternKind::checker);
+    EXPECT_EQ(evaluate(checker, {0.5f, 0.5f, 0.5f}), (Color{1, 1, 1}));
+    EXPECT_EQ(evaluate(checker, {2.5f, 0.5f, 0.5f}), (Color{0.1f, 0.2f, 0.3f}));
+    EXPECT_FLOAT_EQ(m.ka, 0.3f);
+    EXPECT_FLOAT_EQ(m.kd, 0.6f);
+    EXPECT_NE(error_of("plane { y, 0 texture { checker texture { pigment { bozo } } "
+                       "texture { pigment { rgb 1 } } } }")
+                  .find("a checker of patterned textures is not supported yet"),
+              std::string::npos);
+}
+
 TEST(PovScene, FogsBecomeGlintsFogs) {
     const Scene s = parse(
         "#version 3.7;\n"

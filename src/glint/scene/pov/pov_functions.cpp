@@ -269,6 +269,13 @@ std::optional<PovValue> PovParser::builtin(const PovToken& name) {
         const std::string s = str(arguments(name, 1, 1)[0]);
         return std::atof(s.c_str());
     }
+    if ((w == "min_extent" || w == "max_extent") && extent_reader_) {
+        const PovValue object = arguments(name, 1, 1)[0];
+        const auto* item = std::get_if<std::shared_ptr<const PovItemRef>>(&object);
+        if (!item) throw error_at(name, w + " takes an object, got " + kind_of(object));
+        const auto [low, high] = extent_reader_(**item, name);
+        return w == "min_extent" ? low : high;
+    }
     if (w == "defined") {
         expect("(", "after defined");
         const PovToken id = raw_next();  // a macro's name is not called here

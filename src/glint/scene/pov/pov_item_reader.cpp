@@ -119,9 +119,9 @@ std::optional<PovItem> PovItemReader::read(const PovToken& keyword) {
         return PovUnread{"#default", keyword.at};
     }
     if (w == "color_map" || w == "colour_map") return color_map(keyword);
+    if (w == "material") return material({});
     if (w == "pigment_map" || w == "normal_map" || w == "texture_map" || w == "slope_map" ||
-        w == "density_map" || w == "material_map" || w == "material" || w == "media" ||
-        w == "density") {
+        w == "density_map" || w == "material_map" || w == "media" || w == "density") {
         parser_.skip_braced(keyword);
         return PovUnread{w, keyword.at};
     }
@@ -492,6 +492,29 @@ std::shared_ptr<const PovObject> PovItemReader::object_list(const PovToken& keyw
     return std::make_shared<const PovObject>(std::move(clip));
 }
 
+Bounds3 PovItemReader::extent(const PovObject& object) {
+    Bounds3 b;
+    if (object.shape) {
+        b = bounds(*object.shape);
+    } else if (object.csg == PovObject::Csg::intersection) {
+        b = {{-kInfinity, -kInfinity, -kInfinity}, {kInfinity, kInfinity, kInfinity}};
+        for (const auto& child : object.children) {
+            const Bounds3 c = extent(*child);
+            b = {max(b.min, c.min), min(b.max, c.max)};
+        }
+    } else if (object.csg == PovObject::Csg::difference && !object.children.empty()) {
+        b = extent(*object.children.front());
+    } else {
+        for (const auto& child : object.children) b = merge(b, extent(*child));
+    }
+    if (object.clipped_by) {
+        const Bounds3 c = extent(*object.clipped_by);
+        b = {max(b.min, c.min), min(b.max, c.max)};
+    }
+    if (b.is_empty() || !b.is_finite()) return b;
+    return bounds(Transformed(object.transform, std::make_shared<const Shape>(Box{b.min, b.max})));
+}
+
 void PovItemReader::set_polynomial_region(const PovToken& keyword, PovObject& object) {
     const PovObject* bound = object.bounded_by ? object.bounded_by.get() : object.clipped_by.get();
     if (!bound) return;
@@ -567,6 +590,10 @@ void PovItemReader::modifiers(PovObject& object) {
         } else if (w == "interior") {
             object.interior = std::make_shared<const PovInterior>(
                 interior(object.interior ? *object.interior : PovInterior{}));
+        } else if (w == "material") {
+            const PovMaterial m = material({object.texture, object.interior});
+            object.texture = m.texture;
+            object.interior = m.interior;
         } else if (w == "normal") {
             skip_normal(token);
         } else if (w == "no_shadow") {
@@ -603,11 +630,43 @@ PovTexture PovItemReader::texture(const PovTexture& base) {
             t.finish = finish(t.finish);
         else if (token.is_word("normal"))
             skip_normal(token);
+        else if (token.is_word("checker"))
+            checker_texture(token, t);
         else if (const auto step = transform_step(token))
             t.pigment.transform = *step * t.pigment.transform;
         else
             throw unsupported(token, "in a texture");
     }
+}
+
+void PovItemReader::checker_texture(const PovToken& keyword, PovTexture& t) {
+    PovTexture squares[2];
+    for (PovTexture& square : squares) {
+        parser_.accept(",");
+        const PovToken next = parser_.next();
+        if (!next.is_word("texture"))
+            throw parser_.error_at(
+                next, "expected a texture for the checker's squares, got " + describe(next));
+        square = texture(*default_texture_);
+        if (square.pigment.kind != PovPigment::Kind::color)
+            throw parser_.error_at(keyword,
+                                   "a checker of patterned textures is not supported yet: its "
+                                   "squares' pigments must be colours",
+                                   {kSeeCompatibility});
+    }
+    // glint's material has one finish: the first square's.
+    PovPigment& p = t.pigment;
+    p = PovPigment{};
+    p.kind = PovPigment::Kind::pattern;
+    p.spec.kind = PatternKind::checker;
+    p.spec.wave = default_wave(PatternKind::checker);
+    p.map.stops = {{0, squares[0].pigment.color}, {1, squares[1].pigment.color}};
+    t.finish = squares[0].finish;
+    if (!warned_checker_finish_)
+        warnings_.push_back(
+            "texture { checker texture texture }: both squares take the first's "
+            "finish");
+    warned_checker_finish_ = true;
 }
 
 PovFinish PovItemReader::finish(const PovFinish& base) {
@@ -669,6 +728,35 @@ PovFinish PovItemReader::finish(const PovFinish& base) {
             }
         } else {
             throw unsupported(token, "in a finish");
+        }
+    }
+}
+
+PovMaterial PovItemReader::material(const PovMaterial& base) {
+    parser_.expect("{", "after material");
+    PovMaterial m = base;
+    if (auto d = declared<PovMaterial>(parser_.peek_item())) {
+        parser_.next();
+        if (d->texture) m.texture = d->texture;
+        if (d->interior) m.interior = d->interior;
+    }
+    for (;;) {
+        const PovToken token = parser_.next();
+        if (token.is_symbol("}")) return m;
+        if (token.is_word("texture")) {
+            m.texture = std::make_shared<const PovTexture>(
+                texture(m.texture ? *m.texture : *default_texture_));
+        } else if (token.is_word("interior")) {
+            m.interior = std::make_shared<const PovInterior>(
+                interior(m.interior ? *m.interior : PovInterior{}));
+        } else if (const auto step = transform_step(token)) {
+            if (m.texture) {
+                PovTexture moved = *m.texture;
+                moved.pigment.transform = *step * moved.pigment.transform;
+                m.texture = std::make_shared<const PovTexture>(moved);
+            }
+        } else {
+            throw unsupported(token, "in a material");
         }
     }
 }

@@ -25,10 +25,14 @@ public:
 
     PovObject object(const PovToken& keyword);
     PovTexture texture(const PovTexture& base);
+    // texture { checker texture { } texture { } }: the keyword read; onto a checker pigment.
+    void checker_texture(const PovToken& keyword, PovTexture& t);
     PovPigment pigment(const PovPigment& base);
     PovColorMap color_map(const PovToken& keyword);
     PovFinish finish(const PovFinish& base);
     PovInterior interior(const PovInterior& base);
+    // material { [declared] texture interior transforms }, over what the object has.
+    PovMaterial material(const PovMaterial& base);
     PovCamera camera(const PovToken& keyword);
     PovLight light_source(const PovToken& keyword);
     PovSkySphere sky_sphere(const PovToken& keyword);
@@ -38,6 +42,9 @@ public:
     std::optional<Transform> transform_step(const PovToken& keyword);
     // The float after a keyword that may take one (`metallic 0.5`, `hollow off`), else 1.
     double optional_amount();
+    // The bounding box of an object as POV-Ray's min_extent and max_extent give it: huge where
+    // it is unbounded, empty where it has no surface.
+    Bounds3 extent(const PovObject& object);
 
 private:
     Shape shape(const PovToken& keyword);
@@ -81,6 +88,7 @@ private:
     bool warned_normal_ = false;
     bool warned_layers_ = false;
     bool warned_fog_noise_ = false;
+    bool warned_checker_finish_ = false;
     bool warned_crackle_ = false;
 };
 

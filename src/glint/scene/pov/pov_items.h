@@ -83,6 +83,12 @@ struct PovInterior {
     double dispersion = 1;
 };
 
+// material { texture interior }: what it gives; null where it gives nothing.
+struct PovMaterial {
+    std::shared_ptr<const PovTexture> texture;
+    std::shared_ptr<const PovInterior> interior;
+};
+
 // POV-Ray's camera as written: its vectors before look_at aims them (pov_scene.cpp does).
 struct PovCamera {
     PovPosition at;  // the camera keyword, for errors found when it is placed
@@ -152,7 +158,7 @@ struct PovUnread {
 };
 
 using PovItem = std::variant<PovObject, PovTexture, PovPigment, PovFinish, PovInterior, Transform,
-                             PovUnread, PovCamera, PovColorMap, PovSkySphere>;
+                             PovUnread, PovCamera, PovColorMap, PovSkySphere, PovMaterial>;
 
 // A declared item as an identifier's value holds it.
 struct PovItemRef {

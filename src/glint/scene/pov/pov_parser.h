@@ -88,6 +88,10 @@ public:
     // value of `#declare Ball = sphere { ... }`. Returns nothing for a word that starts none.
     using ItemReader = std::function<std::optional<PovValue>(const PovToken& keyword)>;
     void set_item_reader(ItemReader reader) { item_reader_ = std::move(reader); }
+    // min_extent and max_extent: the corners of a declared object's bounding box.
+    using ExtentReader =
+        std::function<std::pair<PovVector, PovVector>(const PovItemRef&, const PovToken& at)>;
+    void set_extent_reader(ExtentReader reader) { extent_reader_ = std::move(reader); }
 
     PovSymbols& symbols() { return symbols_; }
     // The first #version of the scene file itself; none in a scene written before POV-Ray 3.7.
@@ -231,6 +235,7 @@ private:
     };
     std::map<std::string, OpenFile> open_files_;  // by handle
     ItemReader item_reader_;
+    ExtentReader extent_reader_;
 };
 
 }  // namespace glint

@@ -65,6 +65,18 @@ class Builder {
 public:
     Builder(PovFiles& files, const ReadSandbox& sandbox)
         : files_(files), parser_(files, options(sandbox)), items_(parser_, scene_.warnings) {
+        parser_.set_extent_reader([this](const PovItemRef& ref, const PovToken& at) {
+            const auto* object = std::get_if<PovObject>(&ref.item);
+            if (!object) throw parser_.error_at(at, "min_extent and max_extent take an object");
+            // POV-Ray's huge bound where an object is unbounded.
+            const auto corner = [](Point3 p, float huge) {
+                const auto c = [&](float v) { return std::isfinite(v) ? double(v) : double(huge); };
+                return PovVector{{c(p.x), c(p.y), c(p.z)}};
+            };
+            const Bounds3 b = items_.extent(*object);
+            if (b.is_empty()) return std::pair{PovVector{}, PovVector{}};
+            return std::pair{corner(b.min, -1e10f), corner(b.max, 1e10f)};
+        });
         parser_.set_item_reader([this](const PovToken& keyword) -> std::optional<PovValue> {
             auto item = items_.read(keyword);
             if (!item) return std::nullopt;
