@@ -35,8 +35,9 @@ TEST_P(PovReference, MatchesPovRaysRender) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Scenes, PovReference,
-                         testing::Values("basics", "clip", "fog", "inverse", "patterns",
-                                         "polynomials", "sky"));
+                         testing::Values("basics", "camera", "clip", "csg", "finishes", "fog",
+                                         "inverse", "language", "lights", "mesh", "patterns",
+                                         "polynomials", "refraction", "shapes", "sky"));
 
 }  // namespace
 }  // namespace glint

@@ -78,6 +78,7 @@ TEST(PovScene, LightsBackgroundAndGlobalSettings) {
     EXPECT_EQ(s.ambient, (Color{0.5f, 0.5f, 0.5f}));
     EXPECT_EQ(s.settings.max_depth, 7);
     EXPECT_EQ(s.settings.min_weight, 0.01f);
+    EXPECT_TRUE(s.settings.transparent_shadows);  // POV-Ray's shadows pass transparent objects
 }
 
 TEST(PovScene, FinishesBecomePhongMaterials) {
@@ -95,7 +96,9 @@ TEST(PovScene, FinishesBecomePhongMaterials) {
     EXPECT_EQ(plain.ks, 0);
     const Material& glass = s.materials[1];
     EXPECT_EQ(std::get<Color>(glass.color), (Color{1, 0, 0}));
-    EXPECT_FLOAT_EQ(glass.ka, 0.2f);
+    // Ambient and diffuse scaled by the pigment's opacity, 1 - 0.6, as POV-Ray scales them.
+    EXPECT_FLOAT_EQ(glass.ka, 0.2f * 0.4f);
+    EXPECT_FLOAT_EQ(glass.kd, 0.7f * 0.4f);
     EXPECT_EQ(glass.highlight, Highlight::phong);
     EXPECT_FLOAT_EQ(glass.ks, 0.5f);
     EXPECT_FLOAT_EQ(glass.shininess, 30);

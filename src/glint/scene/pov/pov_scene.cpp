@@ -84,6 +84,8 @@ public:
         });
         scene_.ambient = {1, 1, 1};               // global_settings' ambient_light
         scene_.settings.min_weight = 1.0f / 255;  // adc_bailout
+        // POV-Ray's shadow rays pass through transparent objects, dimmed by what they let through.
+        scene_.settings.transparent_shadows = true;
         scene_.camera = default_camera();
     }
 
@@ -370,6 +372,10 @@ private:
         if (f.emission > 0 && p.kind == PovPigment::Kind::color)
             m.emission = rgb(p.color) * float(f.emission);
         m.transmit = float(std::clamp(transmitted(p), 0.0, 1.0));
+        // What a pigment lets through it does not reflect diffusely: POV-Ray scales the ambient
+        // and diffuse terms by its opacity (the highlights it leaves).
+        m.ka *= 1 - m.transmit;
+        m.kd *= 1 - m.transmit;
         if (interior) m.ior = float(interior->ior);
         scene_.materials.push_back(std::move(m));
         const auto index = std::uint32_t(scene_.materials.size() - 1);
