@@ -518,20 +518,11 @@ Bounds3 PovItemReader::extent(const PovObject& object) {
 void PovItemReader::set_polynomial_region(const PovToken& keyword, PovObject& object) {
     const PovObject* bound = object.bounded_by ? object.bounded_by.get() : object.clipped_by.get();
     if (!bound) return;
-    const std::string& what = object.polynomial;
-    Bounds3 region{{-kInfinity, -kInfinity, -kInfinity}, {kInfinity, kInfinity, kInfinity}};
-    for (const auto& child : bound->children) {
-        if (!child->shape)
-            throw parser_.error_at(keyword, "the " + what +
-                                                "'s bounding objects must be simple shapes "
-                                                "(a sphere, a box) for glint to take their box");
-        const Bounds3 b =
-            bounds(Transformed(child->transform, std::make_shared<const Shape>(*child->shape)));
-        region = {max(region.min, b.min), min(region.max, b.max)};
-    }
+    // The objects' common box, in the object's own space.
+    const Bounds3 region = extent(*bound);
     const Vector3 size = region.diagonal();
-    if (!region.is_finite() || !(size.x > 0 && size.y > 0 && size.z > 0))
-        throw parser_.error_at(keyword, "the " + what +
+    if (region.is_empty() || !region.is_finite() || !(size.x > 0 && size.y > 0 && size.z > 0))
+        throw parser_.error_at(keyword, "the " + object.polynomial +
                                             "'s bounded_by or clipped_by objects must enclose a "
                                             "finite box for glint to search the surface in");
     bound_polynomial(*object.shape, region);

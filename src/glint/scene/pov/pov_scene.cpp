@@ -421,9 +421,14 @@ private:
         const bool intersection = object.csg == PovObject::Csg::intersection;
         const bool difference = object.csg == PovObject::Csg::difference;
         std::vector<Shape> kept, taken;
-        // An intersection bounds an unbounded polynomial operand by its other operands' box.
+        // An intersection bounds an unbounded polynomial operand by its other operands' box
+        // (worked out only then: placing the operands twice would cost twice a level).
         Bounds3 common{{-kInfinity, -kInfinity, -kInfinity}, {kInfinity, kInfinity, kInfinity}};
-        if (intersection)
+        const bool needs_common =
+            intersection && std::any_of(operands.begin(), operands.end(), [](const PovObject* o) {
+                return unbounded_polynomial(*o);
+            });
+        if (needs_common)
             for (const PovObject* operand : operands)
                 if (!unbounded_polynomial(*operand) && !operand->inverse) {
                     const Bounds3 b = bounds(placed_shape(*operand));
