@@ -6,6 +6,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <filesystem>
+#include <fstream>
 #include <functional>
 #include <numbers>
 
@@ -500,6 +502,30 @@ TEST(PovScene, ACheckerOfTexturesIsACheckerOfTheirColours) {
                        "texture { pigment { rgb 1 } } } }")
                   .find("a checker of patterned textures is not supported yet"),
               std::string::npos);
+}
+
+// A folder the user allows to be read is a library path too (POV-Ray's +L).
+TEST(PovScene, AllowedFoldersAreSearchedForIncludes) {
+    const auto root =
+        std::filesystem::temp_directory_path() /
+        ("glint_pov_lib_" + std::to_string(::testing::UnitTest::GetInstance()->random_seed()));
+    std::filesystem::create_directories(root / "scene");
+    std::filesystem::create_directories(root / "lib");
+    std::ofstream(root / "lib" / "ball.inc") << "#declare Ball = sphere { 0, 2 }";
+    const std::string text = "#include \"ball.inc\" object { Ball }";
+    const ReadSandbox allowed =
+        make_read_sandbox(root / "scene" / "scene.pov", std::vector{root / "lib"});
+    EXPECT_EQ(
+        parse_pov_scene(text, (root / "scene" / "scene.pov").string(), allowed).objects.size(), 1u);
+    const ReadSandbox alone = make_read_sandbox(root / "scene" / "scene.pov");
+    try {
+        parse_pov_scene(text, (root / "scene" / "scene.pov").string(), alone);
+        ADD_FAILURE() << "ball.inc was found without its folder";
+    } catch (const SceneError& e) {
+        EXPECT_NE(std::string(e.what()).find("cannot find the include file \"ball.inc\""),
+                  std::string::npos);
+    }
+    std::filesystem::remove_all(root);
 }
 
 TEST(PovScene, FogsBecomeGlintsFogs) {

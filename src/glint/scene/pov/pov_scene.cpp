@@ -125,7 +125,12 @@ public:
 private:
     static PovLanguageOptions options(const ReadSandbox& sandbox) {
         PovLanguageOptions o;
-        o.include_folders = default_pov_include_folders();
+        // The folders the user allows (--allow-read) are POV-Ray's library paths (+L) too:
+        // #include looks there after the scene's folder, before the standard includes.
+        o.include_folders.assign(sandbox.folders.begin() + (sandbox.folders.empty() ? 0 : 1),
+                                 sandbox.folders.end());
+        const auto standard = default_pov_include_folders();
+        o.include_folders.insert(o.include_folders.end(), standard.begin(), standard.end());
         o.sandbox = &sandbox;
         o.max_loop_iterations = sandbox.limits.script_loop_iterations;
         return o;
