@@ -132,7 +132,7 @@ Bounds3 Csg::bounds() const {
             return merge(ba, bb);
         case CsgOperation::intersection:
         case CsgOperation::clip:
-            return {max(ba.min, bb.min), min(ba.max, bb.max)};
+            return overlap(ba, bb);
         case CsgOperation::difference:
             return ba;
     }

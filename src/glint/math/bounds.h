@@ -36,6 +36,8 @@ struct Bounds3 {
 
 constexpr Bounds3 merge(Bounds3 b, Point3 p) { return {min(b.min, p), max(b.max, p)}; }
 constexpr Bounds3 merge(Bounds3 a, Bounds3 b) { return {min(a.min, b.min), max(a.max, b.max)}; }
+// The part two boxes share: empty when they do not meet.
+constexpr Bounds3 overlap(Bounds3 a, Bounds3 b) { return {max(a.min, b.min), min(a.max, b.max)}; }
 
 // Slab test (Kay and Kajiya 1986): the sub-interval of t_range inside the box, if any.
 // Division by a zero direction component gives +-inf, which the comparisons handle.

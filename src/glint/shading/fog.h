@@ -4,6 +4,7 @@
 // and glows in its colour, and scatters none. Shadow rays pass through it unchanged.
 #pragma once
 
+#include <optional>
 #include <span>
 
 #include "glint/math/color.h"
@@ -51,6 +52,11 @@ FogEffect fog_effect(std::span<const Fog> fogs, const Ray& ray, double length);
 
 inline Color through(const FogEffect& effect, Color behind) {
     return effect.transmittance * behind + effect.added;
+}
+
+// No fog lets everything through.
+inline Color through(const std::optional<FogEffect>& effect, Color behind) {
+    return effect ? through(*effect, behind) : behind;
 }
 
 }  // namespace glint

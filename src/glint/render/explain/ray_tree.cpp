@@ -37,12 +37,12 @@ Color light_value(const LightRecord& light) {
 
 Color evaluate(const RayTree& tree, int index) {
     const RayNode& n = tree.nodes[std::size_t(index)];
-    if (n.stop == StopReason::missed) return n.fog ? through(*n.fog, n.background) : n.background;
+    if (n.stop == StopReason::missed) return through(n.fog, n.background);
     Color color = n.emission + n.ambient;
     for (const LightRecord& light : n.lights) color += light_value(light);
     for (const BranchRecord& b : n.branches)
         if (b.child >= 0) color += b.factor * evaluate(tree, b.child);
-    return n.fog ? through(*n.fog, color) : color;
+    return through(n.fog, color);
 }
 
 Color evaluate(const RayTree& tree) { return tree.nodes.empty() ? Color{} : evaluate(tree, 0); }
@@ -50,7 +50,7 @@ Color evaluate(const RayTree& tree) { return tree.nodes.empty() ? Color{} : eval
 Color contribution(const RayNode& node) {
     const Color own = node.stop == StopReason::missed ? node.background
                                                       : node.emission + node.ambient + node.direct;
-    return node.throughput * (node.fog ? through(*node.fog, own) : own);
+    return node.throughput * through(node.fog, own);
 }
 
 }  // namespace glint

@@ -19,8 +19,4 @@ inline std::optional<FogEffect> ray_fog(const World& world, const Ray& ray,
     return fog_effect(world.fogs(), ray, length);
 }
 
-inline Color through(const std::optional<FogEffect>& fog, Color behind) {
-    return fog ? through(*fog, behind) : behind;
-}
-
 }  // namespace glint

@@ -47,9 +47,7 @@ std::optional<PovValue> next_datum(const std::string& text, std::size_t& at, boo
         PovVector v;
         v.size = 0;
         for (;;) {
-            while (at < text.size() &&
-                   (std::isspace(static_cast<unsigned char>(text[at])) || text[at] == ','))
-                ++at;
+            skip();
             if (at < text.size() && text[at] == '>') break;
             const auto component = number();
             if (!component || v.size == 5) {

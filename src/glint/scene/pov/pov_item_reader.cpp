@@ -499,8 +499,7 @@ Bounds3 PovItemReader::extent(const PovObject& object) {
     } else if (object.csg == PovObject::Csg::intersection) {
         b = {{-kInfinity, -kInfinity, -kInfinity}, {kInfinity, kInfinity, kInfinity}};
         for (const auto& child : object.children) {
-            const Bounds3 c = extent(*child);
-            b = {max(b.min, c.min), min(b.max, c.max)};
+            b = overlap(b, extent(*child));
         }
     } else if (object.csg == PovObject::Csg::difference && !object.children.empty()) {
         b = extent(*object.children.front());
@@ -508,8 +507,7 @@ Bounds3 PovItemReader::extent(const PovObject& object) {
         for (const auto& child : object.children) b = merge(b, extent(*child));
     }
     if (object.clipped_by) {
-        const Bounds3 c = extent(*object.clipped_by);
-        b = {max(b.min, c.min), min(b.max, c.max)};
+        b = overlap(b, extent(*object.clipped_by));
     }
     if (b.is_empty() || !b.is_finite()) return b;
     return bounds(Transformed(object.transform, std::make_shared<const Shape>(Box{b.min, b.max})));

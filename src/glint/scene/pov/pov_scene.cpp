@@ -426,8 +426,7 @@ private:
         const bool intersection = object.csg == PovObject::Csg::intersection;
         const bool difference = object.csg == PovObject::Csg::difference;
         std::vector<Shape> kept, taken;
-        // An intersection bounds an unbounded polynomial operand by its other operands' box
-        // (worked out only then: placing the operands twice would cost twice a level).
+        // An intersection bounds an unbounded polynomial operand by its other operands' box.
         Bounds3 common{{-kInfinity, -kInfinity, -kInfinity}, {kInfinity, kInfinity, kInfinity}};
         const bool needs_common =
             intersection && std::any_of(operands.begin(), operands.end(), [](const PovObject* o) {
@@ -435,10 +434,8 @@ private:
             });
         if (needs_common)
             for (const PovObject* operand : operands)
-                if (!unbounded_polynomial(*operand) && !operand->inverse) {
-                    const Bounds3 b = bounds(placed_shape(*operand));
-                    common = {max(common.min, b.min), min(common.max, b.max)};
-                }
+                if (!unbounded_polynomial(*operand) && !operand->inverse)
+                    common = overlap(common, items_.extent(*operand));
         for (std::size_t i = 0; i < operands.size(); ++i) {
             PovObject bounded;
             const PovObject* operand_ptr = operands[i];
