@@ -18,6 +18,7 @@
 #include "glint/geometry/moving.h"
 #include "glint/geometry/plane.h"
 #include "glint/geometry/polygon.h"
+#include "glint/geometry/prism.h"
 #include "glint/geometry/quadric.h"
 #include "glint/geometry/sphere.h"
 #include "glint/geometry/surface_point.h"
@@ -31,9 +32,9 @@ namespace glint {
 
 // A struct rather than an alias so that it can be forward-declared by shapes that hold other
 // shapes (CSG, transforms). It is the variant: std::visit, std::get and friends apply.
-struct Shape
-    : std::variant<Sphere, Plane, Triangle, Box, Disk, Cylinder, Cone, Torus, Quadric, Polygon,
-                   TriangleMesh, ImplicitSurface, JuliaSet, Mandelbulb, Transformed, Moving, Csg> {
+struct Shape : std::variant<Sphere, Plane, Triangle, Box, Disk, Cylinder, Cone, Torus, Quadric,
+                            Polygon, Prism, TriangleMesh, ImplicitSurface, JuliaSet, Mandelbulb,
+                            Transformed, Moving, Csg> {
     using variant::variant;
 };
 

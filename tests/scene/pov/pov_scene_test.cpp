@@ -459,6 +459,31 @@ TEST(PovScene, PolynomialSurfacesAreSearchedWithinTheirBounds) {
               std::string::npos);
 }
 
+// prism is glint's prism: the outlines of its spline in the x-z plane, swept along y between its
+// heights in either order; `open` leaves the caps off.
+TEST(PovScene, PrismsSweepTheirSplinesOutlines) {
+    const Scene s = parse(R"(
+        prism { linear_sweep linear_spline 1, -1, 10,
+                <-2, -2>, <2, -2>, <2, 2>, <-2, 2>, <-2, -2>,
+                <-1, -1>, <1, -1>, <1, 1>, <-1, 1>, <-1, -1> }
+        prism { bezier_spline 0, 1, 4, <0, 0>, <0, 1>, <1, 1>, <1, 0> open sturm })");
+    ASSERT_EQ(s.objects.size(), 2u);
+    const auto& frame = std::get<Prism>(s.objects[0].shape);
+    EXPECT_EQ(frame.bottom, -1);
+    EXPECT_EQ(frame.top, 1);
+    EXPECT_EQ(frame.profile->edges.size(), 8u);
+    // Down the hole: nothing; down the frame: the top cap.
+    EXPECT_FALSE(intersect(s.objects[0].shape, Ray{{0, 5, 0}, {0, -1, 0}}, {0, kInfinity}));
+    const auto hit = intersect(s.objects[0].shape, Ray{{1.5f, 5, 0}, {0, -1, 0}}, {0, kInfinity});
+    ASSERT_TRUE(hit.has_value());
+    EXPECT_FLOAT_EQ(hit->t, 4);
+    EXPECT_TRUE(std::get<Prism>(s.objects[1].shape).open);
+    EXPECT_EQ(s.warnings.size(), 1u);  // the Bezier outline, closed by a straight edge
+    EXPECT_NE(error_of("prism { cubic_spline 0, 1, 3, <0, 0>, <1, 0>, <0, 1> }")
+                  .find("prism: a cubic spline needs at least 4 points, got 3"),
+              std::string::npos);
+}
+
 TEST(PovScene, MaterialsGiveTextureAndInterior) {
     const Scene s = parse(R"(
         #declare Glass = material { texture { pigment { rgbf <1, 0, 0, 0.5> } } interior { ior 1.5 } }

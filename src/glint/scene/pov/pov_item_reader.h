@@ -49,6 +49,7 @@ public:
 private:
     Shape shape(const PovToken& keyword);
     Shape mesh(const PovToken& keyword);
+    Shape prism(const PovToken& keyword);  // pov_extrusion_reader.cpp
     // The corners of triangles as read, three a triangle, with a smooth one's normals.
     struct MeshCorners {
         std::vector<Point3> positions;

@@ -24,7 +24,7 @@ std::vector<EntitySchema> shape_schemas() {
              {"type", "string", "required", "the shape",
               "`box`, `cone`, `cylinder`, `difference`, `disk`, `implicit`, `instance`, "
               "`intersection`, `julia`, `mandelbulb`, `merge`, `mesh`, `plane`, `polygon`, "
-              "`quadric`, `sphere`, `torus`, `triangle`, `union`"},
+              "`prism`, `quadric`, `sphere`, `torus`, `triangle`, `union`"},
              {"transform", "list of steps", "none",
               "places the shape: see [transforms](#transforms)", ""},
              {"motion", "list of keyframes", "none",
@@ -76,6 +76,24 @@ std::vector<EntitySchema> shape_schemas() {
               "angles the edges subtend (the winding number). They agree on simple polygons; on "
               "self-intersecting ones `even_odd` leaves doubly covered parts out",
               "`even_odd`, `angle_sum`"},
+         }},
+        {EntityFamily::shape,
+         "prism",
+         {
+             {"points", "list of `[x, z]`", "required",
+              "the outlines in the x-z plane, by `spline`; an outline ends where a point repeats "
+              "its first (for `quadratic` and `cubic`, its second), and the next point starts "
+              "another; outlines inside others cut holes (the even-odd rule)",
+              "enough for the spline; an unclosed last outline is closed by a straight edge"},
+             {"spline", "string", "`linear`",
+              "POV-Ray's splines: `linear` joins the points by straight edges, `quadratic` and "
+              "`cubic` (Catmull-Rom) pass through them with the first point setting the slope, "
+              "`bezier` takes four points a curve",
+              "`linear`, `quadratic`, `cubic`, `bezier`"},
+             {"bottom", "number", "0", "the height along y the outlines are swept from", "< top"},
+             {"top", "number", "1", "the height they are swept to", "> bottom"},
+             {"open", "bool", "false",
+              "without the caps at bottom and top: walls only, not a solid", ""},
          }},
         {EntityFamily::shape,
          "disk",

@@ -1,8 +1,9 @@
-// Parsers of the flat and simple shapes: sphere, plane, triangle, box, polygon. Each checks what
-// makes its shape degenerate, so that the renderer never sees one.
+// Parsers of the flat and simple shapes: sphere, plane, triangle, box, polygon, prism. Each checks
+// what makes its shape degenerate, so that the renderer never sees one.
 #include <algorithm>
 #include <cmath>
 
+#include "glint/geometry/spline_outlines.h"
 #include "glint/scene/yaml/yaml_shape_parsers.h"
 
 namespace glint {
@@ -88,6 +89,33 @@ Shape parse_polygon(const MapReader& object, ShapeReader&) {
                                 ? InsideTest::angle_sum
                                 : InsideTest::even_odd;
     return std::get<Polygon>(make_polygon(std::move(vertices), test));
+}
+
+constexpr std::string_view kSplines[] = {"bezier", "cubic", "linear", "quadratic"};
+
+Shape parse_prism(const MapReader& object, ShapeReader&) {
+    const YamlSource& source = object.source();
+    const MapEntry& entry = object.require("points");
+    const auto items =
+        read_sequence(source, entry.value, object.field("points"), "a list of [x, z] points");
+    std::vector<Point2> points;
+    points.reserve(items.size());
+    for (std::size_t i = 0; i < items.size(); ++i) {
+        points.push_back(
+            read_point2(source, items[i], {object.what(), "points[" + std::to_string(i) + "]"}));
+    }
+    const SplineKind kind =
+        *spline_kind(object.choice("spline", kSplines, "spline", "splines", "linear"));
+    auto outlines = spline_outlines(kind, points);
+    if (const auto* problem = std::get_if<std::string>(&outlines)) {
+        throw source.error_at(entry.value, "prism points: " + *problem);
+    }
+    auto prism = make_prism(std::get<SplineOutlines>(outlines).outlines, object.number("bottom"),
+                            object.number("top"), object.boolean("open", false));
+    if (const auto* problem = std::get_if<std::string>(&prism)) {
+        throw source.error_at(object.node(), *problem);
+    }
+    return std::get<Prism>(std::move(prism));
 }
 
 }  // namespace glint

@@ -121,7 +121,8 @@ std::shared_ptr<const Shape> ShapeReader::read_operand(const YAML::Node& node, c
                             "open; a box that encloses the surface makes it a solid");
         }
         notes.push_back(
-            "CSG operands are solids: spheres, boxes, capped cylinders and cones, tori, implicit "
+            "CSG operands are solids: spheres, boxes, capped cylinders and cones, tori, prisms, "
+            "implicit "
             "surfaces inside their box, fractals, closed meshes, planes (half-spaces), CSG "
             "shapes other than clip, and transforms and instances of these");
         throw source_.error_at(

@@ -30,6 +30,7 @@ const ShapeType kShapeTypes[] = {
     {"mesh", parse_mesh},
     {"plane", parse_plane},
     {"polygon", parse_polygon},
+    {"prism", parse_prism},
     {"quadric", parse_quadric},
     {"sphere", parse_sphere},
     {"torus", parse_torus},

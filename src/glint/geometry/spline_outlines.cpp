@@ -1,0 +1,120 @@
+// POV-Ray's prism splines, segment by segment in power form, as POV-Ray walks them.
+#include "glint/geometry/spline_outlines.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace glint {
+
+namespace {
+
+bool same_point(Point2 a, Point2 b) {
+    return std::abs(a.x - b.x) < 1e-10 && std::abs(a.y - b.y) < 1e-10;
+}
+
+// The power-form curve of segment i of the spline (POV-Ray's blending of the points).
+CubicCurve segment(SplineKind kind, std::span<const Point2> p, std::size_t i) {
+    const auto blend = [&](float w0, float w1, float w2, float w3) {
+        const auto at = [&](std::size_t k) {
+            return k < p.size() ? p[k] : Point2{};  // unused weights are 0
+        };
+        const Point2 a = at(i), b = at(i + 1), c = at(i + 2), d = at(i + 3);
+        return Point2{w0 * a.x + w1 * b.x + w2 * c.x + w3 * d.x,
+                      w0 * a.y + w1 * b.y + w2 * c.y + w3 * d.y};
+    };
+    switch (kind) {
+        case SplineKind::linear:
+            return {{}, {}, blend(-1, 1, 0, 0), blend(1, 0, 0, 0)};
+        case SplineKind::quadratic:
+            return {{}, blend(0.5f, -1, 0.5f, 0), blend(-0.5f, 0, 0.5f, 0), blend(0, 1, 0, 0)};
+        case SplineKind::cubic:
+            return {blend(-0.5f, 1.5f, -1.5f, 0.5f), blend(1, -2.5f, 2, -0.5f),
+                    blend(-0.5f, 0, 0.5f, 0), blend(0, 1, 0, 0)};
+        case SplineKind::bezier:
+            return {blend(-1, 3, -3, 1), blend(3, -6, 3, 0), blend(-3, 3, 0, 0), blend(1, 0, 0, 0)};
+    }
+    return {};
+}
+
+// How many points past i a segment reads, and how many it steps over when it closes an outline.
+std::size_t reach(SplineKind kind) {
+    return kind == SplineKind::linear ? 1 : kind == SplineKind::quadratic ? 2 : 3;
+}
+
+}  // namespace
+
+std::optional<SplineKind> spline_kind(std::string_view name) {
+    if (name == "linear") return SplineKind::linear;
+    if (name == "quadratic") return SplineKind::quadratic;
+    if (name == "cubic") return SplineKind::cubic;
+    if (name == "bezier") return SplineKind::bezier;
+    return std::nullopt;
+}
+
+std::variant<SplineOutlines, std::string> spline_outlines(SplineKind kind,
+                                                          std::span<const Point2> points) {
+    const std::size_t n = points.size();
+    const std::size_t least = kind == SplineKind::linear ? 3 : 4;
+    if (n < least) {
+        return "a " +
+               std::string(kind == SplineKind::linear      ? "linear"
+                           : kind == SplineKind::quadratic ? "quadratic"
+                           : kind == SplineKind::cubic     ? "cubic"
+                                                           : "bezier") +
+               " spline needs at least " + std::to_string(least) + " points, got " +
+               std::to_string(n);
+    }
+    Point2 lo = points[0], hi = points[0];
+    for (const Point2 p : points) {
+        lo = {std::min(lo.x, p.x), std::min(lo.y, p.y)};
+        hi = {std::max(hi.x, p.x), std::max(hi.y, p.y)};
+    }
+    const double tolerance = 1e-4 * std::max(double(std::hypot(hi.x - lo.x, hi.y - lo.y)), 1e-30);
+
+    SplineOutlines result;
+    Outline outline;
+    const auto start_of = [&](std::size_t i) {
+        return kind == SplineKind::quadratic || kind == SplineKind::cubic ? i + 1 : i;
+    };
+    Point2 first = points[start_of(0)];
+    const auto close = [&](bool by_line) {
+        if (outline.empty()) return;
+        if (by_line) {
+            append_line(outline, outline.back().b, outline.front().a);
+            ++result.closed_by_line;
+        }
+        result.outlines.push_back(std::move(outline));
+        outline.clear();
+    };
+    for (std::size_t i = 0; i + 1 < n; ++i) {
+        if (i + reach(kind) >= n) {
+            return "too few points: the spline's segment from point " + std::to_string(i + 1) +
+                   " needs point " + std::to_string(i + reach(kind) + 1) + ", but there are " +
+                   std::to_string(n);
+        }
+        if (kind == SplineKind::linear) {
+            append_line(outline, points[i], points[i + 1]);
+        } else {
+            append_curve(outline, segment(kind, points, i), tolerance);
+        }
+        // The point the segment ends on, and whether it closes the outline.
+        const std::size_t end = kind == SplineKind::linear   ? i + 1
+                                : kind == SplineKind::bezier ? i + 3
+                                                             : i + 2;
+        if (kind == SplineKind::bezier) {
+            i += 3;
+            if (same_point(points[end], first)) {
+                close(false);
+                if (i + 1 < n) first = points[i + 1];
+            }
+        } else if (same_point(points[end], first)) {
+            close(false);
+            i += reach(kind);
+            if (start_of(i + 1) < n) first = points[start_of(i + 1)];
+        }
+    }
+    close(true);
+    return result;
+}
+
+}  // namespace glint
