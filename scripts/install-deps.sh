@@ -8,7 +8,7 @@ packages=(
     build-essential cmake pkg-config clang-format git lld
     clang libclang-rt-14-dev
     libyaml-cpp-dev libtbb-dev libpng-dev zlib1g-dev libopenexr-dev libstb-dev
-    libassimp-dev libembree-dev libpolyclipping-dev
+    libassimp-dev libembree-dev libpolyclipping-dev libfreetype-dev
     libcli11-dev libgtest-dev libgmock-dev libbenchmark-dev
     graphviz  # the tests render `glint explain --format dot` with it
     python3-dev pybind11-dev python3-numpy python3-pytest  # the Python module and its tests

@@ -144,6 +144,10 @@ Outline circle(float r) {
 TEST(Prism, CurvedOutlineIsACylinderWithSmoothNormals) {
     const Prism disk = made({circle(1)}, -1, 1);
     ASSERT_GT(disk.profile->edges.size(), 16u);  // flattened finely enough for 1e-4
+    // The curves' ends, evaluated in power form, are joined exactly to the next curve's start.
+    const auto& edges = disk.profile->edges;
+    for (std::size_t i = 0; i < edges.size(); ++i)
+        EXPECT_EQ(edges[i].b, edges[(i + 1) % edges.size()].a);
     testing::PropertyOptions options;
     options.surface_tolerance = 1e-3f;  // the Bezier circle and its flattening
     testing::expect_shape_properties(

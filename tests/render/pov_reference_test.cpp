@@ -37,7 +37,8 @@ TEST_P(PovReference, MatchesPovRaysRender) {
 INSTANTIATE_TEST_SUITE_P(Scenes, PovReference,
                          testing::Values("basics", "camera", "clip", "csg", "finishes", "fog",
                                          "inverse", "language", "lights", "mesh", "patterns",
-                                         "polynomials", "prism", "refraction", "shapes", "sky"));
+                                         "polynomials", "prism", "refraction", "shapes", "sky",
+                                         "text"));
 
 }  // namespace
 }  // namespace glint

@@ -484,6 +484,34 @@ TEST(PovScene, PrismsSweepTheirSplinesOutlines) {
               std::string::npos);
 }
 
+// text is a union of prisms, a letter each, standing in the x-y plane from z = 0 to the
+// thickness; the font comes from beside the scene (here POV-Ray's timrom.ttf of tests/data/pov).
+TEST(PovScene, TextIsAPrismALetter) {
+    const std::filesystem::path folder = std::filesystem::path(GLINT_SOURCE_DIR) / "tests/data/pov";
+    const ReadSandbox sandbox = make_read_sandbox(folder / "scene.pov");
+    const Scene s = parse_pov_scene(R"(text { ttf "timrom.ttf" "I o" 0.25, 0 })",
+                                    folder / "scene.pov", sandbox);
+    ASSERT_EQ(s.objects.size(), 2u);  // the space has no letter
+    // Along z through the I's stem: its front at z = 0, seen from -z.
+    const auto front =
+        intersect(s.objects[0].shape, Ray{{0.15f, 0.3f, -5}, {0, 0, 1}}, {0, kInfinity});
+    ASSERT_TRUE(front.has_value());
+    EXPECT_NEAR(front->t, 5, 1e-5);
+    const auto back =
+        intersect(s.objects[0].shape, Ray{{0.15f, 0.3f, 5}, {0, 0, -1}}, {0, kInfinity});
+    ASSERT_TRUE(back.has_value());
+    EXPECT_NEAR(back->t, 4.75, 1e-5);
+    // Through the o's hole: nothing; through its ring: the letter.
+    const Bounds3 o = bounds(s.objects[1].shape);
+    const float middle_x = (o.min.x + o.max.x) / 2, middle_y = (o.min.y + o.max.y) / 2;
+    EXPECT_FALSE(
+        intersect(s.objects[1].shape, Ray{{middle_x, middle_y, -5}, {0, 0, 1}}, {0, kInfinity}));
+    EXPECT_TRUE(intersect(s.objects[1].shape, Ray{{o.min.x + 0.02f, middle_y, -5}, {0, 0, 1}},
+                          {0, kInfinity}));
+    EXPECT_NEAR(o.min.z, 0, 1e-6);
+    EXPECT_NEAR(o.max.z, 0.25, 1e-6);
+}
+
 TEST(PovScene, MaterialsGiveTextureAndInterior) {
     const Scene s = parse(R"(
         #declare Glass = material { texture { pigment { rgbf <1, 0, 0, 0.5> } } interior { ior 1.5 } }

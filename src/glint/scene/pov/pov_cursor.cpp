@@ -240,12 +240,18 @@ std::pair<std::filesystem::path, std::string> PovParser::read_file(const PovToke
         throw error_at(name_token, "cannot find the " + std::string(what) + " " + quote(name),
                        std::move(notes));
     }
+    // The include folders may be read, and the standard ones by the path found: Debian links
+    // POV-Ray's fonts there from the system's font folder.
+    const auto standard = default_pov_include_folders();
     if (options_.sandbox && !may_read(*options_.sandbox, found) &&
         !std::any_of(options_.include_folders.begin(), options_.include_folders.end(),
                      [&](const auto& folder) {
                          return is_inside(std::filesystem::weakly_canonical(found),
                                           std::filesystem::weakly_canonical(folder));
-                     }))
+                     }) &&
+        !std::any_of(standard.begin(), standard.end(), [&](const auto& folder) {
+            return is_inside(found.lexically_normal(), folder.lexically_normal());
+        }))
         throw error_at(name_token, "the scene may not read " + quote(found.string()),
                        {"allow its folder with --allow-read FOLDER"});
     std::ifstream in(found, std::ios::binary);

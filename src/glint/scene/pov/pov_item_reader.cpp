@@ -26,16 +26,16 @@ bool is_shape(const std::string& keyword) {
     return keyword == "sphere" || keyword == "box" || keyword == "plane" || keyword == "cylinder" ||
            keyword == "cone" || keyword == "torus" || keyword == "disc" || keyword == "triangle" ||
            keyword == "smooth_triangle" || keyword == "polygon" || keyword == "mesh" ||
-           keyword == "prism" || is_polynomial(keyword);
+           keyword == "prism" || keyword == "text" || is_polynomial(keyword);
 }
 
 // POV-Ray's objects that glint does not read yet: read past, so that only using one stops the
 // scene (include files declare many).
 bool is_unread_object(const std::string& keyword) {
     static const std::string_view kUnread[] = {
-        "bicubic_patch", "blob",  "height_field", "isosurface",     "julia_fractal",
-        "lathe",         "lemon", "mesh2",        "ovus",           "parametric",
-        "polynomial",    "sor",   "sphere_sweep", "superellipsoid", "text"};
+        "bicubic_patch", "blob",  "height_field", "isosurface",    "julia_fractal",
+        "lathe",         "lemon", "mesh2",        "ovus",          "parametric",
+        "polynomial",    "sor",   "sphere_sweep", "superellipsoid"};
     return std::find(std::begin(kUnread), std::end(kUnread), keyword) != std::end(kUnread);
 }
 
@@ -248,6 +248,8 @@ PovObject PovItemReader::object(const PovToken& keyword) {
         csg(keyword, object);
     } else if (keyword.text == "mesh") {
         object.shape = mesh(keyword);
+    } else if (keyword.text == "text") {
+        text(keyword, object);
     } else {
         object.shape = shape(keyword);
         if (is_polynomial(keyword.text)) object.polynomial = keyword.text;

@@ -49,7 +49,9 @@ public:
 private:
     Shape shape(const PovToken& keyword);
     Shape mesh(const PovToken& keyword);
-    Shape prism(const PovToken& keyword);  // pov_extrusion_reader.cpp
+    // pov_extrusion_reader.cpp: prism, and text as a union of a prism a letter.
+    Shape prism(const PovToken& keyword);
+    void text(const PovToken& keyword, PovObject& object);
     // The corners of triangles as read, three a triangle, with a smooth one's normals.
     struct MeshCorners {
         std::vector<Point3> positions;

@@ -113,6 +113,13 @@ public:
         PovParser& parser_;
     };
 
+    // The file `name` as #include, #fopen and text's fonts find it: in the including file's
+    // folder, the scene's, then the include folders; inside the sandbox. Its path and text.
+    std::pair<std::filesystem::path, std::string> read_file(const PovToken& directive,
+                                                            const PovToken& name_token,
+                                                            const std::string& name,
+                                                            std::string_view what);
+
     SceneError error_at(const PovToken& token, std::string message,
                         std::vector<std::string> notes = {}) const {
         return files_.error_at(token.at, std::move(message), std::move(notes));
@@ -162,12 +169,6 @@ private:
     void macro_definition(const PovToken& directive);
     void call_macro(const PovToken& name, const Macro& macro);
     void include(const PovToken& directive);
-    // The file `name` as #include and #fopen find it: in the including file's folder, the
-    // scene's, then the include folders; inside the sandbox. Its path and text.
-    std::pair<std::filesystem::path, std::string> read_file(const PovToken& directive,
-                                                            const PovToken& name_token,
-                                                            const std::string& name,
-                                                            std::string_view what);
     // #fopen, #fclose, #read and #write (pov_file_io.cpp).
     void fopen_directive(const PovToken& directive);
     void fclose_directive(const PovToken& directive);
