@@ -167,10 +167,10 @@ TEST(PovScene, RotateIsAboutXThenYThenZ) {
 }
 
 TEST(PovScene, WhatIsNotReadIsALocatedErrorNamingIt) {
-    EXPECT_EQ(error_of("sphere { 0, 1\n  no_image }"),
-              "scene.pov:2:3: error: \"no_image\" is not supported as an object modifier yet\n"
-              "    2 |   no_image }\n"
-              "      |   ^~~~~~~~\n"
+    EXPECT_EQ(error_of("sphere { 0, 1\n  split_union on }"),
+              "scene.pov:2:3: error: \"split_union\" is not supported as an object modifier yet\n"
+              "    2 |   split_union on }\n"
+              "      |   ^~~~~~~~~~~\n"
               "note: docs/povray.md lists what glint reads\n");
     EXPECT_NE(error_of("blob { }").find("POV-Ray's blob is not supported yet"), std::string::npos);
     EXPECT_NE(error_of("sphere { 0, -1 }").find("sphere radius must be > 0"), std::string::npos);
@@ -510,6 +510,34 @@ TEST(PovScene, TextIsAPrismALetter) {
                           {0, kInfinity}));
     EXPECT_NEAR(o.min.z, 0, 1e-6);
     EXPECT_NEAR(o.max.z, 0.25, 1e-6);
+}
+
+// Arrays of items: object { Shapes[I] }, texture { Looks[I] }; default { } as a statement; and
+// modifiers glint reads past with a warning once.
+TEST(PovScene, ArrayElementsDefaultBlocksAndModifiersReadPast) {
+    const Scene s = parse(R"(
+        #declare Shapes = array[2] { sphere { 0, 1 }, box { -1, 1 } }
+        #declare Looks = array[2] { texture { pigment { rgb x } }, texture { pigment { rgb y } } }
+        default { finish { ambient 0 } }
+        object { Shapes[1] texture { Looks[1] } no_reflection photons { target } }
+        object { Shapes[0] texture { Looks[0] } no_reflection }
+        sphere { x * 3, 1 }
+        light_source { <0, 5, 0>, 1 photons { refraction on } })");
+    ASSERT_EQ(s.objects.size(), 3u);
+    EXPECT_TRUE(std::holds_alternative<Box>(s.objects[0].shape));
+    EXPECT_EQ(std::get<Color>(s.materials[s.objects[0].material].color), (Color{0, 1, 0}));
+    // The default's finish goes to objects without a texture of their own.
+    EXPECT_EQ(s.materials[s.objects[2].material].ka, 0);
+    EXPECT_TRUE(std::holds_alternative<Sphere>(s.objects[1].shape));
+    std::size_t read_past = 0;
+    for (const std::string& w : s.warnings)
+        read_past += w.find("is read past") != std::string::npos;
+    EXPECT_EQ(read_past, 3u);  // no_reflection once, photons in an object and in a light
+    EXPECT_NE(
+        error_of("#declare Shapes = array[2] { sphere { 0, 1 }, 4 }\n"
+                 "object { Shapes[1] }")
+            .find("this element of Shapes holds another kind of value than its other elements"),
+        std::string::npos);
 }
 
 TEST(PovScene, MaterialsGiveTextureAndInterior) {

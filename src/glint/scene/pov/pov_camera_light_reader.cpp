@@ -15,8 +15,7 @@ constexpr const char* kSeeCompatibility = "docs/povray.md lists what glint reads
 PovCamera PovItemReader::camera(const PovToken& keyword) {
     parser_.expect("{", "after camera");
     PovCamera c;
-    if (auto declared_camera = declared<PovCamera>(parser_.peek_item())) {
-        parser_.next();
+    if (auto declared_camera = take_declared<PovCamera>()) {
         c = *declared_camera;
     }
     c.at = keyword.at;
@@ -61,8 +60,7 @@ PovCamera PovItemReader::camera(const PovToken& keyword) {
 PovSkySphere PovItemReader::sky_sphere(const PovToken& keyword) {
     parser_.expect("{", "after sky_sphere");
     PovSkySphere sky;
-    if (auto declared_sky = declared<PovSkySphere>(parser_.peek_item())) {
-        parser_.next();
+    if (auto declared_sky = take_declared<PovSkySphere>()) {
         sky = *declared_sky;
     }
     for (PovToken t = parser_.next(); !t.is_symbol("}"); t = parser_.next()) {
@@ -168,6 +166,12 @@ PovLight PovItemReader::light_source(const PovToken& keyword) {
             light.fade_power = parser_.finite_float("after fade_power");
         else if (w == "shadowless")
             light.shadowless = true;
+        else if (w == "photons") {
+            parser_.skip_braced(t);
+            read_past("photons { } in a light_source",
+                      "the Whitted and distributed integrators trace no photons");
+        } else if (w == "media_interaction" || w == "media_attenuation")
+            optional_amount();
         else if (w == "looks_like") {
             parser_.expect("{", "after looks_like");
             const PovToken inner = parser_.next();

@@ -92,6 +92,11 @@ void PovItemReader::skip_normal(const PovToken& keyword) {
     warned_normal_ = true;
 }
 
+void PovItemReader::read_past(const std::string& what, const std::string& instead) {
+    if (!read_past_.insert(what).second) return;
+    warnings_.push_back(what + " is read past: " + instead);
+}
+
 void PovItemReader::read_default(const PovToken& directive) {
     parser_.expect("{", "after #default");
     PovTexture t = *default_texture_;
@@ -114,7 +119,8 @@ void PovItemReader::read_default(const PovToken& directive) {
 
 std::optional<PovItem> PovItemReader::read(const PovToken& keyword) {
     const std::string& w = keyword.text;
-    if (keyword.kind == PovTokenKind::directive && w == "default") {
+    // #default, or the same block written as a statement: default { ... }.
+    if (w == "default") {
         read_default(keyword);
         return PovUnread{"#default", keyword.at};
     }
@@ -234,15 +240,17 @@ PovObject PovItemReader::object(const PovToken& keyword) {
     parser_.expect("{", "after " + keyword.text);
     PovObject object;
     if (keyword.text == "object") {
-        const PovToken name = parser_.next();
-        if (name.kind == PovTokenKind::identifier && starts_object(name.text) &&
-            !parser_.symbols().find(name.text)) {
-            object = this->object(name);  // object { sphere { ... } ... }
-        } else if (auto base = declared<PovObject>(name)) {
+        if (auto base = take_declared<PovObject>()) {
             object = *base;
         } else {
-            throw parser_.error_at(
-                name, "expected an object or a declared one in object { }, got " + describe(name));
+            const PovToken name = parser_.next();
+            if (!(name.kind == PovTokenKind::identifier && starts_object(name.text) &&
+                  !parser_.symbols().find(name.text)))
+                throw parser_.error_at(name,
+                                       "expected an object or a declared one in object { }, "
+                                       "got " +
+                                           describe(name));
+            object = this->object(name);  // object { sphere { ... } ... }
         }
     } else if (is_csg(keyword.text)) {
         csg(keyword, object);
@@ -600,6 +608,16 @@ void PovItemReader::modifiers(PovObject& object) {
             object.bounded_by = object_list(token, object, object.bounded_by, &bound_by_clip);
         } else if (w == "sturm") {
             // POV-Ray's choice of root solver: glint's search needs none.
+        } else if (w == "photons" || w == "radiosity") {
+            parser_.skip_braced(token);
+            read_past(w + " { } in an object",
+                      w == "photons" ? "the Whitted and distributed integrators trace no photons"
+                                     : "glint renders without radiosity");
+        } else if (w == "no_image" || w == "no_reflection" || w == "no_radiosity" ||
+                   w == "double_illuminate") {
+            optional_amount();
+            read_past(w, w == "double_illuminate" ? "a surface is lit from the side the light is on"
+                                                  : "the object is seen by every ray");
         } else {
             throw unsupported(token, "as an object modifier");
         }
@@ -609,8 +627,7 @@ void PovItemReader::modifiers(PovObject& object) {
 PovTexture PovItemReader::texture(const PovTexture& base) {
     parser_.expect("{", "after texture");
     PovTexture t = base;
-    if (auto d = declared<PovTexture>(parser_.peek_item())) {
-        parser_.next();
+    if (auto d = take_declared<PovTexture>()) {
         t = *d;
     }
     for (;;) {
@@ -664,8 +681,7 @@ void PovItemReader::checker_texture(const PovToken& keyword, PovTexture& t) {
 PovFinish PovItemReader::finish(const PovFinish& base) {
     parser_.expect("{", "after finish");
     PovFinish f = base;
-    if (auto d = declared<PovFinish>(parser_.peek_item())) {
-        parser_.next();
+    if (auto d = take_declared<PovFinish>()) {
         f = *d;
     }
     // A colour where POV-Ray allows one counts as its brightest channel.
@@ -727,8 +743,7 @@ PovFinish PovItemReader::finish(const PovFinish& base) {
 PovMaterial PovItemReader::material(const PovMaterial& base) {
     parser_.expect("{", "after material");
     PovMaterial m = base;
-    if (auto d = declared<PovMaterial>(parser_.peek_item())) {
-        parser_.next();
+    if (auto d = take_declared<PovMaterial>()) {
         if (d->texture) m.texture = d->texture;
         if (d->interior) m.interior = d->interior;
     }
@@ -756,8 +771,7 @@ PovMaterial PovItemReader::material(const PovMaterial& base) {
 PovInterior PovItemReader::interior(const PovInterior& base) {
     parser_.expect("{", "after interior");
     PovInterior in = base;
-    if (auto d = declared<PovInterior>(parser_.peek_item())) {
-        parser_.next();
+    if (auto d = take_declared<PovInterior>()) {
         in = *d;
     }
     for (;;) {

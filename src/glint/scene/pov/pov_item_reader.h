@@ -4,6 +4,7 @@
 
 #include <memory>
 #include <optional>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -74,6 +75,10 @@ private:
     void modifiers(PovObject& object);
     template <typename Item>
     std::optional<Item> declared(const PovToken& name);
+    // The declared item next in the stream, taken: a name (`Stone`) or an element of an array of
+    // such items (`Stones[I]`, its subscripts read); nothing, and nothing taken, otherwise.
+    template <typename Item>
+    std::optional<Item> take_declared();
     PovVector point(std::string_view what) { return parser_.finite_vector(what, 3); }
     float number(std::string_view what) { return float(parser_.finite_float(what)); }
     SceneError unsupported(const PovToken& token, std::string_view where);
@@ -84,6 +89,9 @@ private:
     // normal { ... }: read past, with a warning the first time.
     void skip_normal(const PovToken& keyword);
     void read_default(const PovToken& directive);
+    // A warning, once a scene for each `what`, that it is read and left out, and what glint
+    // does instead.
+    void read_past(const std::string& what, const std::string& instead);
 
     PovParser& parser_;
     std::vector<std::string>& warnings_;
@@ -93,6 +101,7 @@ private:
     bool warned_fog_noise_ = false;
     bool warned_checker_finish_ = false;
     bool warned_crackle_ = false;
+    std::set<std::string> read_past_;
 };
 
 template <typename Item>
@@ -104,6 +113,32 @@ std::optional<Item> PovItemReader::declared(const PovToken& name) {
     if (!ref) return std::nullopt;
     if (const Item* item = std::get_if<Item>(&(*ref)->item)) return *item;
     return std::nullopt;
+}
+
+template <typename Item>
+std::optional<Item> PovItemReader::take_declared() {
+    const PovToken& next = parser_.peek_item();
+    if (auto item = declared<Item>(next)) {
+        parser_.next();
+        return item;
+    }
+    if (next.kind != PovTokenKind::identifier) return std::nullopt;
+    PovValue* value =
+        next.kind == PovTokenKind::identifier ? parser_.symbols().find(next.text) : nullptr;
+    const auto* array = value ? std::get_if<std::shared_ptr<PovArray>>(value) : nullptr;
+    // An array of items of this kind: one of its elements holds one.
+    const auto holds_item = [](const std::shared_ptr<PovValue>& e) {
+        const auto* ref = e ? std::get_if<std::shared_ptr<const PovItemRef>>(e.get()) : nullptr;
+        return ref && std::holds_alternative<Item>((*ref)->item);
+    };
+    if (!array || std::none_of((*array)->elements.begin(), (*array)->elements.end(), holds_item))
+        return std::nullopt;
+    const PovToken name = parser_.next();
+    const auto element = parser_.array_element(name, **array);
+    const auto* ref = std::get_if<std::shared_ptr<const PovItemRef>>(&element);
+    if (const Item* item = ref ? std::get_if<Item>(&(*ref)->item) : nullptr) return *item;
+    throw parser_.error_at(name, "this element of " + name.text +
+                                     " holds another kind of value than its other elements");
 }
 
 // A polynomial surface (quadric or implicit) searched within `region`, finite and not empty.

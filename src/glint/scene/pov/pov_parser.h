@@ -94,6 +94,11 @@ public:
     void set_extent_reader(ExtentReader reader) { extent_reader_ = std::move(reader); }
 
     PovSymbols& symbols() { return symbols_; }
+    // The element that the subscripts next in the stream name, `name` having been read; an
+    // error when it has no value.
+    PovValue array_element(const PovToken& name, PovArray& array) {
+        return element(name, array, false);
+    }
     // The first #version of the scene file itself; none in a scene written before POV-Ray 3.7.
     std::optional<double> scene_version() const { return scene_version_; }
     // What #debug and #warning printed, in order.

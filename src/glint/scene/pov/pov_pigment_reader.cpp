@@ -53,8 +53,7 @@ PovColorMap black_to_white() {
 PovColorMap PovItemReader::color_map(const PovToken& keyword) {
     parser_.expect("{", "after " + keyword.text);
     PovColorMap map;
-    if (auto d = declared<PovColorMap>(parser_.peek_item())) {
-        parser_.next();
+    if (auto d = take_declared<PovColorMap>()) {
         map = *d;
     }
     for (PovToken t = parser_.next(); !t.is_symbol("}"); t = parser_.next()) {
@@ -172,11 +171,10 @@ bool PovItemReader::pattern_modifier(const PovToken& token, PovPigment& p) {
 PovPigment PovItemReader::pigment(const PovPigment& base) {
     parser_.expect("{", "after pigment");
     PovPigment p = base;
-    const PovToken& first = parser_.peek_item();
-    if (auto d = declared<PovPigment>(first)) {
-        parser_.next();
+    if (auto d = take_declared<PovPigment>()) {
         p = *d;
-    } else if (first.kind == PovTokenKind::identifier && pattern_kind(first.text)) {
+    } else if (const PovToken& first = parser_.peek_item();
+               first.kind == PovTokenKind::identifier && pattern_kind(first.text)) {
         p = pattern(parser_.next());
     } else if (first.kind == PovTokenKind::identifier && !starts_color(first) &&
                !parser_.symbols().find(first.text)) {

@@ -103,6 +103,8 @@ public:
                 fog(items_.fog(t));
             else if (w == "global_settings")
                 global_settings(t);
+            else if (t.is_word("default"))
+                items_.read(t);
             else if (t.kind == PovTokenKind::identifier && PovItemReader::starts_object(w))
                 add(items_.object(t), Transform{}, nullptr, Transform{}, nullptr, false);
             else if (not_read_yet(t))
