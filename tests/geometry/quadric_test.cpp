@@ -192,5 +192,27 @@ TEST(Quadric, PropertyChecks) {
         RandomRays({0, 0, 0}, 1.5f, 4), open);
 }
 
+TEST(Quadric, InsideExtentCompletesTheSquares) {
+    // x^2/4 + y^2 + z^2 - 1 < 0: the ellipsoid of half-axes 2, 1, 1.
+    Bounds3 b = inside_extent({0.25f, 1, 1, 0, 0, 0, 0, 0, 0, -1});
+    EXPECT_EQ(b.min, (Point3{-2, -1, -1}));
+    EXPECT_EQ(b.max, (Point3{2, 1, 1}));
+    // (x - 1)^2 + y^2 - 4 = x^2 + y^2 - 2x - 3: a cylinder along z of radius 2 about x = 1.
+    b = inside_extent({1, 1, 0, 0, 0, 0, -2, 0, 0, -3});
+    EXPECT_EQ(b.min, (Point3{-1, -2, -kInfinity}));
+    EXPECT_EQ(b.max, (Point3{3, 2, kInfinity}));
+    // x^2 + y^2 + 1 < 0 has no inside.
+    EXPECT_TRUE(inside_extent({1, 1, 0, 0, 0, 0, 0, 0, 0, 1}).is_empty());
+    // A cone (a negative square), a paraboloid (x alone linear) and a tilted cylinder (a cross
+    // term) are unbounded on every axis here.
+    for (const std::array<float, 10> c : {std::array<float, 10>{1, -1, 1, 0, 0, 0, 0, 0, 0, 0},
+                                          std::array<float, 10>{0, 1, 1, 0, 0, 0, -1, 0, 0, 0},
+                                          std::array<float, 10>{1, 1, 0, 1, 0, 0, 0, 0, 0, -1}}) {
+        b = inside_extent(c);
+        EXPECT_EQ(b.min, (Point3{-kInfinity, -kInfinity, -kInfinity}));
+        EXPECT_EQ(b.max, (Point3{kInfinity, kInfinity, kInfinity}));
+    }
+}
+
 }  // namespace
 }  // namespace glint

@@ -64,5 +64,20 @@ TEST(Transform, BoundsContainAllTransformedCorners) {
     EXPECT_NEAR(r.max.z, 1, 1e-6);
 }
 
+TEST(Transform, AnUnboundedAxisStaysUnboundedWhereItGoes) {
+    // A slab unbounded along x, [-1, 1] on y and z (an infinite cylinder's box).
+    const Bounds3 slab{{-kInfinity, -1, -1}, {kInfinity, 1, 1}};
+    const Bounds3 moved = (Transform::translate({5, 2, 0}) * Transform::scale(3, 2, 1))(slab);
+    EXPECT_EQ(moved.min, (Point3{-kInfinity, 0, -1}));
+    EXPECT_EQ(moved.max, (Point3{kInfinity, 4, 1}));
+    // A quarter turn about z takes the unbounded axis to y; x is bounded, within rounding.
+    const Bounds3 turned = Transform::rotate({0, 0, 1}, 90)(slab);
+    EXPECT_EQ(turned.min.y, -kInfinity);
+    EXPECT_EQ(turned.max.y, kInfinity);
+    EXPECT_NEAR(turned.min.x, -1, 1e-6);
+    EXPECT_NEAR(turned.max.x, 1, 1e-6);
+    EXPECT_NEAR(turned.max.z, 1, 1e-6);
+}
+
 }  // namespace
 }  // namespace glint

@@ -73,6 +73,23 @@ bool inside_without_crossing(const Shape& shape, const Ray& ray, float t_min) {
         const float along = dot(plane->normal, ray.direction);
         return along != 0 ? along < 0 : dot(plane->normal, ray.at(t_min) - plane->point) < 0;
     }
+    // A quadric, or an implicit surface cut open by its box, is the solid f < 0 as far as CSG
+    // goes (POV-Ray's infinite cylinder in an intersection): its side is f's sign, halfway along
+    // what remains of the ray in its box, away from the crossing just passed.
+    const auto side_of = [&](const Bounds3& box, const auto& f) {
+        const auto chord = intersect_slabs(box, ray, {t_min, kInfinity});
+        const float t = chord && chord->max < kInfinity ? (chord->min + chord->max) / 2 : t_min;
+        const Point3 p = ray.at(t);
+        return f(p) < 0;
+    };
+    if (const auto* quadric = std::get_if<Quadric>(&shape)) {
+        return side_of(quadric->clip,
+                       [&](Point3 p) { return quadric_value(*quadric, p.x, p.y, p.z); });
+    }
+    if (const auto* surface = std::get_if<ImplicitSurface>(&shape);
+        surface && point_cut_open(*surface)) {
+        return side_of(surface->region, [&](Point3 p) { return surface->f->value(p); });
+    }
     if (glint::bounds(shape).is_finite()) return false;
     if (const auto* placed = std::get_if<Transformed>(&shape)) {
         const ObjectRay o = to_object(placed->world_from_object(), ray);

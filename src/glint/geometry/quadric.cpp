@@ -38,6 +38,33 @@ std::array<double, 3> gradient(const Terms& q, double x, double y, double z) {
 
 }  // namespace
 
+Bounds3 inside_extent(const std::array<float, 10>& c) {
+    const Bounds3 everywhere{{-kInfinity, -kInfinity, -kInfinity},
+                             {kInfinity, kInfinity, kInfinity}};
+    if (c[3] != 0 || c[4] != 0 || c[5] != 0) return everywhere;
+    double k = -double(c[9]), center[3] = {0, 0, 0};
+    for (int i = 0; i < 3; ++i) {
+        const double a = c[std::size_t(i)], g = c[std::size_t(6 + i)];
+        if (a < 0 || (a == 0 && g != 0)) return everywhere;
+        if (a > 0) {
+            center[i] = -g / (2 * a);
+            k += g * g / (4 * a);
+        }
+    }
+    if (!(k > 0)) return {};
+    Bounds3 box = everywhere;
+    for (int i = 0; i < 3; ++i) {
+        const double a = c[std::size_t(i)];
+        if (a == 0) continue;
+        const double half = std::sqrt(k / a);
+        const float lo = float(center[i] - half), hi = float(center[i] + half);
+        if (i == 0) box.min.x = lo, box.max.x = hi;
+        if (i == 1) box.min.y = lo, box.max.y = hi;
+        if (i == 2) box.min.z = lo, box.max.z = hi;
+    }
+    return box;
+}
+
 double quadric_value(const Quadric& quadric, double x, double y, double z) {
     return value(terms_of(quadric), x, y, z);
 }

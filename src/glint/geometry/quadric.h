@@ -33,6 +33,14 @@ struct Quadric {
     SurfacePoint surface_at(const Ray& ray, const ShapeHit& hit) const;
 };
 
+// The box of the quadric's inside (f < 0) when its axes are the coordinate axes (D = E = F = 0):
+// completing the squares, sum a_i (x_i - c_i)^2 < K with every a_i >= 0 bounds |x_i - c_i| by
+// sqrt(K / a_i) where a_i > 0 (an ellipsoid on all three axes, a cylinder on two), and leaves
+// the axes without a square term (and no linear one) unbounded; empty when K <= 0. Otherwise
+// (cross terms, a negative square, a linear term alone: cones, hyperboloids, paraboloids, planes)
+// unbounded on every axis.
+Bounds3 inside_extent(const std::array<float, 10>& coefficients);
+
 // f and its gradient at a point, in double.
 double quadric_value(const Quadric& quadric, double x, double y, double z);
 std::array<double, 3> quadric_gradient(const Quadric& quadric, double x, double y, double z);

@@ -2,6 +2,7 @@
 // transforms with their inverses; points, vectors, normals and boxes transformed.
 #include "glint/math/transform.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include "glint/math/constants.h"
@@ -121,6 +122,31 @@ Normal3 Transform::operator()(Normal3 n) const {
 
 Bounds3 Transform::operator()(const Bounds3& b) const {
     if (b.is_empty()) return b;
+    const auto& m = m_.m;
+    if (!b.is_finite() && m[3][0] == 0 && m[3][1] == 0 && m[3][2] == 0 && m[3][3] == 1) {
+        // Unbounded along an axis, affine: each axis of the result is the translation plus, for
+        // each axis of the box, the entry times the box's extent along it (Arvo, Graphics Gems
+        // 1990). An unbounded axis stays unbounded where the entry is not zero and adds nothing
+        // where it is (the corners would multiply infinity by zero), or is only rounding's zero
+        // (cos 90 degrees in float), 1e-6 of the row's largest entry. A finite box takes its
+        // corners, so that it holds each corner exactly as a point transforms.
+        const float lows[3] = {b.min.x, b.min.y, b.min.z}, highs[3] = {b.max.x, b.max.y, b.max.z};
+        float lo[3], hi[3];
+        for (int j = 0; j < 3; ++j) {
+            const auto& row = m[std::size_t(j)];
+            const float largest = std::max({std::abs(row[0]), std::abs(row[1]), std::abs(row[2])});
+            lo[j] = hi[j] = row[3];
+            for (int i = 0; i < 3; ++i) {
+                const float e = row[std::size_t(i)];
+                const bool unbounded = std::isinf(lows[i]) || std::isinf(highs[i]);
+                if (e == 0 || (unbounded && std::abs(e) <= 1e-6f * largest)) continue;
+                const float a = e * lows[i], c = e * highs[i];
+                lo[j] += std::min(a, c);
+                hi[j] += std::max(a, c);
+            }
+        }
+        return {{lo[0], lo[1], lo[2]}, {hi[0], hi[1], hi[2]}};
+    }
     Bounds3 r;
     for (int corner = 0; corner < 8; ++corner) {
         const Point3 p{corner & 1 ? b.max.x : b.min.x, corner & 2 ? b.max.y : b.min.y,

@@ -540,6 +540,36 @@ TEST(PovScene, ArrayElementsDefaultBlocksAndModifiersReadPast) {
         std::string::npos);
 }
 
+// POV-Ray's infinite quadrics (shapes.inc's Cylinder_X and friends): an intersection of them
+// is bounded by their insides' boxes, and one alone is cut far out.
+TEST(PovScene, UnboundedQuadricsAreBoundedByWhatBoundsTheirInsides) {
+    const Scene s = parse(R"(
+        #declare Cylinder_X = quadric { <0, 1, 1>, <0, 0, 0>, <0, 0, 0>, -1 }
+        #declare Cylinder_Y = quadric { <1, 0, 1>, <0, 0, 0>, <0, 0, 0>, -1 }
+        intersection { object { Cylinder_X } object { Cylinder_Y } translate z * 10 }
+        object { Cylinder_X scale 2 translate y * 10 }
+        intersection { object { Cylinder_Y } plane { y, 3 } plane { -y, 0 } translate x * 10 })");
+    ASSERT_EQ(s.objects.size(), 3u);
+    // The two cylinders cross in [-1, 1]^3: along x through the middle, the bicylinder's side.
+    const Bounds3 both = bounds(s.objects[0].shape);
+    EXPECT_NEAR(both.min.x, -1, 1e-3);  // loosened by 1e-4 of its size
+    EXPECT_NEAR(both.max.z, 11, 1e-3);
+    auto hit = intersect(s.objects[0].shape, Ray{{-5, 0, 10}, {1, 0, 0}}, {0, kInfinity});
+    ASSERT_TRUE(hit.has_value());
+    EXPECT_NEAR(hit->t, 4, 1e-4);
+    // The lone cylinder, radius 2 about y = 10, reaches far along x.
+    const Bounds3 lone = bounds(s.objects[1].shape);
+    EXPECT_NEAR(lone.min.y, 8, 1e-3);
+    EXPECT_GE(lone.max.x, 1e5f);
+    hit = intersect(s.objects[1].shape, Ray{{1000, 10, -5}, {0, 0, 1}}, {0, kInfinity});
+    ASSERT_TRUE(hit.has_value());
+    EXPECT_NEAR(hit->t, 3, 1e-3);
+    // A cylinder between two planes: bounded by the planes' half-spaces.
+    const Bounds3 cut = bounds(s.objects[2].shape);
+    EXPECT_NEAR(cut.min.y, 0, 1e-3);
+    EXPECT_NEAR(cut.max.y, 3, 1e-3);
+}
+
 TEST(PovScene, MaterialsGiveTextureAndInterior) {
     const Scene s = parse(R"(
         #declare Glass = material { texture { pigment { rgbf <1, 0, 0, 0.5> } } interior { ior 1.5 } }

@@ -506,7 +506,7 @@ std::shared_ptr<const PovObject> PovItemReader::object_list(const PovToken& keyw
 Bounds3 PovItemReader::extent(const PovObject& object) {
     Bounds3 b;
     if (object.shape) {
-        b = bounds(*object.shape);
+        b = own_extent(*object.shape);
     } else if (object.csg == PovObject::Csg::intersection) {
         b = {{-kInfinity, -kInfinity, -kInfinity}, {kInfinity, kInfinity, kInfinity}};
         for (const auto& child : object.children) {
@@ -520,15 +520,55 @@ Bounds3 PovItemReader::extent(const PovObject& object) {
     if (object.clipped_by) {
         b = overlap(b, extent(*object.clipped_by));
     }
-    if (b.is_empty() || !b.is_finite()) return b;
-    return bounds(Transformed(object.transform, std::make_shared<const Shape>(Box{b.min, b.max})));
+    return object.transform(b);
+}
+
+Bounds3 own_extent(const Shape& shape) {
+    constexpr Bounds3 everywhere{{-kInfinity, -kInfinity, -kInfinity},
+                                 {kInfinity, kInfinity, kInfinity}};
+    // A plane along an axis is the half-space below it.
+    if (const auto* plane = std::get_if<Plane>(&shape)) {
+        const Vector3 n = to_vector(plane->normal);
+        Bounds3 half = everywhere;
+        for (int axis = 0; axis < 3; ++axis) {
+            if (std::abs(n[axis]) != 1) continue;
+            const float at = plane->point[axis];
+            if (n[axis] > 0) (axis == 0 ? half.max.x : axis == 1 ? half.max.y : half.max.z) = at;
+            if (n[axis] < 0) (axis == 0 ? half.min.x : axis == 1 ? half.min.y : half.min.z) = at;
+        }
+        return half;
+    }
+    const Bounds3 b = bounds(shape);
+    if (!b.is_empty()) return b;
+    // A polynomial not bounded yet: a quadric's inside where it is bounded along some axes.
+    if (const auto* quadric = std::get_if<Quadric>(&shape))
+        return inside_extent(quadric->coefficients);
+    if (std::holds_alternative<ImplicitSurface>(shape)) return everywhere;
+    return b;
+}
+
+Bounds3 far_bounded(Bounds3 region) {
+    constexpr float far = kFarQuadric;
+    region.min = max(region.min, Point3{-far, -far, -far});
+    region.max = min(region.max, Point3{far, far, far});
+    return region;
+}
+
+Bounds3 loosened(Bounds3 region) {
+    if (region.is_empty() || !region.is_finite()) return region;
+    const Vector3 size = region.diagonal();
+    const Vector3 pad{1e-4f * std::max(1.0f, size.x), 1e-4f * std::max(1.0f, size.y),
+                      1e-4f * std::max(1.0f, size.z)};
+    return {region.min - pad, region.max + pad};
 }
 
 void PovItemReader::set_polynomial_region(const PovToken& keyword, PovObject& object) {
     const PovObject* bound = object.bounded_by ? object.bounded_by.get() : object.clipped_by.get();
     if (!bound) return;
-    // The objects' common box, in the object's own space.
-    const Bounds3 region = extent(*bound);
+    // The objects' common box, in the object's own space; a quadric's cut far out where they
+    // leave it unbounded.
+    Bounds3 region = extent(*bound);
+    if (std::holds_alternative<Quadric>(*object.shape)) region = far_bounded(region);
     const Vector3 size = region.diagonal();
     if (region.is_empty() || !region.is_finite() || !(size.x > 0 && size.y > 0 && size.z > 0))
         throw parser_.error_at(keyword, "the " + object.polynomial +

@@ -141,6 +141,22 @@ std::optional<Item> PovItemReader::take_declared() {
                                      " holds another kind of value than its other elements");
 }
 
+// The box of a shape as POV-Ray's extents see it in its own space: a plane along an axis its
+// half-space, a quadric not bounded yet its inside's (inside_extent), an implicit surface not
+// bounded yet everywhere.
+Bounds3 own_extent(const Shape& shape);
+
+// A quadric that nothing bounds along an axis is cut this far out along it: POV-Ray's infinite
+// cylinders and the like, far beyond any scene.
+inline constexpr float kFarQuadric = 1e5f;
+// The region with its unbounded sides cut at kFarQuadric.
+Bounds3 far_bounded(Bounds3 region);
+
+// The region grown by 1e-4 of its size along each axis: where it comes from the surface's own
+// extent or an intersection's, the surface touches its sides, and a region cut exactly there loses
+// hits to rounding.
+Bounds3 loosened(Bounds3 region);
+
 // A polynomial surface (quadric or implicit) searched within `region`, finite and not empty.
 void bound_polynomial(Shape& shape, const Bounds3& region);
 

@@ -397,6 +397,12 @@ private:
         Shape shape;
         if (object.shape) {
             shape = *object.shape;
+            // A quadric is exact however large its box: one that nothing bounds is cut far out.
+            if (!object.polynomial.empty() && bounds(shape).is_empty() &&
+                std::holds_alternative<Quadric>(shape)) {
+                const Bounds3 region = loosened(far_bounded(own_extent(shape)));
+                if (!region.is_empty()) bound_polynomial(shape, region);
+            }
             if (!object.polynomial.empty() && bounds(shape).is_empty())
                 throw files_.error_at(object.at,
                                       "POV-Ray's " + object.polynomial +
@@ -436,17 +442,16 @@ private:
             });
         if (needs_common)
             for (const PovObject* operand : operands)
-                if (!unbounded_polynomial(*operand) && !operand->inverse)
-                    common = overlap(common, items_.extent(*operand));
+                if (!operand->inverse) common = overlap(common, items_.extent(*operand));
         for (std::size_t i = 0; i < operands.size(); ++i) {
             PovObject bounded;
             const PovObject* operand_ptr = operands[i];
-            if (intersection && unbounded_polynomial(*operand_ptr) && common.is_finite()) {
+            if (intersection && unbounded_polynomial(*operand_ptr)) {
                 bounded = *operand_ptr;
-                const Box box{common.min, common.max};
-                const Bounds3 region = bounds(Transformed(
-                    bounded.transform.inverse(), std::make_shared<const Shape>(Shape{box})));
-                bound_polynomial(*bounded.shape, region);
+                Bounds3 region = bounded.transform.inverse()(common);
+                if (std::holds_alternative<Quadric>(*bounded.shape)) region = far_bounded(region);
+                if (region.is_finite() && !region.is_empty())
+                    bound_polynomial(*bounded.shape, loosened(region));
                 operand_ptr = &bounded;
             }
             const PovObject& operand = *operand_ptr;
