@@ -50,6 +50,34 @@ TEST(Pattern, GeometricKindsGivePovRaysValues) {
     expect_povray(twice, {0.9682f, 0.7182f, 0.4682f, 0.2182f, 0.9682f, 0.7182f, 0.4681f, 0.2181f});
 }
 
+// The list patterns at points of their own: hexagon rgb 0, rgb 0.5, rgb 1 and brick rgb 0, rgb 1
+// (mortar 0, brick 1) as POV-Ray's eval_pigment gives them.
+TEST(Pattern, HexagonAndBrickGivePovRaysValues) {
+    const Point3 hexagon_points[] = {{0, 0, 0},           {0.2f, 0, 1.5f},  {1.5f, 0, 0.8f},
+                                     {-1.4f, 0.3f, 0.9f}, {2.9f, 0, -2.1f}, {0.7f, 0, 3.3f},
+                                     {-3.1f, 0, -4.4f},   {4.6f, 0, 1.2f}};
+    const float hexagon_povray[] = {0, 0.5f, 1, 1, 1, 1, 0, 1};
+    for (int i = 0; i < 8; ++i)
+        EXPECT_EQ(pattern_value(spec_of(PatternKind::hexagon), hexagon_points[i]),
+                  hexagon_povray[i])
+            << "point " << i;
+    // Courses 3 high, bricks 8 by 4.5, mortar 0.5: (1, -0.5, 1) lies in a course's mortar,
+    // (-0.5, 1, 1) in a joint between bricks, (-0.5, 4, 1) in a brick of the next course.
+    const Point3 brick_points[] = {{1, 1, 1},     {1, -0.5f, 1}, {-0.5f, 1, 1},
+                                   {-0.5f, 4, 1}, {5, 2, 3},     {-7.2f, -2.7f, 9.9f}};
+    const float brick_povray[] = {1, 0, 0, 1, 1, 1};
+    for (int i = 0; i < 6; ++i)
+        EXPECT_EQ(pattern_value(spec_of(PatternKind::brick), brick_points[i]), brick_povray[i])
+            << "point " << i;
+    // Along z through the hexagons' centres (0, 0, sqrt(3) k): the colours cycle 0, 1/2, 1.
+    for (int k = -3; k <= 3; ++k) {
+        const float expected = float(((k % 3) + 3) % 3) / 2;
+        EXPECT_EQ(pattern_value(spec_of(PatternKind::hexagon), {0, 0, 1.7320508f * float(k)}),
+                  expected)
+            << k;
+    }
+}
+
 // Along x at -1.96875 + k / 4 (pixels of a 64-pixel render of a plane), as POV-Ray rendered them.
 TEST(Pattern, GradientWavesFrequencyAndPhase) {
     PatternSpec gradient = spec_of(PatternKind::gradient);

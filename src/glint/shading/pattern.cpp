@@ -70,6 +70,41 @@ float crackle(Point3 p) {
     return std::clamp(second - nearest, 0.0f, 1.0f);
 }
 
+// POV-Ray's hexagons: side 1 in the x-z plane, a corner on the x axis, one centred at the
+// origin. The centres are (1.5 i, sqrt(3) (j + i / 2)); the point's is the nearest, found in the
+// two columns i it can lie in, and (j + 2 i) mod 3 colours the tiling in three.
+float hexagon(Point3 p) {
+    const double x = p.x, z = p.z, root3 = std::sqrt(3.0);
+    const double column = std::floor(x / 1.5);
+    if (!(std::abs(column) < 0x1p40 && std::abs(z) < 0x1p40)) return 0;
+    double best = kInfinity;
+    std::int64_t colour = 0;
+    for (const double i : {column, column + 1}) {
+        const double j = std::round(z / root3 - i / 2);
+        const double dx = x - 1.5 * i, dz = z - root3 * (j + i / 2);
+        if (const double d = dx * dx + dz * dz; d < best) {
+            best = d;
+            colour = (std::int64_t(j) + 2 * std::int64_t(i)) % 3;
+        }
+    }
+    return float((colour + 3) % 3) / 2;
+}
+
+// POV-Ray's bricks: courses of height size.y, each brick size.x along x and size.z along z, the
+// joints of every other course half a brick along; mortar of the given width at the bottom of a
+// course and the start of a brick. POV-Ray first moves the point by the mortar and 0.001.
+float brick(const PatternSpec& spec, Point3 p) {
+    const auto fraction = [](double v) { return v - std::floor(v); };
+    const double mortar = spec.mortar, shift = mortar + 1e-3;
+    const double x = p.x + shift, y = p.y + shift, z = p.z + shift;
+    const double w = spec.brick_size.x, h = spec.brick_size.y, d = spec.brick_size.z;
+    if (fraction(y / h) <= mortar / h) return 0;
+    const bool first_half = fraction(y / (2 * h)) <= 0.5;
+    if (fraction(x / w + (first_half ? 0 : 0.5)) <= mortar / w) return 0;
+    if (fraction(z / d + (first_half ? 0.5 : 0)) <= mortar / d) return 0;
+    return 1;
+}
+
 float raw_value(const PatternSpec& spec, Point3 p) {
     const float x = p.x, y = p.y, z = p.z;
     switch (spec.kind) {
@@ -79,6 +114,10 @@ float raw_value(const PatternSpec& spec, Point3 p) {
             return std::clamp(0.5f + 0.5f * perlin_noise(p), 0.0f, 1.0f);
         case PatternKind::boxed:
             return std::max(0.0f, 1 - std::max({std::abs(x), std::abs(y), std::abs(z)}));
+        case PatternKind::brick:
+            return brick(spec, p);
+        case PatternKind::hexagon:
+            return hexagon(p);
         case PatternKind::checker: {
             const double sum =
                 std::floor(double(x)) + std::floor(double(y)) + std::floor(double(z));
@@ -132,6 +171,11 @@ float shaped(const PatternSpec& spec, float f) {
 
 }  // namespace
 
+bool is_list_pattern(PatternKind kind) {
+    return kind == PatternKind::checker || kind == PatternKind::brick ||
+           kind == PatternKind::hexagon;
+}
+
 PatternWave default_wave(PatternKind kind) {
     return kind == PatternKind::marble || kind == PatternKind::wood ? PatternWave::triangle
                                                                     : PatternWave::ramp;
@@ -141,7 +185,7 @@ float pattern_value(const PatternSpec& spec, Point3 p) {
     if (!is_finite(p)) return 0;
     if (!(spec.turbulence == Vector3{})) p = turbulent(spec, p);
     const float raw = raw_value(spec, p);
-    if (spec.kind == PatternKind::checker) return raw;
+    if (is_list_pattern(spec.kind)) return raw;
     // In double, so that a far point keeps its fraction. Values in [0, 1] stay as they are (1
     // too, as in POV-Ray); the others wrap round.
     double f = double(raw) * spec.frequency + spec.phase;

@@ -13,11 +13,13 @@ enum class PatternKind {
     agate,        // bands along z bent by turbulence
     bozo,         // smooth noise (POV-Ray's spotted is the same)
     boxed,        // 1 - max(|x|, |y|, |z|)
+    brick,        // 0 in the mortar, 1 in a brick: rows of bricks laid in running bond
     checker,      // 0 or 1 by the parity of floor(x) + floor(y) + floor(z): no wave, no frequency
     crackle,      // cells round random points: the distance to the second nearest minus the nearest
     cylindrical,  // 1 - sqrt(x^2 + z^2)
     gradient,     // p . direction
     granite,      // turbulent noise (noise.h)
+    hexagon,      // 0, 1/2 or 1: hexagons of side 1 in the x-z plane, three colours
     leopard,      // (sin x + sin y + sin z)^2 / 9
     marble,       // x, by default through the triangle wave
     onion,        // |p|
@@ -48,7 +50,15 @@ struct PatternSpec {
     Vector3 turbulence{0, 0, 0};
     int octaves = 6;  // in [1, kMaxOctaves]
     float omega = 0.5f, lambda = 2;
+    // brick: a brick's size (x along the wall, y a course's height, z across it) and the
+    // mortar's width, both with their mortar; POV-Ray's defaults.
+    Vector3 brick_size{8, 3, 4.5f};
+    float mortar = 0.5f;
 };
+
+// Whether the pattern picks one of a few colours, as POV-Ray's list patterns do: its value is
+// not shaped by a wave, frequency or phase.
+bool is_list_pattern(PatternKind kind);
 
 // POV-Ray's default wave for the kind: triangle for marble and wood, ramp for the others.
 PatternWave default_wave(PatternKind kind);

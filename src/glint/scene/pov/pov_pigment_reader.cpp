@@ -21,7 +21,8 @@ std::optional<PatternKind> pattern_kind(std::string_view w) {
     };
     static constexpr Named kKinds[] = {
         {"agate", PatternKind::agate},       {"bozo", PatternKind::bozo},
-        {"boxed", PatternKind::boxed},       {"checker", PatternKind::checker},
+        {"boxed", PatternKind::boxed},       {"brick", PatternKind::brick},
+        {"checker", PatternKind::checker},   {"hexagon", PatternKind::hexagon},
         {"crackle", PatternKind::crackle},   {"cylindrical", PatternKind::cylindrical},
         {"gradient", PatternKind::gradient}, {"granite", PatternKind::granite},
         {"leopard", PatternKind::leopard},   {"marble", PatternKind::marble},
@@ -102,20 +103,35 @@ PovPigment PovItemReader::pattern(const PovToken& name) {
         const Vector3 d = to_vector(parser_.finite_vector("after gradient"));
         if (!(length(d) > 0)) throw parser_.error_at(at, "gradient direction must not be zero");
         p.spec.direction = normalize(d);
-    } else if (p.spec.kind == PatternKind::checker) {
-        // Blue and green unless given: the first in even cells.
-        PovVector first = PovVector::of(0, 5), second = PovVector::of(0, 5);
-        first[2] = 1;
-        second[1] = 1;
-        const PovToken& ahead = parser_.peek_item();
-        if (starts_color(ahead) || ahead.is_symbol("<") ||
-            (ahead.kind == PovTokenKind::identifier && parser_.symbols().find(ahead.text) &&
-             !declared<PovColorMap>(ahead))) {
-            first = parser_.color_expression("as the checker's first colour");
-            parser_.accept(",");
-            second = parser_.color_expression("as the checker's second colour");
+    } else if (is_list_pattern(p.spec.kind)) {
+        // The colours each value picks, POV-Ray's defaults unless the pattern lists its own:
+        // checker blue and green; hexagon blue, green and red; brick's mortar grey, its bricks
+        // brick red.
+        const auto rgb = [](double r, double g, double b) {
+            PovVector c = PovVector::of(0, 5);
+            c[0] = r, c[1] = g, c[2] = b;
+            return c;
+        };
+        std::vector<PovVector> colors = p.spec.kind == PatternKind::checker
+                                            ? std::vector{rgb(0, 0, 1), rgb(0, 1, 0)}
+                                        : p.spec.kind == PatternKind::hexagon
+                                            ? std::vector{rgb(0, 0, 1), rgb(0, 1, 0), rgb(1, 0, 0)}
+                                            : std::vector{rgb(0.5, 0.5, 0.5), rgb(0.6, 0.15, 0.15)};
+        const auto colour_next = [&] {
+            const PovToken& ahead = parser_.peek_item();
+            return starts_color(ahead) || ahead.is_symbol("<") ||
+                   (ahead.kind == PovTokenKind::identifier && parser_.symbols().find(ahead.text) &&
+                    !declared<PovColorMap>(ahead));
+        };
+        // The colours given, in order; the ones not given stay.
+        for (std::size_t i = 0; i < colors.size(); ++i) {
+            if (i > 0) parser_.accept(",");
+            if (!colour_next()) break;
+            colors[i] = parser_.color_expression("as the " + name.text + "'s colour");
         }
-        p.map.stops = {{0, first}, {1, second}};
+        p.map.stops.clear();
+        for (std::size_t i = 0; i < colors.size(); ++i)
+            p.map.stops.push_back({float(i) / float(colors.size() - 1), colors[i]});
     }
     return p;
 }
@@ -131,6 +147,13 @@ bool PovItemReader::pattern_modifier(const PovToken& token, PovPigment& p) {
         s.octaves = parser_.whole_number("after octaves", 1, kMaxOctaves);
     } else if (w == "omega" || w == "lambda") {
         (w == "omega" ? s.omega : s.lambda) = float(parser_.finite_float("after " + w));
+    } else if (w == "brick_size") {
+        const PovToken at = parser_.peek();
+        s.brick_size = to_vector(parser_.finite_vector("after brick_size"));
+        if (!(s.brick_size.x > 0 && s.brick_size.y > 0 && s.brick_size.z > 0))
+            throw parser_.error_at(at, "brick_size must be > 0 on every axis");
+    } else if (w == "mortar") {
+        s.mortar = float(parser_.finite_float("after mortar"));
     } else if (w == "frequency" || w == "phase") {
         (w == "frequency" ? s.frequency : s.phase) = float(parser_.finite_float("after " + w));
     } else if (w == "ramp_wave") {
