@@ -19,6 +19,7 @@ struct NameOf {
     std::string_view operator()(const Quadric&) const { return "quadric"; }
     std::string_view operator()(const Polygon&) const { return "polygon"; }
     std::string_view operator()(const Prism&) const { return "prism"; }
+    std::string_view operator()(const Lathe&) const { return "lathe"; }
     std::string_view operator()(const TriangleMesh&) const { return "mesh"; }
     std::string_view operator()(const ImplicitSurface&) const { return "implicit"; }
     std::string_view operator()(const JuliaSet&) const { return "julia"; }
@@ -40,6 +41,7 @@ struct IsSolid {
     bool operator()(const Quadric&) const { return false; }  // clipped open by its box
     bool operator()(const Polygon&) const { return false; }
     bool operator()(const Prism& p) const { return !p.open; }
+    bool operator()(const Lathe& l) const { return l.closed; }
     bool operator()(const TriangleMesh& m) const { return is_closed_surface(*m.data); }
     // Inside is f < 0; the region must enclose the surface for the solid to be closed.
     bool operator()(const ImplicitSurface& s) const { return !point_cut_open(s); }

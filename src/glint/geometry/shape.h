@@ -14,6 +14,7 @@
 #include "glint/geometry/disk.h"
 #include "glint/geometry/implicit_surface.h"
 #include "glint/geometry/julia_set.h"
+#include "glint/geometry/lathe.h"
 #include "glint/geometry/mandelbulb.h"
 #include "glint/geometry/moving.h"
 #include "glint/geometry/plane.h"
@@ -33,8 +34,8 @@ namespace glint {
 // A struct rather than an alias so that it can be forward-declared by shapes that hold other
 // shapes (CSG, transforms). It is the variant: std::visit, std::get and friends apply.
 struct Shape : std::variant<Sphere, Plane, Triangle, Box, Disk, Cylinder, Cone, Torus, Quadric,
-                            Polygon, Prism, TriangleMesh, ImplicitSurface, JuliaSet, Mandelbulb,
-                            Transformed, Moving, Csg> {
+                            Polygon, Prism, Lathe, TriangleMesh, ImplicitSurface, JuliaSet,
+                            Mandelbulb, Transformed, Moving, Csg> {
     using variant::variant;
 };
 

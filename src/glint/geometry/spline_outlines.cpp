@@ -36,6 +36,23 @@ CubicCurve segment(SplineKind kind, std::span<const Point2> p, std::size_t i) {
     return {};
 }
 
+const char* spline_name(SplineKind kind) {
+    return kind == SplineKind::linear      ? "linear"
+           : kind == SplineKind::quadratic ? "quadratic"
+           : kind == SplineKind::cubic     ? "cubic"
+                                           : "bezier";
+}
+
+// The diagonal of the points' box (at least a tiny length): what curve tolerances scale with.
+double extent_of(std::span<const Point2> points) {
+    Point2 lo = points[0], hi = points[0];
+    for (const Point2 p : points) {
+        lo = {std::min(lo.x, p.x), std::min(lo.y, p.y)};
+        hi = {std::max(hi.x, p.x), std::max(hi.y, p.y)};
+    }
+    return std::max(double(std::hypot(hi.x - lo.x, hi.y - lo.y)), 1e-30);
+}
+
 // How many points past i a segment reads, and how many it steps over when it closes an outline.
 std::size_t reach(SplineKind kind) {
     return kind == SplineKind::linear ? 1 : kind == SplineKind::quadratic ? 2 : 3;
@@ -51,25 +68,39 @@ std::optional<SplineKind> spline_kind(std::string_view name) {
     return std::nullopt;
 }
 
+std::variant<Outline, std::string> spline_curve(SplineKind kind, std::span<const Point2> points) {
+    const std::size_t n = points.size();
+    const std::size_t least = kind == SplineKind::linear      ? 2
+                              : kind == SplineKind::quadratic ? 3
+                                                              : 4;
+    if (n < least)
+        return "a " + std::string(spline_name(kind)) + " spline needs at least " +
+               std::to_string(least) + " points, got " + std::to_string(n);
+    if (kind == SplineKind::bezier && n % 4 != 0)
+        return "a bezier spline takes four points a curve: " + std::to_string(n) +
+               " points are not a multiple of 4";
+    const double tolerance = 1e-4 * extent_of(points);
+    Outline curve;
+    if (kind == SplineKind::linear) {
+        for (std::size_t i = 0; i + 1 < n; ++i) append_line(curve, points[i], points[i + 1]);
+    } else {
+        const std::size_t step = kind == SplineKind::bezier ? 4 : 1;
+        for (std::size_t i = 0; i + reach(kind) < n; i += step)
+            append_curve(curve, segment(kind, points, i), tolerance);
+    }
+    if (curve.empty()) return std::string("the spline's points all coincide");
+    return curve;
+}
+
 std::variant<SplineOutlines, std::string> spline_outlines(SplineKind kind,
                                                           std::span<const Point2> points) {
     const std::size_t n = points.size();
     const std::size_t least = kind == SplineKind::linear ? 3 : 4;
     if (n < least) {
-        return "a " +
-               std::string(kind == SplineKind::linear      ? "linear"
-                           : kind == SplineKind::quadratic ? "quadratic"
-                           : kind == SplineKind::cubic     ? "cubic"
-                                                           : "bezier") +
-               " spline needs at least " + std::to_string(least) + " points, got " +
-               std::to_string(n);
+        return "a " + std::string(spline_name(kind)) + " spline needs at least " +
+               std::to_string(least) + " points, got " + std::to_string(n);
     }
-    Point2 lo = points[0], hi = points[0];
-    for (const Point2 p : points) {
-        lo = {std::min(lo.x, p.x), std::min(lo.y, p.y)};
-        hi = {std::max(hi.x, p.x), std::max(hi.y, p.y)};
-    }
-    const double tolerance = 1e-4 * std::max(double(std::hypot(hi.x - lo.x, hi.y - lo.y)), 1e-30);
+    const double tolerance = 1e-4 * extent_of(points);
 
     SplineOutlines result;
     Outline outline;

@@ -35,4 +35,9 @@ struct SplineOutlines {
 std::variant<SplineOutlines, std::string> spline_outlines(SplineKind kind,
                                                           std::span<const Point2> points);
 
+// The spline through the points as one open curve, as POV-Ray's lathe takes it: every segment
+// in turn (for the quadratic and cubic splines, the first and, for cubic, the last point only
+// set slopes; the Bezier spline takes groups of four). An error when the count does not fit.
+std::variant<Outline, std::string> spline_curve(SplineKind kind, std::span<const Point2> points);
+
 }  // namespace glint

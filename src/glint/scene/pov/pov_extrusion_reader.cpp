@@ -1,5 +1,6 @@
-// Reads POV-Ray's prism onto glint's prism: the outlines of its spline, swept along y; and its
-// text as a union of prisms, a letter each: the glyph's outlines swept along z.
+// Reads POV-Ray's prism onto glint's prism: the outlines of its spline, swept along y; its text
+// as a union of prisms, a letter each: the glyph's outlines swept along z; and its lathe: the
+// spline's curve turned round y.
 #include "glint/geometry/spline_outlines.h"
 #include "glint/scene/font_outlines.h"
 #include "glint/scene/pov/pov_item_reader.h"
@@ -57,6 +58,31 @@ Shape PovItemReader::prism(const PovToken& keyword) {
     if (const auto* problem = std::get_if<std::string>(&made))
         throw parser_.error_at(keyword, *problem);
     return std::get<Prism>(std::move(made));
+}
+
+Shape PovItemReader::lathe(const PovToken& keyword) {
+    SplineKind kind = SplineKind::linear;
+    if (const PovToken& t = parser_.peek_item();
+        t.is_word("linear_spline") || t.is_word("quadratic_spline") || t.is_word("cubic_spline") ||
+        t.is_word("bezier_spline")) {
+        const std::string word = parser_.next().text;
+        kind = *spline_kind(word.substr(0, word.find('_')));
+    }
+    const int count = parser_.whole_number("as the lathe's number of points", 2, 1'000'000);
+    std::vector<Point2> points;
+    for (int i = 0; i < count; ++i) {
+        parser_.accept(",");
+        const PovVector p = parser_.finite_vector("as a lathe point", 2);
+        points.push_back({float(p[0]), float(p[1])});
+    }
+    if (parser_.peek_item().is_word("sturm")) parser_.next();
+    auto curve = spline_curve(kind, points);
+    if (const auto* problem = std::get_if<std::string>(&curve))
+        throw parser_.error_at(keyword, "lathe: " + *problem);
+    auto made = make_lathe(std::get<Outline>(curve));
+    if (const auto* problem = std::get_if<std::string>(&made))
+        throw parser_.error_at(keyword, *problem);
+    return std::get<Lathe>(std::move(made));
 }
 
 void PovItemReader::text(const PovToken& keyword, PovObject& object) {

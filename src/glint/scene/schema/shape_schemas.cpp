@@ -23,8 +23,8 @@ std::vector<EntitySchema> shape_schemas() {
          {
              {"type", "string", "required", "the shape",
               "`box`, `cone`, `cylinder`, `difference`, `disk`, `implicit`, `instance`, "
-              "`intersection`, `julia`, `mandelbulb`, `merge`, `mesh`, `plane`, `polygon`, "
-              "`prism`, `quadric`, `sphere`, `torus`, `triangle`, `union`"},
+              "`intersection`, `julia`, `lathe`, `mandelbulb`, `merge`, `mesh`, `plane`, "
+              "`polygon`, `prism`, `quadric`, `sphere`, `torus`, `triangle`, `union`"},
              {"transform", "list of steps", "none",
               "places the shape: see [transforms](#transforms)", ""},
              {"motion", "list of keyframes", "none",
@@ -94,6 +94,18 @@ std::vector<EntitySchema> shape_schemas() {
              {"top", "number", "1", "the height they are swept to", "> bottom"},
              {"open", "bool", "false",
               "without the caps at bottom and top: walls only, not a solid", ""},
+         }},
+        {EntityFamily::shape,
+         "lathe",
+         {
+             {"points", "list of `[r, y]`", "required",
+              "the curve in the plane of the radius r and the height y, by `spline`, turned round "
+              "the y axis; a curve that ends where it starts makes a solid",
+              "enough for the spline (a `bezier` curve four points a piece)"},
+             {"spline", "string", "`linear`",
+              "POV-Ray's splines, as for `prism`: for `quadratic` and `cubic` the first point (and "
+              "for `cubic` the last) only sets a slope",
+              "`linear`, `quadratic`, `cubic`, `bezier`"},
          }},
         {EntityFamily::shape,
          "disk",

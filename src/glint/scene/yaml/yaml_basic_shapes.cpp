@@ -1,5 +1,5 @@
-// Parsers of the flat and simple shapes: sphere, plane, triangle, box, polygon, prism. Each checks
-// what makes its shape degenerate, so that the renderer never sees one.
+// Parsers of the flat and simple shapes: sphere, plane, triangle, box, polygon, prism, lathe. Each
+// checks what makes its shape degenerate, so that the renderer never sees one.
 #include <algorithm>
 #include <cmath>
 
@@ -93,19 +93,42 @@ Shape parse_polygon(const MapReader& object, ShapeReader&) {
 
 constexpr std::string_view kSplines[] = {"bezier", "cubic", "linear", "quadratic"};
 
-Shape parse_prism(const MapReader& object, ShapeReader&) {
+namespace {
+
+// The points of a prism's or a lathe's spline, and the spline.
+std::pair<std::vector<Point2>, SplineKind> spline_points(const MapReader& object,
+                                                         std::string_view expected) {
     const YamlSource& source = object.source();
     const MapEntry& entry = object.require("points");
-    const auto items =
-        read_sequence(source, entry.value, object.field("points"), "a list of [x, z] points");
+    const auto items = read_sequence(source, entry.value, object.field("points"), expected);
     std::vector<Point2> points;
     points.reserve(items.size());
     for (std::size_t i = 0; i < items.size(); ++i) {
         points.push_back(
             read_point2(source, items[i], {object.what(), "points[" + std::to_string(i) + "]"}));
     }
-    const SplineKind kind =
-        *spline_kind(object.choice("spline", kSplines, "spline", "splines", "linear"));
+    return {points, *spline_kind(object.choice("spline", kSplines, "spline", "splines", "linear"))};
+}
+
+}  // namespace
+
+Shape parse_lathe(const MapReader& object, ShapeReader&) {
+    const auto [points, kind] = spline_points(object, "a list of [r, y] points");
+    auto curve = spline_curve(kind, points);
+    if (const auto* problem = std::get_if<std::string>(&curve)) {
+        throw object.source().error_at(object.require("points").value, "lathe points: " + *problem);
+    }
+    auto lathe = make_lathe(std::get<Outline>(curve));
+    if (const auto* problem = std::get_if<std::string>(&lathe)) {
+        throw object.source().error_at(object.node(), *problem);
+    }
+    return std::get<Lathe>(std::move(lathe));
+}
+
+Shape parse_prism(const MapReader& object, ShapeReader&) {
+    const YamlSource& source = object.source();
+    const MapEntry& entry = object.require("points");
+    const auto [points, kind] = spline_points(object, "a list of [x, z] points");
     auto outlines = spline_outlines(kind, points);
     if (const auto* problem = std::get_if<std::string>(&outlines)) {
         throw source.error_at(entry.value, "prism points: " + *problem);

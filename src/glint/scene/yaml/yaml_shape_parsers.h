@@ -16,6 +16,7 @@ Shape parse_triangle(const MapReader& object, ShapeReader& shapes);
 Shape parse_box(const MapReader& object, ShapeReader& shapes);
 Shape parse_polygon(const MapReader& object, ShapeReader& shapes);
 Shape parse_prism(const MapReader& object, ShapeReader& shapes);
+Shape parse_lathe(const MapReader& object, ShapeReader& shapes);
 
 // yaml_round_shapes.cpp
 Shape parse_disk(const MapReader& object, ShapeReader& shapes);

@@ -122,8 +122,8 @@ std::shared_ptr<const Shape> ShapeReader::read_operand(const YAML::Node& node, c
         }
         notes.push_back(
             "CSG operands are solids: spheres, boxes, capped cylinders and cones, tori, prisms, "
-            "implicit "
-            "surfaces inside their box, fractals, closed meshes, planes (half-spaces), CSG "
+            "closed lathes, implicit surfaces inside their box, fractals, closed meshes, planes "
+            "(half-spaces), CSG "
             "shapes other than clip, and transforms and instances of these");
         throw source_.error_at(
             node, r.map.what() + " is not a closed solid, so it cannot be a CSG operand", notes);

@@ -25,6 +25,7 @@ const ShapeType kShapeTypes[] = {
     {"instance", parse_instance},
     {"intersection", parse_csg_of<CsgOperation::intersection>},
     {"julia", parse_julia},
+    {"lathe", parse_lathe},
     {"mandelbulb", parse_mandelbulb},
     {"merge", parse_csg_of<CsgOperation::merge>},
     {"mesh", parse_mesh},
