@@ -133,6 +133,32 @@ TEST(Lathe, GroupedPiecesFindWhatBruteForceFinds) {
     EXPECT_GT(hits, 150);
 }
 
+TEST(Lathe, SorCurvesInterpolateTheSquaredRadius) {
+    // (1, 0) (1, 1) (2, 2) (2, 3): on y in [1, 2], r^2 runs from 1 to 4 with slopes
+    // 2 r1 (r2 - r0) / (y2 - y0) = 1 and 2 r2 (r3 - r1) / (y3 - y1) = 2; halfway, the Hermite
+    // cubic gives 1/2 + 1/8 + 2 - 1/4 = 2.375.
+    const auto curve =
+        std::get<Outline>(sor_curve(std::vector<Point2>{{1, 0}, {1, 1}, {2, 2}, {2, 3}}, true));
+    ASSERT_EQ(curve.size(), 32u);
+    EXPECT_EQ(curve.front().a, (Point2{1, 1}));
+    EXPECT_EQ(curve.back().b, (Point2{2, 2}));
+    EXPECT_NEAR(curve[16].a.x, std::sqrt(2.375f), 1e-6f);
+    EXPECT_NEAR(curve[16].a.y, 1.5f, 1e-6f);
+    // Capped, a constant radius is a closed cylinder from y = 1 to 2: walls and caps.
+    const Lathe can = std::get<Lathe>(make_lathe(
+        std::get<Outline>(sor_curve(std::vector<Point2>{{1, 0}, {1, 1}, {1, 2}, {1, 3}}, false))));
+    EXPECT_TRUE(can.closed);
+    auto hit = can.intersect({{-5, 1.5f, 0}, {1, 0, 0}}, {});
+    ASSERT_TRUE(hit);
+    EXPECT_NEAR(hit->t, 4, 1e-5f);
+    hit = can.intersect({{0.5f, 5, 0}, {0, -1, 0}}, {});
+    ASSERT_TRUE(hit);
+    EXPECT_NEAR(hit->t, 3, 1e-5f);
+    EXPECT_EQ(std::get<std::string>(
+                  sor_curve(std::vector<Point2>{{1, 0}, {1, 1}, {1, 1}, {1, 3}}, false)),
+              "heights must rise along the curve: point 3 is not above point 2");
+}
+
 TEST(Lathe, BadCurvesAreRefused) {
     EXPECT_EQ(std::get<std::string>(make_lathe({})), "lathe curve is empty");
     EXPECT_EQ(std::get<std::string>(spline_curve(

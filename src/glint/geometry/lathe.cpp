@@ -92,7 +92,8 @@ std::variant<Lathe, std::string> make_lathe(const Outline& curve) {
         // miss by rounding).
         if (i + 1 < curve.size()) e.b = curve[i + 1].a;
         if (lathe.closed && i + 1 == curve.size()) e.b = start;
-        if (e.a == e.b) continue;
+        // A piece on the axis turns into nothing.
+        if (e.a == e.b || (e.a.x == 0 && e.b.x == 0)) continue;
         const auto outward = [sign](Point2 t) {
             const Point2 r = unit_right_of(t);
             return Point2{sign * r.x, sign * r.y};

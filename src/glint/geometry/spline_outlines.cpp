@@ -92,6 +92,68 @@ std::variant<Outline, std::string> spline_curve(SplineKind kind, std::span<const
     return curve;
 }
 
+std::variant<Outline, std::string> sor_curve(std::span<const Point2> p, bool open) {
+    const std::size_t n = p.size();
+    if (n < 4) return "a sor needs at least 4 points, got " + std::to_string(n);
+    // The curve runs up from the second point to the next-to-last; the slopes take the heights
+    // of the points either side, which must differ.
+    for (std::size_t i = 1; i + 1 < n; ++i) {
+        const bool rises = i + 2 < n ? p[i + 1].y > p[i].y : true;
+        if (!rises || !(p[i + 1].y != p[i - 1].y))
+            return "heights must rise along the curve: point " + std::to_string(i + 2) +
+                   " is not above point " + std::to_string(i + 1);
+    }
+    Outline curve;
+    const auto point_on = [](double r2, double y) {
+        return Point2{float(std::sqrt(std::max(r2, 0.0))), float(y)};
+    };
+    double bottom_r2 = 0, top_r2 = 0;
+    for (std::size_t i = 0; i + 3 < n; ++i) {
+        // Hermite form of r^2(y) on [y1, y2]: values q1, q2 and slopes m1, m2 there.
+        const double y1 = p[i + 1].y, y2 = p[i + 2].y, h = y2 - y1;
+        const double q1 = double(p[i + 1].x) * p[i + 1].x, q2 = double(p[i + 2].x) * p[i + 2].x;
+        const double m1 =
+            2.0 * p[i + 1].x * (double(p[i + 2].x) - p[i].x) / (double(p[i + 2].y) - p[i].y);
+        const double m2 = 2.0 * p[i + 2].x * (double(p[i + 3].x) - p[i + 1].x) /
+                          (double(p[i + 3].y) - p[i + 1].y);
+        const auto r2_at = [&](double s) {
+            const double s2 = s * s, s3 = s2 * s;
+            return (2 * s3 - 3 * s2 + 1) * q1 + (s3 - 2 * s2 + s) * h * m1 +
+                   (-2 * s3 + 3 * s2) * q2 + (s3 - s2) * h * m2;
+        };
+        const auto slope_at = [&](double s) {  // d(r^2)/dy
+            const double s2 = s * s;
+            return ((6 * s2 - 6 * s) * q1 + (3 * s2 - 4 * s + 1) * h * m1 + (-6 * s2 + 6 * s) * q2 +
+                    (3 * s2 - 2 * s) * h * m2) /
+                   h;
+        };
+        // The way the curve runs, (dr/dy, 1) scaled by 2r: finite where r is 0.
+        const auto tangent_at = [&](double s) {
+            return Point2{float(slope_at(s)), float(2 * std::sqrt(std::max(r2_at(s), 0.0)))};
+        };
+        if (i == 0) bottom_r2 = r2_at(0);
+        top_r2 = r2_at(1);
+        constexpr int kSteps = 32;
+        for (int k = 0; k < kSteps; ++k) {
+            const double s0 = double(k) / kSteps, s1 = double(k + 1) / kSteps;
+            const Point2 a = point_on(r2_at(s0), y1 + s0 * h), b = point_on(r2_at(s1), y1 + s1 * h);
+            if (!(a == b)) curve.push_back({a, b, tangent_at(s0), tangent_at(s1)});
+        }
+    }
+    if (curve.empty()) return std::string("the sor's curve has no length");
+    if (!open) {
+        // The caps: from the axis out to the curve's start, and from its end back to the axis.
+        const float y_bottom = p[1].y, y_top = p[n - 2].y;
+        Outline closed;
+        append_line(closed, {0, y_bottom}, point_on(bottom_r2, y_bottom));
+        closed.insert(closed.end(), curve.begin(), curve.end());
+        append_line(closed, point_on(top_r2, y_top), {0, y_top});
+        append_line(closed, {0, y_top}, {0, y_bottom});
+        return closed;
+    }
+    return curve;
+}
+
 std::variant<SplineOutlines, std::string> spline_outlines(SplineKind kind,
                                                           std::span<const Point2> points) {
     const std::size_t n = points.size();

@@ -40,4 +40,12 @@ std::variant<SplineOutlines, std::string> spline_outlines(SplineKind kind,
 // set slopes; the Bezier spline takes groups of four). An error when the count does not fit.
 std::variant<Outline, std::string> spline_curve(SplineKind kind, std::span<const Point2> points);
 
+// POV-Ray's surface of revolution (sor) as a lathe's curve: between the second point and the
+// next-to-last, r^2 is a cubic in y on each segment, matching r^2 at both ends and, at each,
+// the slope of r^2 across the neighbouring points (the first and last points only set slopes).
+// The curve is cut into 32 pieces a segment, keeping its normals; unless open, flat caps close
+// it at the bottom and the top (down to the axis), making a solid. An error when there are
+// fewer than 4 points or the heights do not rise.
+std::variant<Outline, std::string> sor_curve(std::span<const Point2> points, bool open);
+
 }  // namespace glint

@@ -85,6 +85,34 @@ Shape PovItemReader::lathe(const PovToken& keyword) {
     return std::get<Lathe>(std::move(made));
 }
 
+Shape PovItemReader::sor(const PovToken& keyword) {
+    const int count = parser_.whole_number("as the sor's number of points", 4, 1'000'000);
+    std::vector<Point2> points;
+    for (int i = 0; i < count; ++i) {
+        parser_.accept(",");
+        const PovVector p = parser_.finite_vector("as a sor point", 2);
+        points.push_back({float(p[0]), float(p[1])});
+    }
+    bool open = false;
+    for (;;) {
+        if (parser_.peek_item().is_word("open")) {
+            parser_.next();
+            open = true;
+        } else if (parser_.peek_item().is_word("sturm")) {
+            parser_.next();
+        } else {
+            break;
+        }
+    }
+    auto curve = sor_curve(points, open);
+    if (const auto* problem = std::get_if<std::string>(&curve))
+        throw parser_.error_at(keyword, "sor: " + *problem);
+    auto made = make_lathe(std::get<Outline>(curve));
+    if (const auto* problem = std::get_if<std::string>(&made))
+        throw parser_.error_at(keyword, *problem);
+    return std::get<Lathe>(std::move(made));
+}
+
 void PovItemReader::text(const PovToken& keyword, PovObject& object) {
     const PovToken kind = parser_.next();
     if (!kind.is_word("ttf")) throw unsupported(kind, "in text");

@@ -53,6 +53,7 @@ private:
     // pov_extrusion_reader.cpp: prism, and text as a union of a prism a letter.
     Shape prism(const PovToken& keyword);
     Shape lathe(const PovToken& keyword);
+    Shape sor(const PovToken& keyword);
     void text(const PovToken& keyword, PovObject& object);
     // The corners of triangles as read, three a triangle, with a smooth one's normals.
     struct MeshCorners {
