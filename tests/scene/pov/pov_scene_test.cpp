@@ -570,6 +570,21 @@ TEST(PovScene, UnboundedQuadricsAreBoundedByWhatBoundsTheirInsides) {
     EXPECT_NEAR(cut.max.y, 3, 1e-3);
 }
 
+// julia_fractal is glint's quaternion Julia set; other algebras and functions are named.
+TEST(PovScene, JuliaFractalsAreGlintsJuliaSets) {
+    const Scene s = parse(R"(
+        julia_fractal { <-0.083, 0.0, -0.83, -0.025> quaternion sqr max_iteration 8
+                        precision 20 slice <0, 0, 0, 1>, 0.1 })");
+    ASSERT_EQ(s.objects.size(), 1u);
+    const auto& julia = std::get<JuliaSet>(s.objects[0].shape);
+    EXPECT_FLOAT_EQ(julia.c[2], -0.83f);
+    EXPECT_EQ(julia.max_iterations, 8);
+    EXPECT_FLOAT_EQ(julia.slice_w, 0.1f);
+    EXPECT_NE(error_of("julia_fractal { <0.2, 0.1, 0.5, 0> hypercomplex }")
+                  .find("\"hypercomplex\" is not supported in a julia_fractal yet"),
+              std::string::npos);
+}
+
 TEST(PovScene, MaterialsGiveTextureAndInterior) {
     const Scene s = parse(R"(
         #declare Glass = material { texture { pigment { rgbf <1, 0, 0, 0.5> } } interior { ior 1.5 } }

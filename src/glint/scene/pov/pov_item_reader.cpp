@@ -27,15 +27,15 @@ bool is_shape(const std::string& keyword) {
            keyword == "cone" || keyword == "torus" || keyword == "disc" || keyword == "triangle" ||
            keyword == "smooth_triangle" || keyword == "polygon" || keyword == "mesh" ||
            keyword == "prism" || keyword == "lathe" || keyword == "sor" || keyword == "text" ||
-           is_polynomial(keyword);
+           keyword == "julia_fractal" || is_polynomial(keyword);
 }
 
 // POV-Ray's objects that glint does not read yet: read past, so that only using one stops the
 // scene (include files declare many).
 bool is_unread_object(const std::string& keyword) {
     static const std::string_view kUnread[] = {
-        "bicubic_patch", "blob", "height_field", "isosurface", "julia_fractal", "lemon",
-        "mesh2",         "ovus", "parametric",   "polynomial", "sphere_sweep",  "superellipsoid"};
+        "bicubic_patch", "blob",       "height_field", "isosurface",   "lemon",         "mesh2",
+        "ovus",          "parametric", "polynomial",   "sphere_sweep", "superellipsoid"};
     return std::find(std::begin(kUnread), std::end(kUnread), keyword) != std::end(kUnread);
 }
 
@@ -408,6 +408,7 @@ Shape PovItemReader::shape(const PovToken& keyword) {
     if (w == "prism") return prism(keyword);
     if (w == "lathe") return lathe(keyword);
     if (w == "sor") return sor(keyword);
+    if (w == "julia_fractal") return julia_fractal(keyword);
     throw unsupported(keyword, "as an object");
 }
 

@@ -54,6 +54,7 @@ private:
     Shape prism(const PovToken& keyword);
     Shape lathe(const PovToken& keyword);
     Shape sor(const PovToken& keyword);
+    Shape julia_fractal(const PovToken& keyword);
     void text(const PovToken& keyword, PovObject& object);
     // The corners of triangles as read, three a triangle, with a smooth one's normals.
     struct MeshCorners {
