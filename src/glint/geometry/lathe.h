@@ -21,10 +21,7 @@ namespace glint {
 
 // A piece of the curve in the (r, y) plane, with the normals (r, y) of the piece and of the
 // curve at its ends, pointing out of the solid where the curve is closed.
-struct LathePiece {
-    Point2 a, b;
-    Point2 normal, normal_a, normal_b;
-};
+using LathePiece = OrientedEdge;
 
 // Pieces in runs of kLatheGroup along the curve, each run with its reach from the axis and its
 // heights: a ray skips a run whose cylinder it misses.

@@ -39,12 +39,14 @@ struct CubicCurve {
 };
 void append_curve(Outline& outline, const CubicCurve& curve, double tolerance);
 
-// A prism edge, ready for intersection: the outward normals of the face (geometric) and of the
-// outline at both ends (for shading).
-struct PrismEdge {
+// An edge of an outline, ready for intersection: the outward normals of the edge itself
+// (geometric) and of the outline at both ends (for shading). A prism's edges and a lathe's
+// pieces.
+struct OrientedEdge {
     Point2 a, b;
     Point2 normal, normal_a, normal_b;
 };
+using PrismEdge = OrientedEdge;
 
 // Edges in runs of kPrismGroup along the outlines, each run with its box: a ray or an inside
 // test skips a run whose box it misses. Outlines are coherent, so runs are compact.

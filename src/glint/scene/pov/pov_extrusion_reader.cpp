@@ -7,34 +7,30 @@
 
 namespace glint {
 
-Shape PovItemReader::prism(const PovToken& keyword) {
-    SplineKind kind = SplineKind::linear;
-    for (;;) {
-        const PovToken& t = parser_.peek_item();
-        if (t.is_word("linear_sweep")) {
-            parser_.next();
-        } else if (t.is_word("conic_sweep")) {
-            throw unsupported(parser_.next(), "in a prism");
-        } else if (t.is_word("linear_spline") || t.is_word("quadratic_spline") ||
-                   t.is_word("cubic_spline") || t.is_word("bezier_spline")) {
-            const std::string word = parser_.next().text;
-            kind = *spline_kind(word.substr(0, word.find('_')));
-        } else {
-            break;
-        }
-    }
-    const float h1 = float(parser_.finite_float("as the prism's first height"));
-    parser_.accept(",");
-    const float h2 = float(parser_.finite_float("as the prism's second height"));
-    parser_.accept(",");
-    const int count = parser_.whole_number("as the prism's number of points", 3, 1'000'000);
+std::optional<SplineKind> PovItemReader::spline_keyword() {
+    const PovToken& t = parser_.peek_item();
+    if (!(t.is_word("linear_spline") || t.is_word("quadratic_spline") ||
+          t.is_word("cubic_spline") || t.is_word("bezier_spline")))
+        return std::nullopt;
+    const std::string word = parser_.next().text;
+    return spline_kind(word.substr(0, word.find('_')));
+}
+
+std::vector<Point2> PovItemReader::point_list(const std::string& shape, int least) {
+    const int count =
+        parser_.whole_number("as the " + shape + "'s number of points", least, 1'000'000);
     std::vector<Point2> points;
     for (int i = 0; i < count; ++i) {
         parser_.accept(",");
-        const PovVector p = parser_.finite_vector("as a prism point", 2);
+        const PovVector p = parser_.finite_vector("as a " + shape + " point", 2);
         points.push_back({float(p[0]), float(p[1])});
     }
-    // `open` and `sturm` belong to the shape: they come before the modifiers.
+    return points;
+}
+
+bool PovItemReader::open_and_sturm() {
+    // They belong to the shape: they come before the modifiers. sturm, POV-Ray's choice of root
+    // solver, means nothing to glint.
     bool open = false;
     for (;;) {
         if (parser_.peek_item().is_word("open")) {
@@ -43,9 +39,30 @@ Shape PovItemReader::prism(const PovToken& keyword) {
         } else if (parser_.peek_item().is_word("sturm")) {
             parser_.next();
         } else {
+            return open;
+        }
+    }
+}
+
+Shape PovItemReader::prism(const PovToken& keyword) {
+    SplineKind kind = SplineKind::linear;
+    for (;;) {
+        if (const auto spline = spline_keyword()) {
+            kind = *spline;
+        } else if (parser_.peek_item().is_word("linear_sweep")) {
+            parser_.next();
+        } else if (parser_.peek_item().is_word("conic_sweep")) {
+            throw unsupported(parser_.next(), "in a prism");
+        } else {
             break;
         }
     }
+    const float h1 = float(parser_.finite_float("as the prism's first height"));
+    parser_.accept(",");
+    const float h2 = float(parser_.finite_float("as the prism's second height"));
+    parser_.accept(",");
+    const std::vector<Point2> points = point_list("prism", 3);
+    const bool open = open_and_sturm();
     auto outlines = spline_outlines(kind, points);
     if (const auto* problem = std::get_if<std::string>(&outlines))
         throw parser_.error_at(keyword, "prism: " + *problem);
@@ -60,57 +77,27 @@ Shape PovItemReader::prism(const PovToken& keyword) {
     return std::get<Prism>(std::move(made));
 }
 
-Shape PovItemReader::lathe(const PovToken& keyword) {
-    SplineKind kind = SplineKind::linear;
-    if (const PovToken& t = parser_.peek_item();
-        t.is_word("linear_spline") || t.is_word("quadratic_spline") || t.is_word("cubic_spline") ||
-        t.is_word("bezier_spline")) {
-        const std::string word = parser_.next().text;
-        kind = *spline_kind(word.substr(0, word.find('_')));
-    }
-    const int count = parser_.whole_number("as the lathe's number of points", 2, 1'000'000);
-    std::vector<Point2> points;
-    for (int i = 0; i < count; ++i) {
-        parser_.accept(",");
-        const PovVector p = parser_.finite_vector("as a lathe point", 2);
-        points.push_back({float(p[0]), float(p[1])});
-    }
-    if (parser_.peek_item().is_word("sturm")) parser_.next();
-    auto curve = spline_curve(kind, points);
+// A lathe of the curve, or the error at the keyword.
+Shape PovItemReader::lathe_of(const PovToken& keyword, std::variant<Outline, std::string> curve) {
     if (const auto* problem = std::get_if<std::string>(&curve))
-        throw parser_.error_at(keyword, "lathe: " + *problem);
+        throw parser_.error_at(keyword, keyword.text + ": " + *problem);
     auto made = make_lathe(std::get<Outline>(curve));
     if (const auto* problem = std::get_if<std::string>(&made))
         throw parser_.error_at(keyword, *problem);
     return std::get<Lathe>(std::move(made));
 }
 
+Shape PovItemReader::lathe(const PovToken& keyword) {
+    const SplineKind kind = spline_keyword().value_or(SplineKind::linear);
+    const std::vector<Point2> points = point_list("lathe", 2);
+    open_and_sturm();
+    return lathe_of(keyword, spline_curve(kind, points));
+}
+
 Shape PovItemReader::sor(const PovToken& keyword) {
-    const int count = parser_.whole_number("as the sor's number of points", 4, 1'000'000);
-    std::vector<Point2> points;
-    for (int i = 0; i < count; ++i) {
-        parser_.accept(",");
-        const PovVector p = parser_.finite_vector("as a sor point", 2);
-        points.push_back({float(p[0]), float(p[1])});
-    }
-    bool open = false;
-    for (;;) {
-        if (parser_.peek_item().is_word("open")) {
-            parser_.next();
-            open = true;
-        } else if (parser_.peek_item().is_word("sturm")) {
-            parser_.next();
-        } else {
-            break;
-        }
-    }
-    auto curve = sor_curve(points, open);
-    if (const auto* problem = std::get_if<std::string>(&curve))
-        throw parser_.error_at(keyword, "sor: " + *problem);
-    auto made = make_lathe(std::get<Outline>(curve));
-    if (const auto* problem = std::get_if<std::string>(&made))
-        throw parser_.error_at(keyword, *problem);
-    return std::get<Lathe>(std::move(made));
+    const std::vector<Point2> points = point_list("sor", 4);
+    const bool open = open_and_sturm();
+    return lathe_of(keyword, sor_curve(points, open));
 }
 
 void PovItemReader::text(const PovToken& keyword, PovObject& object) {

@@ -6,8 +6,10 @@
 #include <optional>
 #include <set>
 #include <string>
+#include <variant>
 #include <vector>
 
+#include "glint/geometry/spline_outlines.h"
 #include "glint/scene/pov/pov_items.h"
 #include "glint/scene/pov/pov_parser.h"
 
@@ -50,10 +52,17 @@ public:
 private:
     Shape shape(const PovToken& keyword);
     Shape mesh(const PovToken& keyword);
-    // pov_extrusion_reader.cpp: prism, and text as a union of a prism a letter.
+    // pov_extrusion_reader.cpp: prism, lathe and sor, and text as a union of a prism a letter.
     Shape prism(const PovToken& keyword);
     Shape lathe(const PovToken& keyword);
     Shape sor(const PovToken& keyword);
+    Shape lathe_of(const PovToken& keyword, std::variant<Outline, std::string> curve);
+    // linear_spline ... bezier_spline, taken when it is next.
+    std::optional<SplineKind> spline_keyword();
+    // `count, <x, y>, ...`, at least `least` points.
+    std::vector<Point2> point_list(const std::string& shape, int least);
+    // `open` and `sturm` after a shape's points: whether it is open.
+    bool open_and_sturm();
     Shape julia_fractal(const PovToken& keyword);
     void text(const PovToken& keyword, PovObject& object);
     // The corners of triangles as read, three a triangle, with a smooth one's normals.
