@@ -68,17 +68,18 @@ std::optional<PieceHit> hit_piece(const LathePiece& piece, const double o[3], co
 
 }  // namespace
 
-std::variant<Lathe, std::string> make_lathe(const Outline& curve) {
-    if (curve.empty()) return std::string("lathe curve is empty");
-    for (const OutlineEdge& e : curve) {
+std::variant<Lathe, std::string> make_lathe(const Outline& open_curve) {
+    if (open_curve.empty()) return std::string("lathe curve is empty");
+    for (const OutlineEdge& e : open_curve) {
         if (!finite(e.a) || !finite(e.b) || !finite(e.tangent_a) || !finite(e.tangent_b))
             return std::string("lathe curve has a point that is not finite");
     }
     Lathe lathe;
-    const Point2 start = curve.front().a, finish = curve.back().b;
-    lathe.closed = curve.size() >= 2 &&
+    const Point2 start = open_curve.front().a, finish = open_curve.back().b;
+    lathe.closed = open_curve.size() >= 2 &&
                    std::abs(start.x - finish.x) <= 1e-6f * (1 + std::abs(start.x)) &&
                    std::abs(start.y - finish.y) <= 1e-6f * (1 + std::abs(start.y));
+    const Outline curve = joined(open_curve, lathe.closed);
     // Counter-clockwise in the (r, y) plane, the enclosed region is on the left: outward is to
     // the right. Measured with |r|, as the lathe turns r and -r alike.
     double twice_area = 0;
@@ -87,11 +88,7 @@ std::variant<Lathe, std::string> make_lathe(const Outline& curve) {
     const float sign = !lathe.closed || twice_area > 0 ? 1.0f : -1.0f;
     auto profile = std::make_shared<LatheProfile>();
     for (std::size_t i = 0; i < curve.size(); ++i) {
-        OutlineEdge e = curve[i];
-        // Each piece ends where the next starts (a curve's end, evaluated in power form, may
-        // miss by rounding).
-        if (i + 1 < curve.size()) e.b = curve[i + 1].a;
-        if (lathe.closed && i + 1 == curve.size()) e.b = start;
+        const OutlineEdge& e = curve[i];
         // A piece on the axis turns into nothing.
         if (e.a == e.b || (e.a.x == 0 && e.b.x == 0)) continue;
         const auto outward = [sign](Point2 t) {

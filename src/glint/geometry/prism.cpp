@@ -46,10 +46,12 @@ int crossings(const Edge* begin, const Edge* end, double x, double z) {
 
 bool finite(Point2 p) { return std::isfinite(p.x) && std::isfinite(p.y); }
 
-// The outline with each edge ending exactly where the next starts, where they miss by rounding
-// (a curve's end evaluated in power form): a gap there would let a ray slip between the walls.
-Outline joined(Outline outline) {
-    for (std::size_t i = 0; i < outline.size(); ++i) {
+}  // namespace
+
+Outline joined(Outline outline, bool closed) {
+    const std::size_t joints =
+        closed ? outline.size() : std::max<std::size_t>(outline.size(), 1) - 1;
+    for (std::size_t i = 0; i < joints; ++i) {
         OutlineEdge& e = outline[i];
         const Point2 next = outline[(i + 1) % outline.size()].a;
         const float near = 1e-5f * std::max({1.0f, std::abs(next.x), std::abs(next.y)});
@@ -57,8 +59,6 @@ Outline joined(Outline outline) {
     }
     return outline;
 }
-
-}  // namespace
 
 void append_line(Outline& outline, Point2 a, Point2 b) {
     if (a == b) return;
@@ -118,7 +118,7 @@ std::variant<Prism, std::string> make_prism(const std::vector<Outline>& outlines
             if (!finite(e.a) || !finite(e.b) || !finite(e.tangent_a) || !finite(e.tangent_b))
                 return "prism outline " + std::to_string(i + 1) + " has a point that is not finite";
         }
-        const Outline outline = joined(outlines[i]);
+        const Outline outline = joined(outlines[i], /*closed=*/true);
         const double area = signed_area(outline);
         if (outline.size() < 2 || area == 0) continue;  // no region: no wall either
         total_area += std::abs(area);

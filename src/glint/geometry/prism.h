@@ -39,6 +39,11 @@ struct CubicCurve {
 };
 void append_curve(Outline& outline, const CubicCurve& curve, double tolerance);
 
+// The outline with each edge ending exactly where the next starts (the last where the first
+// starts, if closed), where they miss by rounding (a curve's end evaluated in power form): a
+// gap there would let a ray slip between the walls. Edges that truly part stay apart.
+Outline joined(Outline outline, bool closed);
+
 // An edge of an outline, ready for intersection: the outward normals of the edge itself
 // (geometric) and of the outline at both ends (for shading). A prism's edges and a lathe's
 // pieces.

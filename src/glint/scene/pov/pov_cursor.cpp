@@ -240,9 +240,8 @@ std::pair<std::filesystem::path, std::string> PovParser::read_file(const PovToke
         throw error_at(name_token, "cannot find the " + std::string(what) + " " + quote(name),
                        std::move(notes));
     }
-    // The include folders may be read, and the standard ones by the path found: Debian links
-    // POV-Ray's fonts there from the system's font folder.
-    const auto standard = default_pov_include_folders();
+    // The include folders may be read, and the standard ones by the path found.
+    const auto& standard = options_.standard_include_folders;
     if (options_.sandbox && !may_read(*options_.sandbox, found) &&
         !std::any_of(options_.include_folders.begin(), options_.include_folders.end(),
                      [&](const auto& folder) {

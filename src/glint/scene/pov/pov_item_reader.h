@@ -135,8 +135,7 @@ std::optional<Item> PovItemReader::take_declared() {
         return item;
     }
     if (next.kind != PovTokenKind::identifier) return std::nullopt;
-    PovValue* value =
-        next.kind == PovTokenKind::identifier ? parser_.symbols().find(next.text) : nullptr;
+    PovValue* value = parser_.symbols().find(next.text);
     const auto* array = value ? std::get_if<std::shared_ptr<PovArray>>(value) : nullptr;
     // An array of items of this kind: one of its elements holds one.
     const auto holds_item = [](const std::shared_ptr<PovValue>& e) {

@@ -26,11 +26,17 @@
 
 namespace glint {
 
+// The standard include folders of an installed POV-Ray (Debian's povray-includes), if any.
+std::vector<std::filesystem::path> default_pov_include_folders();
+
 // Where #include looks and what bounds a scene's work (an endless #while is an error, not a hang).
 struct PovLanguageOptions {
     // After the including file's folder and the scene's: `+L` folders, then POV-Ray's standard
-    // includes when installed (default_pov_include_folders()).
+    // includes when installed (standard_include_folders).
     std::vector<std::filesystem::path> include_folders;
+    // Readable by the path found, links and all: Debian links POV-Ray's fonts there from the
+    // system's font folder.
+    std::vector<std::filesystem::path> standard_include_folders = default_pov_include_folders();
     const ReadSandbox* sandbox = nullptr;       // files outside it are refused; null: no checks
     double clock = 0;                           // the `clock` identifier
     int image_width = 320, image_height = 240;  // `image_width`, `image_height`
@@ -40,9 +46,6 @@ struct PovLanguageOptions {
     std::size_t max_array_elements = std::size_t(1) << 24;
     std::size_t max_string_length = std::size_t(1) << 20;
 };
-
-// The standard include folders of an installed POV-Ray (Debian's povray-includes), if any.
-std::vector<std::filesystem::path> default_pov_include_folders();
 
 class PovParser {
 public:

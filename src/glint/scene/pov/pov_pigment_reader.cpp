@@ -153,7 +153,9 @@ bool PovItemReader::pattern_modifier(const PovToken& token, PovPigment& p) {
         if (!(s.brick_size.x > 0 && s.brick_size.y > 0 && s.brick_size.z > 0))
             throw parser_.error_at(at, "brick_size must be > 0 on every axis");
     } else if (w == "mortar") {
+        const PovToken at = parser_.peek();
         s.mortar = float(parser_.finite_float("after mortar"));
+        if (!(s.mortar >= 0)) throw parser_.error_at(at, "mortar must be >= 0");
     } else if (w == "frequency" || w == "phase") {
         (w == "frequency" ? s.frequency : s.phase) = float(parser_.finite_float("after " + w));
     } else if (w == "ramp_wave") {

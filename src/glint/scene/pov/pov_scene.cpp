@@ -131,8 +131,8 @@ private:
         // #include looks there after the scene's folder, before the standard includes.
         o.include_folders.assign(sandbox.folders.begin() + (sandbox.folders.empty() ? 0 : 1),
                                  sandbox.folders.end());
-        const auto standard = default_pov_include_folders();
-        o.include_folders.insert(o.include_folders.end(), standard.begin(), standard.end());
+        o.include_folders.insert(o.include_folders.end(), o.standard_include_folders.begin(),
+                                 o.standard_include_folders.end());
         o.sandbox = &sandbox;
         o.max_loop_iterations = sandbox.limits.script_loop_iterations;
         return o;
