@@ -7,6 +7,7 @@
 #include <string>
 
 #include "glint/math/color.h"
+#include "glint/shading/normal_pattern.h"
 #include "glint/shading/spectrum.h"
 #include "glint/shading/texture.h"
 
@@ -16,10 +17,12 @@ namespace glint {
 enum class Highlight { blinn, phong };
 
 // Solid noise that varies reflect, roughness and transmit_roughness over the surface (in place
-// of the material's constants), and a bump map that tilts the shading normal.
+// of the material's constants), and a bump map or a normal pattern that tilts the shading
+// normal (the bump map first).
 struct MaterialMaps {
     std::optional<NoiseScalar> reflect, roughness, transmit_roughness;
     std::optional<BumpMap> bump;
+    std::optional<NormalPattern> normal_pattern;
 };
 
 struct Material {

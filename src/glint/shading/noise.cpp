@@ -137,6 +137,11 @@ Vector3 perlin_noise_gradient(Point3 p) {
     return lerp(w, dw, y0, y1).g;
 }
 
+Vector3 vector_noise(Point3 p) {
+    return {perlin_noise(p), perlin_noise(p + Vector3{31.416f, -17.3f, 8.9f}),
+            perlin_noise(p + Vector3{-23.7f, 41.1f, -5.3f})};
+}
+
 float fractal_sum(Point3 p, int octaves, float lacunarity, float gain) {
     float sum = 0, frequency = 1, amplitude = 1;
     for (int i = 0; i < std::min(octaves, kMaxOctaves); ++i) {

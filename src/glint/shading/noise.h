@@ -19,6 +19,10 @@ float perlin_noise(Point3 p);
 // The exact gradient of perlin_noise at p, for bump mapping; 0 for a non-finite p.
 Vector3 perlin_noise_gradient(Point3 p);
 
+// Three of those noises far apart in space: a random vector field, each component in about
+// [-1, 1] (Perlin's DNoise), for turbulence and for bumps.
+Vector3 vector_noise(Point3 p);
+
 // The most octaves a sum adds up: with gain 1/2 a float sum stops changing after 25.
 inline constexpr int kMaxOctaves = 30;
 

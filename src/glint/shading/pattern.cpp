@@ -15,24 +15,6 @@ namespace glint {
 
 namespace {
 
-// Three noises far apart in space: a random vector field for turbulence.
-Vector3 noise_vector(Point3 p) {
-    return {perlin_noise(p), perlin_noise(p + Vector3{31.416f, -17.3f, 8.9f}),
-            perlin_noise(p + Vector3{-23.7f, 41.1f, -5.3f})};
-}
-
-Point3 turbulent(const PatternSpec& spec, Point3 p) {
-    Vector3 sum;
-    float weight = 1, scale = 1;
-    for (int i = 0; i < std::clamp(spec.octaves, 1, kMaxOctaves); ++i) {
-        sum += noise_vector(Point3{p.x * scale, p.y * scale, p.z * scale}) * weight;
-        weight *= spec.omega;
-        scale *= spec.lambda;
-    }
-    return p +
-           Vector3{spec.turbulence.x * sum.x, spec.turbulence.y * sum.y, spec.turbulence.z * sum.z};
-}
-
 // A point in the unit cell (x, y, z) at random, the same each time: crackle's feature point.
 Vector3 feature_point(std::int64_t x, std::int64_t y, std::int64_t z) {
     std::uint64_t h =
@@ -181,9 +163,22 @@ PatternWave default_wave(PatternKind kind) {
                                                                     : PatternWave::ramp;
 }
 
+Point3 turbulent(const PatternSpec& spec, Point3 p) {
+    if (spec.turbulence == Vector3{}) return p;
+    Vector3 sum;
+    float weight = 1, scale = 1;
+    for (int i = 0; i < std::clamp(spec.octaves, 1, kMaxOctaves); ++i) {
+        sum += vector_noise(Point3{p.x * scale, p.y * scale, p.z * scale}) * weight;
+        weight *= spec.omega;
+        scale *= spec.lambda;
+    }
+    return p +
+           Vector3{spec.turbulence.x * sum.x, spec.turbulence.y * sum.y, spec.turbulence.z * sum.z};
+}
+
 float pattern_value(const PatternSpec& spec, Point3 p) {
     if (!is_finite(p)) return 0;
-    if (!(spec.turbulence == Vector3{})) p = turbulent(spec, p);
+    p = turbulent(spec, p);
     const float raw = raw_value(spec, p);
     if (is_list_pattern(spec.kind)) return raw;
     // In double, so that a far point keeps its fraction. Values in [0, 1] stay as they are (1

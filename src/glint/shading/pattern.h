@@ -63,6 +63,9 @@ bool is_list_pattern(PatternKind kind);
 // POV-Ray's default wave for the kind: triangle for marble and wood, ramp for the others.
 PatternWave default_wave(PatternKind kind);
 
+// The point p moved by the spec's turbulence (p itself without turbulence).
+Point3 turbulent(const PatternSpec& spec, Point3 p);
+
 // The pattern's value at p (in the pattern's own space), in [0, 1]; 0 at a non-finite point.
 float pattern_value(const PatternSpec& spec, Point3 p);
 

@@ -179,16 +179,58 @@ TEST(PovScene, WhatIsNotReadIsALocatedErrorNamingIt) {
               std::string::npos);
 }
 
+// normal { }: POV-Ray's own patterns and any pigment pattern's slope, with the amount after the
+// pattern or as bump_size, declared and modified, placed as the object is.
+TEST(PovScene, NormalsTiltByTheirPatternPlacedWithTheObject) {
+    const Scene s = parse(R"(
+        #declare Bumpy = normal { bumps 0.3 scale 0.5 }
+        sphere { 0, 1 normal { Bumpy bump_size 0.7 } translate x * 4 }
+        sphere { 0, 1 texture { normal { ripples frequency 3 } } }
+        box { 0, 1 normal { gradient y, 0.25 accuracy 0.01 turbulence 0.2 } }
+        sphere { 0, 1 normal { agate } normal { wrinkles } })");
+    ASSERT_EQ(s.objects.size(), 4u);
+    const auto pattern_of = [&](std::size_t i) -> const NormalPattern& {
+        const Material& m = s.materials[s.objects[i].material];
+        EXPECT_TRUE(m.maps && m.maps->normal_pattern);
+        return *m.maps->normal_pattern;
+    };
+    const NormalPattern& bumpy = pattern_of(0);
+    EXPECT_EQ(bumpy.kind, NormalPatternKind::bumps);
+    EXPECT_FLOAT_EQ(bumpy.amount, 0.7f);
+    const Point3 p = bumpy.to_pattern(Point3{5, 1, 0});  // scaled by 0.5, then moved by 4
+    EXPECT_NEAR(p.x, 2, 1e-5);
+    EXPECT_NEAR(p.y, 2, 1e-5);
+    EXPECT_EQ(pattern_of(1).kind, NormalPatternKind::ripples);
+    EXPECT_FLOAT_EQ(pattern_of(1).amount, 0.5f);  // POV-Ray's default
+    EXPECT_FLOAT_EQ(pattern_of(1).pattern.frequency, 3);
+    const NormalPattern& ramp = pattern_of(2);
+    EXPECT_EQ(ramp.kind, NormalPatternKind::slope);
+    EXPECT_EQ(ramp.pattern.kind, PatternKind::gradient);
+    EXPECT_EQ(ramp.pattern.direction, (Vector3{0, 1, 0}));
+    EXPECT_FLOAT_EQ(ramp.amount, 0.25f);
+    EXPECT_FLOAT_EQ(ramp.accuracy, 0.01f);
+    EXPECT_FLOAT_EQ(ramp.pattern.turbulence.x, 0.2f);
+    EXPECT_EQ(pattern_of(3).kind, NormalPatternKind::wrinkles);  // the later normal
+    EXPECT_TRUE(s.warnings.empty());
+    EXPECT_NE(error_of("sphere { 0, 1 normal { bumps accuracy 0 } }")
+                  .find("scene.pov:1:39: error: accuracy must be > 0"),
+              std::string::npos);
+    EXPECT_NE(error_of("sphere { 0, 1 normal { bumps color_map { [0 rgb 0] } sheen 2 } }")
+                  .find("\"sheen\" is not supported in a normal yet"),
+              std::string::npos);
+}
+
 // As an include file declares what a scene may never use: only what is used stops the scene.
 TEST(PovScene, UnreadDeclarationsStopOnlyTheObjectsThatUseThem) {
     const Scene s = parse(R"(
         #declare Fractal = pigment { mandel 20 color_map { [0 rgb 0] [1 rgb 1] } }
         #declare Map = color_map { [0 rgb 0] [1 rgb 1] }
-        #declare Bumpy = normal { bumps 0.5 }
-        sphere { 0, 1 pigment { rgb 1 } normal { Bumpy } })");
+        #declare Quilts = normal { quilted 0.5 control0 1 }
+        sphere { 0, 1 pigment { rgb 1 } normal { Quilts } })");
     EXPECT_EQ(s.objects.size(), 1u);
     ASSERT_EQ(s.warnings.size(), 1u);
-    EXPECT_NE(s.warnings[0].find("normal { }"), std::string::npos);
+    EXPECT_EQ(s.warnings[0],
+              "normal pattern \"quilted\" is not supported yet: surfaces with it stay smooth");
     EXPECT_NE(error_of("#declare Cloudy = pigment { mandel 9 }\nsphere { 0, 1 pigment { Cloudy } }")
                   .find("scene.pov:1:29: error: pigment pattern \"mandel\" is not supported yet"),
               std::string::npos);

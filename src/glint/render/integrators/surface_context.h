@@ -59,6 +59,8 @@ inline SurfaceContext surface_context(const World& world, const Ray& ray, const 
         if (maps.transmit_roughness)
             c.transmit_roughness = evaluate(*maps.transmit_roughness, c.sp.p);
         if (maps.bump) c.sp.shading_normal = bumped(*maps.bump, c.sp.shading_normal, c.sp.p);
+        if (maps.normal_pattern)
+            c.sp.shading_normal = perturbed(*maps.normal_pattern, c.sp.shading_normal, c.sp.p);
     }
     c.entering = dot(c.sp.normal, ray.direction) < 0;
     c.emission = m.emits_both_sides || c.entering ? m.emission : Color{};

@@ -70,7 +70,9 @@ SceneError PovItemReader::unsupported(const PovToken& token, std::string_view wh
                             {kSeeCompatibility});
 }
 
-double PovItemReader::optional_amount() {
+double PovItemReader::optional_amount() { return amount_if_given().value_or(1); }
+
+std::optional<double> PovItemReader::amount_if_given() {
     const PovToken& ahead = parser_.peek_item();
     bool given = ahead.kind == PovTokenKind::number || ahead.is_symbol("(") ||
                  ahead.is_symbol("-") || ahead.is_symbol("+");
@@ -80,16 +82,8 @@ double PovItemReader::optional_amount() {
         given = std::find(std::begin(kWords), std::end(kWords), ahead.text) != std::end(kWords) ||
                 (declared && std::holds_alternative<double>(*declared));
     }
-    return given ? parser_.finite_float("after the keyword") : 1;
-}
-
-void PovItemReader::skip_normal(const PovToken& keyword) {
-    parser_.skip_braced(keyword);
-    if (!warned_normal_)
-        warnings_.push_back(
-            "normal { } (bumps, dents, ripples, ...) is read past: glint does not "
-            "perturb POV-Ray's normals yet, surfaces are smooth");
-    warned_normal_ = true;
+    if (!given) return std::nullopt;
+    return parser_.finite_float("after the keyword");
 }
 
 void PovItemReader::read_past(const std::string& what, const std::string& instead) {
@@ -108,7 +102,7 @@ void PovItemReader::read_default(const PovToken& directive) {
         else if (token.is_word("finish"))
             t.finish = finish(t.finish);
         else if (token.is_word("normal"))
-            skip_normal(token);
+            t.normal = normal(t.normal);
         else if (token.kind == PovTokenKind::end)
             throw parser_.error_at(directive, "#default { is not closed by }");
         else
@@ -131,10 +125,7 @@ std::optional<PovItem> PovItemReader::read(const PovToken& keyword) {
         parser_.skip_braced(keyword);
         return PovUnread{w, keyword.at};
     }
-    if (w == "normal") {
-        skip_normal(keyword);
-        return PovUnread{w, keyword.at};
-    }
+    if (w == "normal") return normal(default_texture_->normal);
     if (w == "function") {
         // function [(parameters)] { ... }: not read yet, an error where it is used.
         if (parser_.accept("(")) {
@@ -610,7 +601,7 @@ void PovItemReader::modifiers(PovObject& object) {
             // A texture given before moves with the object.
             if (object.texture) {
                 PovTexture moved = *object.texture;
-                moved.pigment.transform = *step * moved.pigment.transform;
+                moved.move(*step);
                 object.texture = std::make_shared<const PovTexture>(moved);
             }
         } else if (w == "texture" && layered) {
@@ -638,7 +629,9 @@ void PovItemReader::modifiers(PovObject& object) {
             object.texture = m.texture;
             object.interior = m.interior;
         } else if (w == "normal") {
-            skip_normal(token);
+            PovTexture t = object.texture ? *object.texture : *default_texture_;
+            t.normal = normal(t.normal);
+            object.texture = std::make_shared<const PovTexture>(t);
         } else if (w == "no_shadow") {
             object.no_shadow = true;
         } else if (w == "hollow") {
@@ -681,11 +674,11 @@ PovTexture PovItemReader::texture(const PovTexture& base) {
         else if (token.is_word("finish"))
             t.finish = finish(t.finish);
         else if (token.is_word("normal"))
-            skip_normal(token);
+            t.normal = normal(t.normal);
         else if (token.is_word("checker"))
             checker_texture(token, t);
         else if (const auto step = transform_step(token))
-            t.pigment.transform = *step * t.pigment.transform;
+            t.move(*step);
         else
             throw unsupported(token, "in a texture");
     }
@@ -802,7 +795,7 @@ PovMaterial PovItemReader::material(const PovMaterial& base) {
         } else if (const auto step = transform_step(token)) {
             if (m.texture) {
                 PovTexture moved = *m.texture;
-                moved.pigment.transform = *step * moved.pigment.transform;
+                moved.move(*step);
                 m.texture = std::make_shared<const PovTexture>(moved);
             }
         } else {

@@ -31,6 +31,8 @@ public:
     // texture { checker texture { } texture { } }: the keyword read; onto a checker pigment.
     void checker_texture(const PovToken& keyword, PovTexture& t);
     PovPigment pigment(const PovPigment& base);
+    // normal { [declared] pattern [amount] modifiers } over `base` (pov_normal_reader.cpp).
+    PovNormal normal(const std::optional<PovNormal>& base);
     PovColorMap color_map(const PovToken& keyword);
     PovFinish finish(const PovFinish& base);
     PovInterior interior(const PovInterior& base);
@@ -45,6 +47,8 @@ public:
     std::optional<Transform> transform_step(const PovToken& keyword);
     // The float after a keyword that may take one (`metallic 0.5`, `hollow off`), else 1.
     double optional_amount();
+    // The float next, when one is (a number, an expression, a declared float).
+    std::optional<double> amount_if_given();
     // The bounding box of an object as POV-Ray's min_extent and max_extent give it: huge where
     // it is unbounded, empty where it has no surface.
     Bounds3 extent(const PovObject& object);
@@ -94,12 +98,12 @@ private:
     PovVector point(std::string_view what) { return parser_.finite_vector(what, 3); }
     float number(std::string_view what) { return float(parser_.finite_float(what)); }
     SceneError unsupported(const PovToken& token, std::string_view where);
+    // Whether `name` is a pattern glint reads in a pigment (gradient, marble, ...).
+    static bool is_pigment_pattern(std::string_view name);
     // gradient x, checker C1 C2, marble, ...: the pattern `name` starts, before its modifiers.
     PovPigment pattern(const PovToken& name);
     // A pigment modifier of a pattern (color_map, turbulence, waves, ...); false for another word.
     bool pattern_modifier(const PovToken& token, PovPigment& p);
-    // normal { ... }: read past, with a warning the first time.
-    void skip_normal(const PovToken& keyword);
     void read_default(const PovToken& directive);
     // A warning, once a scene for each `what`, that it is read and left out, and what glint
     // does instead.
@@ -108,7 +112,6 @@ private:
     PovParser& parser_;
     std::vector<std::string>& warnings_;
     std::shared_ptr<const PovTexture> default_texture_ = std::make_shared<const PovTexture>();
-    bool warned_normal_ = false;
     bool warned_layers_ = false;
     bool warned_fog_noise_ = false;
     bool warned_checker_finish_ = false;

@@ -13,6 +13,7 @@
 #include "glint/math/transform.h"
 #include "glint/scene/pov/pov_files.h"
 #include "glint/scene/pov/pov_value.h"
+#include "glint/shading/normal_pattern.h"
 #include "glint/shading/pattern.h"
 
 namespace glint {
@@ -73,9 +74,25 @@ struct PovFog {
     PovPosition at;
 };
 
+// normal { }: a normal pattern placed by its transform (relative to the object, as a
+// pigment's); or one glint does not read yet (`unsupported` names it), which leaves the surface
+// smooth.
+struct PovNormal {
+    NormalPattern pattern;  // its to_pattern is set when the object is placed
+    Transform transform;
+    std::string unsupported;
+};
+
 struct PovTexture {
     PovPigment pigment;
     PovFinish finish;
+    std::optional<PovNormal> normal;
+
+    // The texture moved by `step`, after what moved it before: its pigment and normal with it.
+    void move(const Transform& step) {
+        pigment.transform = step * pigment.transform;
+        if (normal) normal->transform = step * normal->transform;
+    }
 };
 
 struct PovInterior {
@@ -157,8 +174,9 @@ struct PovUnread {
     PovPosition at;
 };
 
-using PovItem = std::variant<PovObject, PovTexture, PovPigment, PovFinish, PovInterior, Transform,
-                             PovUnread, PovCamera, PovColorMap, PovSkySphere, PovMaterial>;
+using PovItem =
+    std::variant<PovObject, PovTexture, PovPigment, PovFinish, PovInterior, Transform, PovUnread,
+                 PovCamera, PovColorMap, PovSkySphere, PovMaterial, PovNormal>;
 
 // A declared item as an identifier's value holds it.
 struct PovItemRef {

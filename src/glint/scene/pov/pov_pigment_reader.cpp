@@ -36,6 +36,14 @@ std::optional<PatternKind> pattern_kind(std::string_view w) {
     return std::nullopt;
 }
 
+}  // namespace
+
+bool PovItemReader::is_pigment_pattern(std::string_view name) {
+    return pattern_kind(name).has_value();
+}
+
+namespace {
+
 bool starts_color(const PovToken& t) {
     return t.is_word("color") || t.is_word("colour") || t.is_word("rgb") || t.is_word("rgbf") ||
            t.is_word("rgbt") || t.is_word("rgbft") || t.is_word("red") || t.is_word("green") ||

@@ -7,6 +7,7 @@
 #include <fstream>
 #include <map>
 #include <numbers>
+#include <set>
 #include <sstream>
 #include <tuple>
 
@@ -342,14 +343,25 @@ private:
             throw files_.error_at(p.at,
                                   "pigment pattern " + quote(p.pattern) + " is not supported yet",
                                   {"docs/povray.md lists what glint reads"});
-        const bool placed = p.kind == PovPigment::Kind::pattern;
+        const std::optional<PovNormal>& normal = texture->normal;
+        const bool tilted = normal && normal->unsupported.empty();
+        const bool placed = p.kind == PovPigment::Kind::pattern || tilted;
         const MaterialKey key{texture, interior, placed ? frame.matrix().m : Matrix4::identity().m};
         if (const auto found = materials_.find(key); found != materials_.end())
             return found->second;
         const PovTexture& t = *texture;
         Material m;
         m.name = "pov" + std::to_string(scene_.materials.size());
-        if (placed) {
+        if (normal && !tilted && warned_normals_.insert(normal->unsupported).second)
+            scene_.warnings.push_back("normal pattern " + quote(normal->unsupported) +
+                                      " is not supported yet: surfaces with it stay smooth");
+        if (tilted) {
+            MaterialMaps maps;
+            maps.normal_pattern = normal->pattern;
+            maps.normal_pattern->to_pattern = (frame * normal->transform).inverse();
+            m.maps = std::make_shared<const MaterialMaps>(std::move(maps));
+        }
+        if (p.kind == PovPigment::Kind::pattern) {
             auto pattern = std::make_shared<PatternTexture>();
             pattern->spec = p.spec;
             for (const PovColorStop& stop : p.map.stops)
@@ -616,6 +628,7 @@ private:
     std::optional<double> assumed_gamma_;
     std::optional<PovSkySphere> sky_;
     bool warned_operand_textures_ = false;
+    std::set<std::string> warned_normals_;
 };
 
 }  // namespace
