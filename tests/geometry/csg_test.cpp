@@ -192,6 +192,32 @@ TEST(Csg, NestedOperationsToSeveralLevels) {
     EXPECT_EQ(csg_depth(*nested.shape), 3);
 }
 
+// Each operand may show its own material: the hit names the innermost operand that has one, through
+// transforms and nested levels; elsewhere the object's own (0).
+TEST(Csg, HitsNameTheMaterialOfTheOperandTheyLieOn) {
+    // (cube with material 3, minus a ball with none), moved, merged with a sphere of material 5.
+    Csg carved{CsgOperation::difference, kCube.shape, sphere({0, 0, -1}, 0.6f).shape};
+    carved.material_a = 3;
+    const auto moved = std::make_shared<const Shape>(
+        Transformed(Transform::translate({0, 0, 2}), std::make_shared<const Shape>(carved)));
+    Csg whole{CsgOperation::union_of, moved, sphere({0, 3, 2}, 0.5f).shape};
+    whole.material_b = 5;
+    whole.material_a = 7;  // the carved cube's, where its own operands have none
+    const Shape shape = whole;
+    EXPECT_TRUE(has_operand_materials(shape));
+    EXPECT_FALSE(has_operand_materials(*kCube.shape));
+    const auto material_along = [&](Point3 from, Vector3 d) {
+        const auto hit = intersect(shape, Ray{from, d}, {0, kInfinity});
+        EXPECT_TRUE(hit.has_value());
+        return hit ? operand_material(shape, *hit) : 0;
+    };
+    EXPECT_EQ(material_along({0.5f, 0.5f, -5}, {0, 0, 1}), 3u);  // the cube's front
+    EXPECT_EQ(material_along({0, 0, -5}, {0, 0, 1}), 7u);        // the ball's cut: the level above
+    EXPECT_EQ(material_along({0, 3, -5}, {0, 0, 1}), 5u);        // the sphere
+    Csg plain{CsgOperation::union_of, kCube.shape, kBall.shape};
+    EXPECT_FALSE(has_operand_materials(Shape{plain}));
+}
+
 // A closed mesh is a solid: an octahedron |x| + |y| + |z| < r of 8 triangles, wound outwards.
 Solid octahedron(float r) {
     MeshData arrays;

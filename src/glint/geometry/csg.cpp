@@ -184,6 +184,36 @@ std::optional<ShapeHit> Csg::intersect(const Ray& ray, Interval t_range) const {
     return std::nullopt;
 }
 
+std::uint32_t operand_material(const Shape& shape, const ShapeHit& hit) {
+    std::uint32_t material = 0;
+    std::uint64_t path = hit.csg_path;
+    for (const Shape* s = &shape;;) {
+        if (const auto* placed = std::get_if<Transformed>(s)) {
+            s = placed->shape.get();
+        } else if (const auto* moving = std::get_if<Moving>(s)) {
+            s = moving->shape.get();
+        } else if (const auto* csg = std::get_if<Csg>(s)) {
+            const bool on_b = path & kFromB;
+            if (const std::uint32_t own = on_b ? csg->material_b : csg->material_a) material = own;
+            s = on_b ? csg->b.get() : csg->a.get();
+            path >>= 2;
+        } else {
+            return material;
+        }
+    }
+}
+
+bool has_operand_materials(const Shape& shape) {
+    if (const auto* placed = std::get_if<Transformed>(&shape))
+        return has_operand_materials(*placed->shape);
+    if (const auto* moving = std::get_if<Moving>(&shape))
+        return has_operand_materials(*moving->shape);
+    if (const auto* csg = std::get_if<Csg>(&shape))
+        return csg->material_a || csg->material_b || has_operand_materials(*csg->a) ||
+               has_operand_materials(*csg->b);
+    return false;
+}
+
 SurfacePoint Csg::surface_at(const Ray& ray, const ShapeHit& hit, Uv uv) const {
     const std::uint64_t bits = hit.csg_path & 3;
     ShapeHit operand_hit = hit;

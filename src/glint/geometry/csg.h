@@ -28,6 +28,9 @@ enum class CsgOperation { union_of, merge, intersection, difference, clip };
 struct Csg {
     CsgOperation operation = CsgOperation::union_of;
     std::shared_ptr<const Shape> a, b;  // never null
+    // What each operand's surface is painted with, where it has its own (POV-Ray paints each
+    // operand's part with its texture): a scene material's index + 1; 0 for the CSG's own.
+    std::uint32_t material_a = 0, material_b = 0;
 
     Bounds3 bounds() const;
     // Walks both operands' hits along the ray in order, tracking whether the ray is inside
@@ -37,6 +40,12 @@ struct Csg {
     // the operand inside out (b in a difference), so that normals always point out of the result.
     SurfacePoint surface_at(const Ray& ray, const ShapeHit& hit, Uv uv = Uv::compute) const;
 };
+
+// The material (index + 1) of the operand the hit lies on, the innermost that has one, through
+// transforms and nested CSG; 0 when none has one (the object's own material).
+std::uint32_t operand_material(const Shape& shape, const ShapeHit& hit);
+// Whether any CSG in the shape paints an operand with its own material.
+bool has_operand_materials(const Shape& shape);
 
 // Each level takes two bits of ShapeHit::csg_path, and intersect() and surface_at() recurse once
 // a level: the cap keeps both bounded (loaders refuse deeper nesting, DESIGN principle 4).

@@ -43,6 +43,7 @@ World::World(Scene scene, AccelKind accel, ShadowAcceleration shadows)
         std::uint32_t visibility = kVisibleToCameraRays;
         if (object.casts_shadow) visibility |= kVisibleToShadowRays;
         add_object_light(object, std::uint32_t(primitives_.size()));
+        operand_materials_ = operand_materials_ || has_operand_materials(object.shape);
         primitives_.push_back({std::move(object.shape), visibility});
         material_of_.push_back(object.material);
     }

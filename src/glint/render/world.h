@@ -97,6 +97,16 @@ public:
     std::uint32_t material_index_of(std::uint32_t primitive) const {
         return material_of_[primitive];
     }
+    // The material where the hit lies: its primitive's, or the CSG operand's it lies on, when
+    // that operand has its own (csg.h); and its index.
+    const Material& material_at(const Hit& hit) const { return materials_[material_index_at(hit)]; }
+    std::uint32_t material_index_at(const Hit& hit) const {
+        if (operand_materials_) [[unlikely]]
+            if (const std::uint32_t own =
+                    operand_material(primitives_[hit.primitive].shape, hit.shape_hit))
+                return own - 1;
+        return material_of_[hit.primitive];
+    }
 
     // The radius of a sphere around the bounded geometry (1 when there is none): the scale of
     // the scene, for weighing lights whose intensity does not fall off with distance.
@@ -128,6 +138,7 @@ private:
     MediumStack eye_media_;  // holds pointers into materials_, which never reallocates
     LargeVector<Primitive> primitives_;
     std::vector<std::uint32_t> material_of_;  // per primitive
+    bool operand_materials_ = false;          // some CSG paints an operand with its own
     std::unique_ptr<Aggregate> aggregate_;    // over primitives_
     ShadowAcceleration shadows_;
     std::vector<std::unique_ptr<LightBuffer>> light_buffers_;  // per light; null for none

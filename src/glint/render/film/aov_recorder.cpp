@@ -55,7 +55,7 @@ void AovRecorder::hit(const SurfaceContext& c, const Hit& hit) {
     if (wants_uv_)
         s.uv = uv_needed(m.color) == Uv::compute ? c.sp.uv : world_.surface_at(eye_ray_, hit).uv;
     s.object = std::int32_t(hit.primitive);
-    s.material = std::int32_t(world_.material_index_of(hit.primitive));
+    s.material = std::int32_t(world_.material_index_at(hit));
     s.emission = c.emission;
     s.ambient = ambient_term(m, c.color, world_.ambient());
 }

@@ -46,7 +46,7 @@ float ShadowFeelers::transmittance(std::size_t light, const SurfacePoint& sp, No
         stats.count(RayKind::shadow);
         const auto hit = world_.intersect(feeler, {0, remaining}, kVisibleToShadowRays);
         if (!hit) return factor;
-        factor *= world_.material_of(hit->primitive).transmit;
+        factor *= world_.material_at(*hit).transmit;
         if (factor == 0) return 0;
         // Continue from just beyond the surface crossed.
         const SurfacePoint crossed = world_.surface_at(feeler, *hit, Uv::skip);

@@ -41,7 +41,7 @@ inline SurfaceContext surface_context(const World& world, const Ray& ray, const 
                                       const RayDifferential* pencil = nullptr) {
     SurfaceContext c;
     c.primitive = hit.primitive;
-    c.material = &world.material_of(hit.primitive);
+    c.material = &world.material_at(hit);
     const Material& m = *c.material;
     c.sp = world.surface_at(ray, hit, pencil ? Uv::compute : uv_needed(m.color));
     if (pencil) {

@@ -402,9 +402,17 @@ private:
         return index;
     }
 
+    // Where the textures of a CSG's operands lie and what they are seen through: the scene's
+    // placement of the CSG object's parent space, and the interior handed down.
+    struct OperandPaint {
+        Transform frame;
+        std::shared_ptr<const PovInterior> interior;
+    };
+
     // The object's shape as one glint shape (a CSG of its children, each placed), or nothing for
-    // a group, whose children are objects of their own.
-    Shape placed_shape(const PovObject& object) {
+    // a group, whose children are objects of their own. With `paint`, a CSG's operands that
+    // have their own texture show it (none for clipping objects, which show nothing).
+    Shape placed_shape(const PovObject& object, const OperandPaint* paint = nullptr) {
         refuse_unread(object);
         Shape shape;
         if (object.shape) {
@@ -428,7 +436,7 @@ private:
                 if (!child->light) operands.push_back(child.get());
             if (operands.empty())
                 throw files_.error_at(object.at, "a CSG of lights alone has no surface");
-            shape = csg_of(object, operands);
+            shape = csg_of(object, operands, paint);
         }
         if (object.clipped_by)
             shape =
@@ -442,10 +450,11 @@ private:
     // So every CSG is what it keeps, less what it takes away; each side is a balanced tree, as
     // glint's CSG walks its operands' hits again at every level: a chain of n levels (a
     // polyhedron of planes) would cost exponentially in n, a tree costs in its depth, log n.
-    Shape csg_of(const PovObject& object, const std::vector<const PovObject*>& operands) {
+    Shape csg_of(const PovObject& object, const std::vector<const PovObject*>& operands,
+                 const OperandPaint* paint) {
         const bool intersection = object.csg == PovObject::Csg::intersection;
         const bool difference = object.csg == PovObject::Csg::difference;
-        std::vector<Shape> kept, taken;
+        std::vector<Operand> kept, taken;
         // An intersection bounds an unbounded polynomial operand by its other operands' box.
         Bounds3 common{{-kInfinity, -kInfinity, -kInfinity}, {kInfinity, kInfinity, kInfinity}};
         const bool needs_common =
@@ -475,7 +484,18 @@ private:
             const bool keeps = intersection ? !operand.inverse
                                : difference ? i == 0 || operand.inverse
                                             : true;
-            (keeps ? kept : taken).push_back(placed_shape(operand));
+            Operand placed;
+            if (paint) {
+                // An operand's texture lies in the CSG's own space.
+                const OperandPaint own{paint->frame * object.transform,
+                                       operand.interior ? operand.interior : paint->interior};
+                placed.shape = placed_shape(operand, &own);
+                if (operand.texture)
+                    placed.material = material(operand.texture, own.interior, own.frame) + 1;
+            } else {
+                placed.shape = placed_shape(operand);
+            }
+            (keeps ? kept : taken).push_back(std::move(placed));
         }
         if (kept.empty())
             throw files_.error_at(object.at,
@@ -484,16 +504,11 @@ private:
         const CsgOperation op = object.csg == PovObject::Csg::merge ? CsgOperation::merge
                                 : intersection || difference        ? CsgOperation::intersection
                                                                     : CsgOperation::union_of;
-        Shape shape = balanced(kept, 0, kept.size(), op);
-        if (taken.empty()) return shape;
+        Operand shape = balanced(kept, 0, kept.size(), op);
+        if (taken.empty()) return shape.shape;
         return combined(std::move(shape), balanced(taken, 0, taken.size(), CsgOperation::union_of),
-                        CsgOperation::difference);
-    }
-
-    static const PovObject* first_textured_operand(const PovObject& csg) {
-        for (const auto& child : csg.children)
-            if (!child->light && child->texture) return child.get();
-        return nullptr;
+                        CsgOperation::difference)
+            .shape;
     }
 
     static bool unbounded_polynomial(const PovObject& object) {
@@ -501,16 +516,28 @@ private:
     }
 
     static Shape combined(Shape a, Shape b, CsgOperation operation) {
+        return combined(Operand{std::move(a)}, Operand{std::move(b)}, operation).shape;
+    }
+
+    // An operand of a CSG, with the material (index + 1) it shows, 0 for the CSG's own.
+    struct Operand {
+        Shape shape;
+        std::uint32_t material = 0;
+    };
+
+    static Operand combined(Operand a, Operand b, CsgOperation operation) {
         Csg csg;
         csg.operation = operation;
-        csg.a = std::make_shared<const Shape>(std::move(a));
-        csg.b = std::make_shared<const Shape>(std::move(b));
-        return csg;
+        csg.a = std::make_shared<const Shape>(std::move(a.shape));
+        csg.b = std::make_shared<const Shape>(std::move(b.shape));
+        csg.material_a = a.material;
+        csg.material_b = b.material;
+        return {csg};
     }
 
     // The operands [begin, end) joined by `op` (associative) two halves at a time.
-    static Shape balanced(std::vector<Shape>& shapes, std::size_t begin, std::size_t end,
-                          CsgOperation op) {
+    static Operand balanced(std::vector<Operand>& shapes, std::size_t begin, std::size_t end,
+                            CsgOperation op) {
         if (end - begin == 1) return std::move(shapes[begin]);
         const std::size_t middle = begin + (end - begin) / 2;
         return combined(balanced(shapes, begin, middle, op), balanced(shapes, middle, end, op), op);
@@ -527,18 +554,6 @@ private:
         if (object.texture || !texture) {
             texture = object.texture ? object.texture : object.fallback;
             texture_frame = parent;
-            // A CSG without a texture of its own: glint gives it one material, its first
-            // textured operand's (POV-Ray paints each operand's part with its own).
-            if (!object.texture && !object.shape && object.csg != PovObject::Csg::group)
-                if (const PovObject* painted = first_textured_operand(object)) {
-                    texture = painted->texture;
-                    texture_frame = parent * object.transform;
-                    if (!warned_operand_textures_)
-                        scene_.warnings.push_back(
-                            "a CSG without a texture takes its first textured operand's for all "
-                            "of it: glint gives a CSG one material");
-                    warned_operand_textures_ = true;
-                }
         }
         if (object.interior) interior = object.interior;
         no_shadow = no_shadow || object.no_shadow;
@@ -562,7 +577,8 @@ private:
         }
         PovObject local = object;
         local.transform = Transform{};
-        Shape shape = placed_shape(local);
+        const OperandPaint paint{placement, interior};
+        Shape shape = placed_shape(local, &paint);
         if (!(placement == Transform{}))
             shape = Transformed(placement, std::make_shared<const Shape>(std::move(shape)));
         if (clip) shape = combined(std::move(shape), *clip, CsgOperation::clip);
@@ -627,7 +643,6 @@ private:
     bool any_area_light_ = false;
     std::optional<double> assumed_gamma_;
     std::optional<PovSkySphere> sky_;
-    bool warned_operand_textures_ = false;
     std::set<std::string> warned_normals_;
 };
 
