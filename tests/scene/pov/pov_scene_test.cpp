@@ -220,6 +220,16 @@ TEST(PovScene, NormalsTiltByTheirPatternPlacedWithTheObject) {
               std::string::npos);
 }
 
+// A normal for each part of a list pattern is not read yet: the surface stays smooth, and says so.
+TEST(PovScene, ListPatternsOfNormalsLeaveTheSurfaceSmooth) {
+    const Scene s =
+        parse("sphere { 0, 1 normal { checker normal { bumps } normal { dents 0.3 } scale 2 } }");
+    ASSERT_EQ(s.objects.size(), 1u);
+    EXPECT_FALSE(s.materials[s.objects[0].material].maps);
+    ASSERT_EQ(s.warnings.size(), 1u);
+    EXPECT_NE(s.warnings[0].find("\"checker of normals\" is not supported yet"), std::string::npos);
+}
+
 // As an include file declares what a scene may never use: only what is used stops the scene.
 TEST(PovScene, UnreadDeclarationsStopOnlyTheObjectsThatUseThem) {
     const Scene s = parse(R"(

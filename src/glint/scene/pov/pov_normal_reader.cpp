@@ -48,8 +48,15 @@ PovNormal PovItemReader::normal(const std::optional<PovNormal>& base) {
             n.pattern.kind = *kind;
             pattern_of = PovPigment{};
         } else if (is_pigment_pattern(first.text)) {
+            const PovToken name = parser_.next();
             n = PovNormal{};
-            pattern_of = pattern(parser_.next());
+            if (parser_.peek_item().is_word("normal")) {
+                // checker normal { } normal { }: a normal for each of the pattern's parts.
+                n.unsupported = name.text + " of normals";
+                parser_.skip_to_closing_brace(name);
+                return n;
+            }
+            pattern_of = pattern(name);
             n.pattern.kind = NormalPatternKind::slope;
         } else if (unread_normal_pattern(first.text)) {
             // A pattern glint does not tilt normals by yet: the surface stays smooth.
