@@ -37,6 +37,7 @@ struct Evaluate {
     Color operator()(const PatternTexturePtr& pattern) const {
         return glint::evaluate(*pattern, sp.p);
     }
+    Color operator()(const ProjectedImagePtr& image) const { return glint::evaluate(*image, sp.p); }
 };
 
 }  // namespace

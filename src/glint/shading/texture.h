@@ -1,7 +1,7 @@
 // Colour sources for materials: a constant colour, a checker pattern, either painted on the
-// surface's uv coordinates (2D) or carved out of space (3D, a solid texture), an image, a
-// noise pattern through a colour ramp (solid), or one of POV-Ray's patterns through a colour
-// map (solid, placed by its own transform).
+// surface's uv coordinates (2D) or carved out of space (3D, a solid texture), an image on the
+// surface's uv or projected through space, a noise pattern through a colour ramp (solid), or one
+// of POV-Ray's patterns through a colour map (solid, placed by its own transform).
 #pragma once
 
 #include <memory>
@@ -12,6 +12,7 @@
 #include "glint/shading/image_texture.h"
 #include "glint/shading/noise_texture.h"
 #include "glint/shading/pattern_texture.h"
+#include "glint/shading/projected_image.h"
 
 namespace glint {
 
@@ -24,10 +25,13 @@ struct CheckerTexture {
     CheckerSpace space = CheckerSpace::solid;
 };
 
-// A pattern is held by pointer: its transform would double the size of every material.
+// A pattern or a projected image is held by pointer: its transform would double the size of
+// every material.
 using PatternTexturePtr = std::shared_ptr<const PatternTexture>;
+using ProjectedImagePtr = std::shared_ptr<const ProjectedImage>;
 
-using Texture = std::variant<Color, CheckerTexture, ImageTexture, NoiseTexture, PatternTexturePtr>;
+using Texture = std::variant<Color, CheckerTexture, ImageTexture, NoiseTexture, PatternTexturePtr,
+                             ProjectedImagePtr>;
 
 // evaluate() for the kinds other than a constant colour.
 Color evaluate_pattern(const Texture& texture, const SurfacePoint& sp);

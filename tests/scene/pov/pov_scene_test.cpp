@@ -536,6 +536,32 @@ TEST(PovScene, PrismsSweepTheirSplinesOutlines) {
               std::string::npos);
 }
 
+// image_map: projected from the object's space through its pigment's transforms, or on the
+// surface's uv; filter and transmit all let light through; the file found beside the scene.
+TEST(PovScene, ImageMapsProjectTheirImage) {
+    const std::filesystem::path folder = std::filesystem::path(GLINT_SOURCE_DIR) / "tests/data/pov";
+    const ReadSandbox sandbox = make_read_sandbox(folder / "scene.pov");
+    const Scene s = parse_pov_scene(R"(
+        sphere { 0, 1 pigment { image_map { png "grid" map_type 1 once interpolate 2
+                                            transmit all 0.25 } scale 2 } translate x * 3 }
+        box { 0, 1 pigment { uv_mapping image_map { png "grid.png" } } })",
+                                    folder / "scene.pov", sandbox);
+    ASSERT_EQ(s.objects.size(), 2u);
+    const Material& projected = s.materials[s.objects[0].material];
+    const auto* image = std::get_if<ProjectedImagePtr>(&projected.color);
+    ASSERT_TRUE(image);
+    EXPECT_EQ((*image)->projection, ImageProjection::spherical);
+    EXPECT_TRUE((*image)->once);
+    EXPECT_EQ((*image)->image.filter, TextureFilter::bilinear);
+    EXPECT_EQ((*image)->image.image->level(0).width, 16);
+    const Point3 q = (*image)->to_projection(Point3{5, 0, 0});  // scaled by 2, then moved by 3
+    EXPECT_NEAR(q.x, 1, 1e-6);
+    EXPECT_FLOAT_EQ(projected.transmit, 0.25f);
+    const Material& on_uv = s.materials[s.objects[1].material];
+    ASSERT_TRUE(std::holds_alternative<ImageTexture>(on_uv.color));
+    EXPECT_EQ(std::get<ImageTexture>(on_uv.color).filter, TextureFilter::nearest);
+}
+
 // text is a union of prisms, a letter each, standing in the x-y plane from z = 0 to the
 // thickness; the font comes from beside the scene (here POV-Ray's timrom.ttf of tests/data/pov).
 TEST(PovScene, TextIsAPrismALetter) {

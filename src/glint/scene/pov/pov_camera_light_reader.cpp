@@ -6,12 +6,6 @@
 
 namespace glint {
 
-namespace {
-
-constexpr const char* kSeeCompatibility = "docs/povray.md lists what glint reads";
-
-}  // namespace
-
 PovCamera PovItemReader::camera(const PovToken& keyword) {
     parser_.expect("{", "after camera");
     PovCamera c;

@@ -15,8 +15,6 @@ namespace glint {
 
 namespace {
 
-constexpr const char* kSeeCompatibility = "docs/povray.md lists what glint reads";
-
 // The surfaces of a polynomial, unbounded but for their bounded_by or clipped_by objects.
 bool is_polynomial(const std::string& keyword) {
     return keyword == "quadric" || keyword == "cubic" || keyword == "quartic" || keyword == "poly";

@@ -15,6 +15,9 @@
 
 namespace glint {
 
+// The note under an error that names what glint does not read yet.
+inline constexpr const char* kSeeCompatibility = "docs/povray.md lists what glint reads";
+
 class PovItemReader {
 public:
     // Warnings go to `warnings` ("layered textures: only each object's bottom layer is used").
@@ -98,6 +101,8 @@ private:
     PovVector point(std::string_view what) { return parser_.finite_vector(what, 3); }
     float number(std::string_view what) { return float(parser_.finite_float(what)); }
     SceneError unsupported(const PovToken& token, std::string_view where);
+    // image_map { ... }, its keyword read: an image pigment (pov_image_map_reader.cpp).
+    PovPigment image_map(const PovToken& keyword);
     // Whether `name` is a pattern glint reads in a pigment (gradient, marble, ...).
     static bool is_pigment_pattern(std::string_view name);
     // gradient x, checker C1 C2, marble, ...: the pattern `name` starts, before its modifiers.

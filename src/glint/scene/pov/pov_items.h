@@ -15,6 +15,7 @@
 #include "glint/scene/pov/pov_value.h"
 #include "glint/shading/normal_pattern.h"
 #include "glint/shading/pattern.h"
+#include "glint/shading/projected_image.h"
 
 namespace glint {
 
@@ -42,16 +43,20 @@ struct PovColorMap {
 };
 
 // A solid colour (r, g, b, filter, transmit), or a pattern through a colour map (a checker's
-// two colours are the map at 0 and 1); or a pattern glint does not read yet, read past so that
-// only an object that uses it stops the scene.
+// two colours are the map at 0 and 1), or an image_map; or a pattern glint does not read yet,
+// read past so that only an object that uses it stops the scene.
 struct PovPigment {
-    enum class Kind { color, pattern, unsupported } kind = Kind::color;
+    enum class Kind { color, pattern, image, unsupported } kind = Kind::color;
     std::string pattern;                    // unsupported: its name
     PovPosition at;                         // unsupported: where it was written
     PovVector color = PovVector::of(0, 5);  // POV-Ray's default pigment is black
     PatternSpec spec;                       // pattern: glint's own
     PovColorMap map;                        // pattern: its colours
     Transform transform;                    // where the pattern lies, relative to the object
+    // image: the image and its projection (its transform unset: `transform` places it), or the
+    // image on the surface's uv (uv_mapping); `color` holds its filter and transmit all.
+    std::shared_ptr<const ProjectedImage> image;
+    bool uv_mapping = false;
 };
 
 // sky_sphere: pigments layered from the first up, seen in each direction as at the point of the

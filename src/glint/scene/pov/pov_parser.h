@@ -51,6 +51,7 @@ class PovParser {
 public:
     // Reads the scene file's text (already in `files` as file 0).
     PovParser(PovFiles& files, PovLanguageOptions options);
+    const PovLanguageOptions& options() const { return options_; }
 
     // --- Tokens ---
     // The next token after directives and macro calls, which act as it is taken.

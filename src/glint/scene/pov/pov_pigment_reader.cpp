@@ -204,8 +204,13 @@ bool PovItemReader::pattern_modifier(const PovToken& token, PovPigment& p) {
 PovPigment PovItemReader::pigment(const PovPigment& base) {
     parser_.expect("{", "after pigment");
     PovPigment p = base;
+    // uv_mapping: the pattern on the surface's uv, written first or among the modifiers.
+    std::optional<PovPosition> uv_mapping;
+    if (parser_.peek_item().is_word("uv_mapping")) uv_mapping = parser_.next().at;
     if (auto d = take_declared<PovPigment>()) {
         p = *d;
+    } else if (parser_.peek_item().is_word("image_map")) {
+        p = image_map(parser_.next());
     } else if (const PovToken& first = parser_.peek_item();
                first.kind == PovTokenKind::identifier && pattern_kind(first.text)) {
         p = pattern(parser_.next());
@@ -225,9 +230,13 @@ PovPigment PovItemReader::pigment(const PovPigment& base) {
     }
     for (;;) {
         const PovToken token = parser_.next();
-        if (token.is_symbol("}")) return p;
+        if (token.is_symbol("}")) break;
         if (const auto step = transform_step(token)) {
             p.transform = *step * p.transform;
+            continue;
+        }
+        if (token.is_word("uv_mapping")) {
+            uv_mapping = token.at;
             continue;
         }
         if (token.kind == PovTokenKind::identifier && pattern_modifier(token, p)) continue;
@@ -240,6 +249,16 @@ PovPigment PovItemReader::pigment(const PovPigment& base) {
         parser_.skip_to_closing_brace(token);
         return unread;
     }
+    if (uv_mapping && p.kind == PovPigment::Kind::image) p.uv_mapping = true;
+    if (uv_mapping && p.kind == PovPigment::Kind::pattern) {
+        // A pattern on the surface's uv: not read yet, an error where an object uses it.
+        PovPigment unread;
+        unread.kind = PovPigment::Kind::unsupported;
+        unread.pattern = "uv_mapping";
+        unread.at = *uv_mapping;
+        return unread;
+    }
+    return p;
 }
 
 }  // namespace glint

@@ -345,7 +345,8 @@ private:
                                   {"docs/povray.md lists what glint reads"});
         const std::optional<PovNormal>& normal = texture->normal;
         const bool tilted = normal && normal->unsupported.empty();
-        const bool placed = p.kind == PovPigment::Kind::pattern || tilted;
+        const bool projected = p.kind == PovPigment::Kind::image && !p.uv_mapping;
+        const bool placed = p.kind == PovPigment::Kind::pattern || projected || tilted;
         const MaterialKey key{texture, interior, placed ? frame.matrix().m : Matrix4::identity().m};
         if (const auto found = materials_.find(key); found != materials_.end())
             return found->second;
@@ -368,6 +369,12 @@ private:
                 pattern->colors.push_back({float(stop.at), rgb(stop.color)});
             pattern->to_pattern = (frame * p.transform).inverse();
             m.color = std::move(pattern);
+        } else if (projected) {
+            auto image = std::make_shared<ProjectedImage>(*p.image);
+            image->to_projection = (frame * p.transform).inverse();
+            m.color = std::move(image);
+        } else if (p.kind == PovPigment::Kind::image) {
+            m.color = p.image->image;  // on the surface's uv
         } else {
             m.color = rgb(p.color);
         }

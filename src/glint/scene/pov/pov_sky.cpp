@@ -15,6 +15,13 @@ namespace {
 // The pigment's five components (r, g, b, filter, transmit) at a point of its pattern's space:
 // a colour, or its pattern through its colour map.
 PovVector pigment_color(const PovPigment& pigment, Point3 pattern_p) {
+    if (pigment.kind == PovPigment::Kind::image) {
+        // Seen from the sphere's centre, whatever the projection's name.
+        const Color c = evaluate(*pigment.image, pattern_p);
+        PovVector v = pigment.color;
+        v[0] = c.r, v[1] = c.g, v[2] = c.b;
+        return v;
+    }
     if (pigment.kind != PovPigment::Kind::pattern) return pigment.color;
     const std::vector<PovColorStop>& stops = pigment.map.stops;
     const MapSpan span = span_at(stops, pattern_value(pigment.spec, pattern_p));
