@@ -536,6 +536,37 @@ TEST(PovScene, PrismsSweepTheirSplinesOutlines) {
               std::string::npos);
 }
 
+// mesh2: shared arrays where nothing has indices of its own; three corners a face where normals
+// or uvs do; a mesh for each texture of its texture_list, over the object's texture.
+TEST(PovScene, Mesh2SharesOrSplitsItsArrays) {
+    const Scene s = parse(R"(
+        mesh2 { vertex_vectors { 4, <0, 0, 0>, <1, 0, 0>, <1, 1, 0>, <0, 1, 0> }
+                normal_vectors { 4, z, z, z, <0, 1, -1> }
+                face_indices { 2, <0, 1, 2>, <0, 2, 3> } }
+        mesh2 { vertex_vectors { 4, <0, 0, 0>, <1, 0, 0>, <1, 1, 0>, <0, 1, 0> }
+                normal_vectors { 1, -z }
+                texture_list { 2, texture { pigment { rgb 1 } } texture { pigment { rgb 0 } } }
+                face_indices { 3, <0, 1, 2>, 1, <0, 2, 3>, 0, <1, 2, 3> }
+                normal_indices { 3, <0, 0, 0>, <0, 0, 0>, <0, 0, 0> }
+                pigment { rgb <1, 0, 0> } })");
+    ASSERT_EQ(s.objects.size(), 4u);
+    const MeshData& shared = *std::get<TriangleMesh>(s.objects[0].shape).data;
+    EXPECT_EQ(shared.positions.size(), 4u);
+    EXPECT_EQ(shared.triangles.size(), 2u);
+    EXPECT_NEAR(shared.normals[3].z, -1 / std::sqrt(2.0f), 1e-6);  // normalised as given
+    // By texture index: the object's own (no index) first, then 0 and 1; three corners a face.
+    const auto color_of = [&](std::size_t i) {
+        return std::get<Color>(s.materials[s.objects[i].material].color);
+    };
+    EXPECT_EQ(color_of(1), (Color{1, 0, 0}));
+    EXPECT_EQ(color_of(2), (Color{1, 1, 1}));
+    EXPECT_EQ(color_of(3), (Color{0, 0, 0}));
+    const MeshData& own = *std::get<TriangleMesh>(s.objects[1].shape).data;
+    EXPECT_EQ(own.positions.size(), 3u);
+    EXPECT_EQ(own.normals[0], (Normal3{0, 0, -1}));
+    EXPECT_EQ(s.warnings.size(), 0u);
+}
+
 // image_map: projected from the object's space through its pigment's transforms, or on the
 // surface's uv; filter and transmit all let light through; the file found beside the scene.
 TEST(PovScene, ImageMapsProjectTheirImage) {

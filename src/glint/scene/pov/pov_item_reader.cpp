@@ -24,15 +24,15 @@ bool is_shape(const std::string& keyword) {
     return keyword == "sphere" || keyword == "box" || keyword == "plane" || keyword == "cylinder" ||
            keyword == "cone" || keyword == "torus" || keyword == "disc" || keyword == "triangle" ||
            keyword == "smooth_triangle" || keyword == "polygon" || keyword == "mesh" ||
-           keyword == "prism" || keyword == "lathe" || keyword == "sor" || keyword == "text" ||
-           keyword == "julia_fractal" || is_polynomial(keyword);
+           keyword == "mesh2" || keyword == "prism" || keyword == "lathe" || keyword == "sor" ||
+           keyword == "text" || keyword == "julia_fractal" || is_polynomial(keyword);
 }
 
 // POV-Ray's objects that glint does not read yet: read past, so that only using one stops the
 // scene (include files declare many).
 bool is_unread_object(const std::string& keyword) {
     static const std::string_view kUnread[] = {
-        "bicubic_patch", "blob",       "height_field", "isosurface",   "lemon",         "mesh2",
+        "bicubic_patch", "blob",       "height_field", "isosurface",   "lemon",
         "ovus",          "parametric", "polynomial",   "sphere_sweep", "superellipsoid"};
     return std::find(std::begin(kUnread), std::end(kUnread), keyword) != std::end(kUnread);
 }
@@ -245,6 +245,8 @@ PovObject PovItemReader::object(const PovToken& keyword) {
         csg(keyword, object);
     } else if (keyword.text == "mesh") {
         object.shape = mesh(keyword);
+    } else if (keyword.text == "mesh2") {
+        mesh2(keyword, object);
     } else if (keyword.text == "text") {
         text(keyword, object);
     } else {

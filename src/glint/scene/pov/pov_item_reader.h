@@ -59,6 +59,9 @@ public:
 private:
     Shape shape(const PovToken& keyword);
     Shape mesh(const PovToken& keyword);
+    // mesh2 { arrays, faces }: its mesh, or a union of a mesh for each of its textures
+    // (pov_mesh2_reader.cpp).
+    void mesh2(const PovToken& keyword, PovObject& object);
     // pov_extrusion_reader.cpp: prism, lathe and sor, and text as a union of a prism a letter.
     Shape prism(const PovToken& keyword);
     Shape lathe(const PovToken& keyword);
