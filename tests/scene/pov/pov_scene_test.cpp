@@ -285,6 +285,20 @@ TEST(PovScene, ColoursAreDecodedWithTheAssumedGamma) {
               "      |                                 ^\n");
 }
 
+// A camera looking straight down its sky keeps its right vector as given, as POV-Ray does.
+TEST(PovScene, ACameraLookingAlongItsSkyKeepsItsRight) {
+    const Scene s = parse("camera { location 6 * y look_at 0 }");
+    const CameraSpec& c = s.camera;
+    EXPECT_NEAR(c.at.y - c.from.y, -1, 1e-6);
+    EXPECT_NEAR(std::abs(c.up.z), 1, 1e-6);  // across the view and the right vector, x
+    EXPECT_NEAR(c.up.x, 0, 1e-6);
+    ASSERT_EQ(s.warnings.size(), 1u);
+    EXPECT_NE(s.warnings[0].find("looks along its sky"), std::string::npos);
+    EXPECT_NE(error_of("camera { location 6 * y look_at 0 right y }")
+                  .find("camera sky and right are both parallel to its view"),
+              std::string::npos);
+}
+
 TEST(PovScene, CamerasAndLightsCanBeDeclaredAndPlacedAsObjects) {
     const Scene s = parse(R"(
         #version 3.7;

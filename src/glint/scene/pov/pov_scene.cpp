@@ -170,7 +170,17 @@ private:
             const double length_d = norm(direction), length_r = norm(right), length_u = norm(up);
             direction = scaled(d, length_d / norm(d));
             PovVector r = cross3(pov.sky, direction);
-            if (!(norm(r) > 0)) throw files_.error_at(pov.at, "camera sky is parallel to its view");
+            if (!(norm(r) > 1e-10 * norm(pov.sky) * norm(direction))) {
+                // Looking along the sky: as POV-Ray, the right vector as given stays.
+                r = right;
+                if (!(norm(cross3(r, direction)) > 1e-10 * norm(r) * norm(direction)))
+                    throw files_.error_at(pov.at,
+                                          "camera sky and right are both parallel to its view");
+                scene_.warnings.push_back(files_.name(pov.at.file) + ":" +
+                                          std::to_string(pov.at.line) +
+                                          ": the camera looks along its sky: its right vector "
+                                          "is kept as given");
+            }
             right = scaled(r, length_r / norm(r));
             if (handed < 0) right = scaled(right, -1);
             PovVector u = cross3(direction, right);
