@@ -95,6 +95,37 @@ bool read_png_rows(png_structp png, png_bytepp rows) {
     return true;
 }
 
+// libpng reading from memory: where the next byte is, and where the bytes end.
+struct MemoryReader {
+    std::span<const unsigned char> bytes;
+    std::size_t at = 0;
+};
+
+void read_from_memory(png_structp png, png_bytep out, png_size_t count) {
+    auto* reader = static_cast<MemoryReader*>(png_get_io_ptr(png));
+    if (count > reader->bytes.size() - reader->at) png_error(png, "file is truncated");
+    std::memcpy(out, reader->bytes.data() + reader->at, count);
+    reader->at += count;
+}
+
+// Calls setjmp: plain locals only. The header of a palette PNG, its indices unpacked to a byte
+// each; false on error, and *palette false for another colour type.
+bool read_palette_header(png_structp png, png_infop info, MemoryReader* reader, bool* palette,
+                         png_uint_32* width, png_uint_32* height) {
+    if (setjmp(png_jmpbuf(png))) return false;
+    png_set_read_fn(png, reader, read_from_memory);
+    png_set_user_limits(png, png_uint_32(kMaxImageDimension), png_uint_32(kMaxImageDimension));
+    png_read_info(png, info);
+    *palette = png_get_color_type(png, info) == PNG_COLOR_TYPE_PALETTE;
+    if (!*palette) return true;
+    png_set_packing(png);
+    png_set_interlace_handling(png);
+    png_read_update_info(png, info);
+    *width = png_get_image_width(png, info);
+    *height = png_get_image_height(png, info);
+    return true;
+}
+
 float decode_srgb16(std::uint16_t value) {
     static const std::vector<float> table = [] {
         std::vector<float> t(65536);
@@ -130,6 +161,32 @@ void write_png(const std::filesystem::path& path, const Image& image) {
         throw ImageError(path, std::string("cannot write PNG: ") + message.text);
     }
     close_written_file(std::move(file), path);
+}
+
+std::optional<PaletteImage> read_png_palette(std::span<const unsigned char> bytes,
+                                             const std::filesystem::path& name) {
+    if (bytes.size() < 8 || png_sig_cmp(bytes.data(), 0, 8) != 0) return std::nullopt;
+    PngMessage message;
+    PngReadStructs s;
+    s.png = png_create_read_struct(PNG_LIBPNG_VER_STRING, &message, on_png_error, on_png_warning);
+    if (s.png) s.info = png_create_info_struct(s.png);
+    if (!s.info) throw ImageError(name, "cannot read PNG: libpng could not start");
+    MemoryReader reader{bytes};
+    bool palette = false;
+    png_uint_32 width = 0, height = 0;
+    if (!read_palette_header(s.png, s.info, &reader, &palette, &width, &height))
+        throw ImageError(name, std::string("malformed PNG: ") + message.text);
+    if (!palette) return std::nullopt;
+    check_image_size(name, width, height);
+    if (png_get_rowbytes(s.png, s.info) != std::size_t(width))
+        throw ImageError(name, "malformed PNG: unexpected row layout of palette indices");
+    PaletteImage image{int(width), int(height),
+                       std::vector<std::uint8_t>(std::size_t(width) * height)};
+    std::vector<png_bytep> rows(height);
+    for (std::size_t y = 0; y < rows.size(); ++y) rows[y] = image.indices.data() + y * width;
+    if (!read_png_rows(s.png, rows.data()))
+        throw ImageError(name, std::string("malformed PNG: ") + message.text);
+    return image;
 }
 
 Image read_png(const std::filesystem::path& path) {

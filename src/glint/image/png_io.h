@@ -1,7 +1,11 @@
 // PNG files through libpng: 8-bit sRGB output (dithered), and input of any standard PNG.
 #pragma once
 
+#include <cstdint>
 #include <filesystem>
+#include <optional>
+#include <span>
+#include <vector>
 
 #include "glint/image/image.h"
 
@@ -15,5 +19,15 @@ void write_png(const std::filesystem::path& path, const Image& image);
 // The samples are taken as sRGB-encoded whatever gAMA or iCCP chunks say, and alpha is
 // dropped. A missing, truncated or corrupt file throws ImageError naming it.
 Image read_png(const std::filesystem::path& path);
+
+// A palette PNG's pixels as their palette indices (row by row from the top), for readers that
+// take the index as a number (POV-Ray's height fields); nothing for a PNG without a palette or
+// bytes that are no PNG. A malformed palette PNG throws ImageError naming `name`.
+struct PaletteImage {
+    int width = 0, height = 0;
+    std::vector<std::uint8_t> indices;
+};
+std::optional<PaletteImage> read_png_palette(std::span<const unsigned char> bytes,
+                                             const std::filesystem::path& name);
 
 }  // namespace glint

@@ -581,6 +581,32 @@ TEST(PovScene, Mesh2SharesOrSplitsItsArrays) {
     EXPECT_EQ(s.warnings.size(), 0u);
 }
 
+// height_field: grey levels as the file holds them (not linear light), or a palette image's
+// indices, over the unit square, the image's bottom row at z = 0; two triangles a cell.
+TEST(PovScene, HeightFieldsAreMeshesOfTheImagesLevels) {
+    const std::filesystem::path folder = std::filesystem::path(GLINT_SOURCE_DIR) / "tests/data/pov";
+    const ReadSandbox sandbox = make_read_sandbox(folder / "scene.pov");
+    const Scene s = parse_pov_scene(R"(
+        height_field { png "heights" }
+        height_field { png "heights-palette.png" smooth water_level 0.6 })",
+                                    folder / "scene.pov", sandbox);
+    ASSERT_EQ(s.objects.size(), 2u);
+    const MeshData& grey = *std::get<TriangleMesh>(s.objects[0].shape).data;
+    ASSERT_EQ(grey.positions.size(), 6u);
+    EXPECT_EQ(grey.triangles.size(), 4u);
+    // The bottom row (64, 32, 16) at z = 0, the top row (0, 128, 255) at z = 1.
+    EXPECT_EQ(grey.positions[0], (Point3{0, 64 / 255.0f, 0}));
+    EXPECT_NEAR(grey.positions[4].y, 128 / 255.0f, 1e-6);
+    EXPECT_NEAR(grey.positions[5].y, 1, 1e-5);
+    EXPECT_TRUE(grey.normals.empty());
+    const MeshData& indexed = *std::get<TriangleMesh>(s.objects[1].shape).data;
+    EXPECT_NEAR(indexed.positions[5].y, 255 / 256.0f, 1e-6);  // index 255 of 256
+    EXPECT_NEAR(indexed.positions[2].y, 16 / 256.0f, 1e-6);
+    EXPECT_EQ(indexed.normals.size(), 6u);
+    EXPECT_EQ(indexed.triangles.size(), 1u);  // the three wholly under water: gone
+    for (const Normal3& n : indexed.normals) EXPECT_GT(n.y, 0);
+}
+
 // image_map: projected from the object's space through its pigment's transforms, or on the
 // surface's uv; filter and transmit all let light through; the file found beside the scene.
 TEST(PovScene, ImageMapsProjectTheirImage) {

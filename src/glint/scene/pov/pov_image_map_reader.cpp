@@ -29,30 +29,37 @@ std::optional<std::string_view> extension_of(std::string_view type) {
 
 }  // namespace
 
-PovPigment PovItemReader::image_map(const PovToken& keyword) {
-    parser_.expect("{", "after image_map");
+Image PovItemReader::image_file(const PovToken& keyword, std::optional<PaletteImage>* palette) {
     std::string extension;
     if (const PovToken& type = parser_.peek_item(); type.kind == PovTokenKind::identifier) {
+        if (type.is_word("function"))
+            throw parser_.error_at(type, "an image made by a function is not supported yet",
+                                   {kSeeCompatibility});
         if (const auto e = extension_of(type.text)) {
             extension = *e;
             parser_.next();
         }
     }
     const PovToken name_token = parser_.peek();
-    std::string name = parser_.string_expression("as the image_map's file");
+    std::string name = parser_.string_expression("as the " + keyword.text + "'s file");
     if (std::filesystem::path(name).extension().empty()) name += extension;
     const auto [path, bytes] = parser_.read_file(keyword, name_token, name, "image");
     const ReadSandbox* sandbox = parser_.options().sandbox;
-    auto image = std::make_shared<ProjectedImage>();
     try {
         const auto* data = reinterpret_cast<const unsigned char*>(bytes.data());
-        image->image.image = std::make_shared<const MipMap>(
-            decode_texture_image(std::span(data, bytes.size()), path,
-                                 sandbox ? sandbox->limits.image_pixels : kMaxImagePixels));
+        if (palette) *palette = read_png_palette(std::span(data, bytes.size()), path);
+        return decode_texture_image(std::span(data, bytes.size()), path,
+                                    sandbox ? sandbox->limits.image_pixels : kMaxImagePixels);
     } catch (const ImageError& e) {
         throw parser_.error_at(name_token,
                                "cannot read the image " + quote(name) + ": " + e.detail);
     }
+}
+
+PovPigment PovItemReader::image_map(const PovToken& keyword) {
+    parser_.expect("{", "after image_map");
+    auto image = std::make_shared<ProjectedImage>();
+    image->image.image = std::make_shared<const MipMap>(image_file(keyword));
     // POV-Ray reads the nearest pixel unless asked to interpolate.
     image->image.filter = TextureFilter::nearest;
     PovPigment p;

@@ -24,16 +24,17 @@ bool is_shape(const std::string& keyword) {
     return keyword == "sphere" || keyword == "box" || keyword == "plane" || keyword == "cylinder" ||
            keyword == "cone" || keyword == "torus" || keyword == "disc" || keyword == "triangle" ||
            keyword == "smooth_triangle" || keyword == "polygon" || keyword == "mesh" ||
-           keyword == "mesh2" || keyword == "prism" || keyword == "lathe" || keyword == "sor" ||
-           keyword == "text" || keyword == "julia_fractal" || is_polynomial(keyword);
+           keyword == "mesh2" || keyword == "height_field" || keyword == "prism" ||
+           keyword == "lathe" || keyword == "sor" || keyword == "text" ||
+           keyword == "julia_fractal" || is_polynomial(keyword);
 }
 
 // POV-Ray's objects that glint does not read yet: read past, so that only using one stops the
 // scene (include files declare many).
 bool is_unread_object(const std::string& keyword) {
-    static const std::string_view kUnread[] = {
-        "bicubic_patch", "blob",       "height_field", "isosurface",   "lemon",
-        "ovus",          "parametric", "polynomial",   "sphere_sweep", "superellipsoid"};
+    static const std::string_view kUnread[] = {"bicubic_patch", "blob",         "isosurface",
+                                               "lemon",         "ovus",         "parametric",
+                                               "polynomial",    "sphere_sweep", "superellipsoid"};
     return std::find(std::begin(kUnread), std::end(kUnread), keyword) != std::end(kUnread);
 }
 
@@ -400,6 +401,7 @@ Shape PovItemReader::shape(const PovToken& keyword) {
     if (w == "lathe") return lathe(keyword);
     if (w == "sor") return sor(keyword);
     if (w == "julia_fractal") return julia_fractal(keyword);
+    if (w == "height_field") return height_field(keyword);
     throw unsupported(keyword, "as an object");
 }
 

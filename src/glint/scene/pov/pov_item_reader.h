@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "glint/geometry/spline_outlines.h"
+#include "glint/image/png_io.h"
 #include "glint/scene/pov/pov_items.h"
 #include "glint/scene/pov/pov_parser.h"
 
@@ -62,6 +63,7 @@ private:
     // mesh2 { arrays, faces }: its mesh, or a union of a mesh for each of its textures
     // (pov_mesh2_reader.cpp).
     void mesh2(const PovToken& keyword, PovObject& object);
+    Shape height_field(const PovToken& keyword);  // pov_height_field_reader.cpp
     // pov_extrusion_reader.cpp: prism, lathe and sor, and text as a union of a prism a letter.
     Shape prism(const PovToken& keyword);
     Shape lathe(const PovToken& keyword);
@@ -106,6 +108,9 @@ private:
     SceneError unsupported(const PovToken& token, std::string_view where);
     // image_map { ... }, its keyword read: an image pigment (pov_image_map_reader.cpp).
     PovPigment image_map(const PovToken& keyword);
+    // `[type] "file"` in an image_map or height_field: the image, found and read through the
+    // sandbox, in linear light; with `palette`, a palette PNG's indices too.
+    Image image_file(const PovToken& keyword, std::optional<PaletteImage>* palette = nullptr);
     // Whether `name` is a pattern glint reads in a pigment (gradient, marble, ...).
     static bool is_pigment_pattern(std::string_view name);
     // gradient x, checker C1 C2, marble, ...: the pattern `name` starts, before its modifiers.
