@@ -38,8 +38,8 @@ INSTANTIATE_TEST_SUITE_P(Scenes, PovReference,
                          testing::Values("basics", "camera", "clip", "csg", "finishes", "fog",
                                          "inverse", "language", "lights", "mesh", "patterns",
                                          "polynomials", "prism", "refraction", "shapes", "sky",
-                                         "text", "tiles", "lathe", "normals", "operands",
-                                         "images"));
+                                         "text", "tiles", "lathe", "normals", "operands", "images",
+                                         "mesh2", "heightfields"));
 
 }  // namespace
 }  // namespace glint
