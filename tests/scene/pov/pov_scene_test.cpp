@@ -607,6 +607,22 @@ TEST(PovScene, HeightFieldsAreMeshesOfTheImagesLevels) {
     for (const Normal3& n : indexed.normals) EXPECT_GT(n.y, 0);
 }
 
+// superellipsoid { <e, n> }: (|x|^(2/e) + |y|^(2/e))^(e/n) + |z|^(2/n) - 1 in the unit cube.
+TEST(PovScene, SuperellipsoidsAreImplicitSurfaces) {
+    const Scene s = parse("superellipsoid { <1, 1> } superellipsoid { <0.5, 2> }");
+    ASSERT_EQ(s.objects.size(), 2u);
+    const auto& sphere = std::get<ImplicitSurface>(s.objects[0].shape);
+    EXPECT_NEAR(sphere.f->value(1, 0, 0), 0, 1e-12);
+    EXPECT_NEAR(sphere.f->value(0.5, 0.5, 0), -0.5, 1e-12);  // a sphere: x^2 + y^2 + z^2 - 1
+    const auto& other = std::get<ImplicitSurface>(s.objects[1].shape);
+    // (0.5^4 + 0.5^4)^(1/4) + 0.5^1 - 1 = 0.125^0.25 - 0.5
+    EXPECT_NEAR(other.f->value(0.5, 0.5, 0.5), std::pow(0.125, 0.25) - 0.5, 1e-12);
+    EXPECT_TRUE(bounds(s.objects[1].shape).contains({1, 1, 1}));
+    EXPECT_NE(error_of("superellipsoid { <0, 1> }")
+                  .find("superellipsoid's e and n must be in [0.001, 1000]"),
+              std::string::npos);
+}
+
 // image_map: projected from the object's space through its pigment's transforms, or on the
 // surface's uv; filter and transmit all let light through; the file found beside the scene.
 TEST(PovScene, ImageMapsProjectTheirImage) {

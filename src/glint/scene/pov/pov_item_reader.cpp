@@ -24,17 +24,17 @@ bool is_shape(const std::string& keyword) {
     return keyword == "sphere" || keyword == "box" || keyword == "plane" || keyword == "cylinder" ||
            keyword == "cone" || keyword == "torus" || keyword == "disc" || keyword == "triangle" ||
            keyword == "smooth_triangle" || keyword == "polygon" || keyword == "mesh" ||
-           keyword == "mesh2" || keyword == "height_field" || keyword == "prism" ||
-           keyword == "lathe" || keyword == "sor" || keyword == "text" ||
+           keyword == "mesh2" || keyword == "height_field" || keyword == "superellipsoid" ||
+           keyword == "prism" || keyword == "lathe" || keyword == "sor" || keyword == "text" ||
            keyword == "julia_fractal" || is_polynomial(keyword);
 }
 
 // POV-Ray's objects that glint does not read yet: read past, so that only using one stops the
 // scene (include files declare many).
 bool is_unread_object(const std::string& keyword) {
-    static const std::string_view kUnread[] = {"bicubic_patch", "blob",         "isosurface",
-                                               "lemon",         "ovus",         "parametric",
-                                               "polynomial",    "sphere_sweep", "superellipsoid"};
+    static const std::string_view kUnread[] = {"bicubic_patch", "blob",        "isosurface",
+                                               "lemon",         "ovus",        "parametric",
+                                               "polynomial",    "sphere_sweep"};
     return std::find(std::begin(kUnread), std::end(kUnread), keyword) != std::end(kUnread);
 }
 
@@ -347,6 +347,7 @@ Shape PovItemReader::shape(const PovToken& keyword) {
         surface.region = Bounds3{};  // none yet: it comes with its bounded_by
         return surface;
     }
+    if (w == "superellipsoid") return superellipsoid(keyword);
     if (w == "torus") {
         const float major = number("as the torus's major radius");
         parser_.accept(",");

@@ -76,6 +76,7 @@ private:
     // `open` and `sturm` after a shape's points: whether it is open.
     bool open_and_sturm();
     Shape julia_fractal(const PovToken& keyword);
+    Shape superellipsoid(const PovToken& keyword);  // pov_superellipsoid_reader.cpp
     void text(const PovToken& keyword, PovObject& object);
     // The corners of triangles as read, three a triangle, with a smooth one's normals.
     struct MeshCorners {
