@@ -172,7 +172,8 @@ TEST(PovScene, WhatIsNotReadIsALocatedErrorNamingIt) {
               "    2 |   split_union on }\n"
               "      |   ^~~~~~~~~~~\n"
               "note: docs/povray.md lists what glint reads\n");
-    EXPECT_NE(error_of("blob { }").find("POV-Ray's blob is not supported yet"), std::string::npos);
+    EXPECT_NE(error_of("isosurface { }").find("POV-Ray's isosurface is not supported yet"),
+              std::string::npos);
     EXPECT_NE(error_of("sphere { 0, -1 }").find("sphere radius must be > 0"), std::string::npos);
     EXPECT_NE(error_of("sphere { 0, 1 pigment { mandel 20 } }")
                   .find("pigment pattern \"mandel\" is not supported yet"),
@@ -621,6 +622,33 @@ TEST(PovScene, SuperellipsoidsAreImplicitSurfaces) {
     EXPECT_NE(error_of("superellipsoid { <0, 1> }")
                   .find("superellipsoid's e and n must be in [0.001, 1000]"),
               std::string::npos);
+}
+
+// blob: threshold - the components' fields strength (1 - d^2/r^2)^2, d to a sphere's centre or
+// a cylinder's axis (round at its ends), each placed by its own transforms.
+TEST(PovScene, BlobsAreTheirFieldsAboveTheThreshold) {
+    const Scene s = parse(R"(
+        blob { threshold 0.6 sphere { 0, 1, 1 scale 2 translate x * 5 }
+               cylinder { <0, 0, 0>, <2, 0, 0>, 1, strength 1 } component 0.5, 1, <0, 3, 0>
+               sphere { <1, 0, 0>, 0.5, -1 } sturm })");
+    ASSERT_EQ(s.objects.size(), 1u);
+    const auto& blob = std::get<ImplicitSurface>(s.objects[0].shape);
+    const auto f = [&](double x, double y, double z) { return blob.f->value(x, y, z); };
+    EXPECT_NEAR(f(5, 0, 0), 0.6 - 1, 1e-12);                       // the scaled sphere's centre
+    EXPECT_NEAR(f(6, 0, 0), 0.6 - 0.5625, 1e-12);                  // halfway out of its radius 2
+    EXPECT_NEAR(f(0.5, 0.5, 0), 0.6 - 0.5625, 1e-12);              // half a radius off the axis
+    EXPECT_NEAR(f(-0.5, 0, 0), 0.6 - 0.5625, 1e-12);               // beyond the end a: round
+    EXPECT_NEAR(f(0, 3, 0), 0.6 - 0.5, 1e-12);                     // the old form: strength 0.5
+    EXPECT_NEAR(f(1, 0.25, 0), 0.6 - 0.87890625 + 0.5625, 1e-12);  // less the negative sphere's
+    const Bounds3 b = bounds(s.objects[0].shape);
+    EXPECT_LE(b.min.x, -1);
+    EXPECT_GE(b.max.x, 7);
+    EXPECT_NE(error_of("blob { sphere { 0, 1, -1 } }")
+                  .find("a blob needs a component of positive strength"),
+              std::string::npos);
+    EXPECT_NE(
+        error_of("blob { threshold 0 sphere { 0, 1, 1 } }").find("a blob's threshold must be > 0"),
+        std::string::npos);
 }
 
 // image_map: projected from the object's space through its pigment's transforms, or on the

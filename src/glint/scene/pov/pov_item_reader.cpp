@@ -25,16 +25,15 @@ bool is_shape(const std::string& keyword) {
            keyword == "cone" || keyword == "torus" || keyword == "disc" || keyword == "triangle" ||
            keyword == "smooth_triangle" || keyword == "polygon" || keyword == "mesh" ||
            keyword == "mesh2" || keyword == "height_field" || keyword == "superellipsoid" ||
-           keyword == "prism" || keyword == "lathe" || keyword == "sor" || keyword == "text" ||
-           keyword == "julia_fractal" || is_polynomial(keyword);
+           keyword == "blob" || keyword == "prism" || keyword == "lathe" || keyword == "sor" ||
+           keyword == "text" || keyword == "julia_fractal" || is_polynomial(keyword);
 }
 
 // POV-Ray's objects that glint does not read yet: read past, so that only using one stops the
 // scene (include files declare many).
 bool is_unread_object(const std::string& keyword) {
-    static const std::string_view kUnread[] = {"bicubic_patch", "blob",        "isosurface",
-                                               "lemon",         "ovus",        "parametric",
-                                               "polynomial",    "sphere_sweep"};
+    static const std::string_view kUnread[] = {"bicubic_patch", "isosurface", "lemon",       "ovus",
+                                               "parametric",    "polynomial", "sphere_sweep"};
     return std::find(std::begin(kUnread), std::end(kUnread), keyword) != std::end(kUnread);
 }
 
@@ -348,6 +347,7 @@ Shape PovItemReader::shape(const PovToken& keyword) {
         return surface;
     }
     if (w == "superellipsoid") return superellipsoid(keyword);
+    if (w == "blob") return blob(keyword);
     if (w == "torus") {
         const float major = number("as the torus's major radius");
         parser_.accept(",");

@@ -77,6 +77,7 @@ private:
     bool open_and_sturm();
     Shape julia_fractal(const PovToken& keyword);
     Shape superellipsoid(const PovToken& keyword);  // pov_superellipsoid_reader.cpp
+    Shape blob(const PovToken& keyword);            // pov_blob_reader.cpp
     void text(const PovToken& keyword, PovObject& object);
     // The corners of triangles as read, three a triangle, with a smooth one's normals.
     struct MeshCorners {
