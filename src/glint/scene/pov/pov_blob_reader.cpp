@@ -41,6 +41,9 @@ std::array<std::string, 3> frame_coordinates(const Transform& placement, const P
     return q;
 }
 
+// A radius whose square is positive and finite: the field divides by it.
+bool usable_radius(double r) { return r > 0 && r * r > 0 && std::isfinite(r * r); }
+
 struct BlobComponent {
     bool cylinder = false;
     PovVector a{}, b{};  // the centre; a cylinder's ends
@@ -66,7 +69,8 @@ Shape PovItemReader::blob(const PovToken& keyword) {
         }
         const PovToken at = parser_.peek();
         c.radius = parser_.finite_float("as the component's radius");
-        if (!(c.radius > 0)) throw parser_.error_at(at, "a blob component's radius must be > 0");
+        if (!usable_radius(c.radius))
+            throw parser_.error_at(at, "a blob component's radius must be > 0");
         parser_.accept(",");
         parser_.accept_word("strength");
         c.strength = parser_.finite_float("as the component's strength");
@@ -100,7 +104,7 @@ Shape PovItemReader::blob(const PovToken& keyword) {
             parser_.accept(",");
             const PovToken at = parser_.peek();
             c.radius = parser_.finite_float("as the component's radius");
-            if (!(c.radius > 0))
+            if (!usable_radius(c.radius))
                 throw parser_.error_at(at, "a blob component's radius must be > 0");
             parser_.accept(",");
             c.a = point("as the component's centre");
