@@ -150,6 +150,35 @@ objects: [{type: sphere, center: [0, 0, 0], radius: 1, material: stone}]
     EXPECT_EQ(maps.bump->strength, 0.02f);
 }
 
+// A CSG operand may show a material of its own (a name or a map); the others show the object's.
+TEST(YamlScene, CsgOperandsMayHaveTheirOwnMaterials) {
+    const Scene scene = parse(R"(
+camera: {from: [0, 0, -5], at: [0, 0, 0]}
+materials:
+  red: {color: [1, 0, 0]}
+objects:
+  - type: difference
+    material: {color: [0, 0, 1]}
+    objects:
+      - {type: box, min: [-1, -1, -1], max: [1, 1, 1]}
+      - {type: sphere, center: [0, 0, -1], radius: 0.6, material: red}
+      - {type: sphere, center: [0, 0, 1], radius: 0.6, material: {color: [0, 1, 0]}}
+)");
+    ASSERT_EQ(scene.objects.size(), 1u);
+    const auto& difference = std::get<Csg>(scene.objects[0].shape);
+    EXPECT_EQ(difference.material_a, 0u);  // the box: the object's own
+    const auto& cutters = std::get<Csg>(*difference.b);
+    const auto color_of = [&](std::uint32_t m) {
+        return std::get<Color>(scene.materials[m - 1].color);
+    };
+    EXPECT_EQ(color_of(cutters.material_a), (Color{1, 0, 0}));
+    EXPECT_EQ(color_of(cutters.material_b), (Color{0, 1, 0}));
+    // A ray along z meets the first cutter's hollow first: its material, red.
+    const auto hit = intersect(scene.objects[0].shape, Ray{{0, 0, -5}, {0, 0, 1}}, {0, kInfinity});
+    ASSERT_TRUE(hit.has_value());
+    EXPECT_EQ(color_of(operand_material(scene.objects[0].shape, *hit)), (Color{1, 0, 0}));
+}
+
 TEST(YamlScene, ImageSettingsAreRead) {
     const Scene scene = parse(std::string(kCamera) +
                               "image:\n  width: 64\n  height: 32\n  samples: 16\n"

@@ -8,14 +8,21 @@ namespace glint {
 
 namespace {
 
+using Operand = ShapeReader::Operand;
+
+Operand joined(CsgOperation op, const Operand& a, const Operand& b) {
+    Csg csg{op, a.shape, b.shape};
+    csg.material_a = a.material;
+    csg.material_b = b.material;
+    return {std::make_shared<const Shape>(std::move(csg))};
+}
+
 // Operands [begin, end) joined by `op` in a balanced tree: log2 of their number in levels.
-std::shared_ptr<const Shape> balanced(CsgOperation op,
-                                      const std::vector<std::shared_ptr<const Shape>>& operands,
-                                      std::size_t begin, std::size_t end) {
+Operand balanced(CsgOperation op, const std::vector<Operand>& operands, std::size_t begin,
+                 std::size_t end) {
     if (end - begin == 1) return operands[begin];
     const std::size_t middle = begin + (end - begin) / 2;
-    return std::make_shared<const Shape>(
-        Csg{op, balanced(op, operands, begin, middle), balanced(op, operands, middle, end)});
+    return joined(op, balanced(op, operands, begin, middle), balanced(op, operands, middle, end));
 }
 
 }  // namespace
@@ -34,21 +41,22 @@ Shape parse_csg(CsgOperation op, const MapReader& object, ShapeReader& shapes) {
             entry.value,
             object.what() + " needs at least 2 objects, got " + std::to_string(items.size()));
     }
-    std::vector<std::shared_ptr<const Shape>> operands;
+    std::vector<Operand> operands;
     operands.reserve(items.size());
     for (std::size_t i = 0; i < items.size(); ++i) {
+        const bool cutting = op == CsgOperation::clip && i > 0;
         operands.push_back(
             shapes.read_operand(items[i], {object.what(), "objects[" + std::to_string(i) + "]"},
-                                /*solid=*/op != CsgOperation::clip || i > 0));
+                                /*solid=*/op != CsgOperation::clip || i > 0, !cutting));
     }
-    if (op == CsgOperation::difference) {
-        return Csg{op, operands[0], balanced(CsgOperation::merge, operands, 1, operands.size())};
-    }
-    if (op == CsgOperation::clip) {
-        return Csg{op, operands[0],
-                   balanced(CsgOperation::intersection, operands, 1, operands.size())};
-    }
-    return *balanced(op, operands, 0, operands.size());
+    if (op == CsgOperation::difference)
+        return *joined(op, operands[0], balanced(CsgOperation::merge, operands, 1, operands.size()))
+                    .shape;
+    if (op == CsgOperation::clip)
+        return *joined(op, operands[0],
+                       balanced(CsgOperation::intersection, operands, 1, operands.size()))
+                    .shape;
+    return *balanced(op, operands, 0, operands.size()).shape;
 }
 
 // A defined shape placed again; `transform` moves it. The geometry is shared, not copied.

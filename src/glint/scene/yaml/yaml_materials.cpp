@@ -311,11 +311,14 @@ std::uint32_t MaterialTable::resolve(const MapEntry* entry, std::size_t object_i
         }
         return *default_;
     }
-    const YAML::Node& value = entry->value;
-    const Field field{"", "material", entry->key_node};
+    return resolve_given(*entry, "(object " + std::to_string(object_index) + ")");
+}
+
+std::uint32_t MaterialTable::resolve_given(const MapEntry& entry, const std::string& inline_name) {
+    const YAML::Node& value = entry.value;
+    const Field field{"", "material", entry.key_node};
     if (value.IsMap()) {
-        const std::string name = "(object " + std::to_string(object_index) + ")";
-        return add(read_material(source_, sandbox_, value, field, "material", name),
+        return add(read_material(source_, sandbox_, value, field, "material", inline_name),
                    text_position(value.Mark()));
     }
     if (!value.IsScalar()) throw type_error(source_, value, field, "a material name or map");

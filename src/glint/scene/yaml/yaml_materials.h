@@ -37,6 +37,8 @@ public:
     void read_named(const YAML::Node& section, const Field& field);
     // The material of objects[object_index]: `entry` is its "material" key, null when absent.
     std::uint32_t resolve(const MapEntry* entry, std::size_t object_index);
+    // The material a "material" key gives (a name, or a map then called `inline_name`).
+    std::uint32_t resolve_given(const MapEntry& entry, const std::string& inline_name);
 
     // Appends a material that no name refers to (a mesh file's own), read at `where`, and
     // returns its index.

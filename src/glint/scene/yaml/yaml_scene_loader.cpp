@@ -132,7 +132,7 @@ Scene read_scene(const YamlSource& source, const ReadSandbox& sandbox, const YAM
             result.sources.lights.push_back(where);
         }
     }
-    ShapeReader shapes(source, sandbox);
+    ShapeReader shapes(source, sandbox, materials);
     if (const MapEntry* define = section(scene, "define")) {
         shapes.read_definitions(define->value, scene.field("define"));
     }

@@ -106,12 +106,16 @@ ShapeReader::ObjectResult ShapeReader::read_shapes(const YAML::Node& node, const
     return {std::move(shapes), std::move(mesh_model), std::move(map)};
 }
 
-std::shared_ptr<const Shape> ShapeReader::read_operand(const YAML::Node& node, const Field& field,
-                                                       bool solid) {
+ShapeReader::Operand ShapeReader::read_operand(const YAML::Node& node, const Field& field,
+                                               bool solid, bool painted) {
     Result r = read(node, field, {"material"});
-    if (const MapEntry* material = r.map.find("material")) {
-        throw source_.error_at(material->key_node, "a CSG operand has no material of its own",
-                               {"the material of the CSG object applies to all its operands"});
+    std::uint32_t material = 0;
+    if (const MapEntry* given = r.map.find("material")) {
+        if (!painted)
+            throw source_.error_at(given->key_node,
+                                   "a clip's cutting shapes show no surface, so no material",
+                                   {"the material of the clip's first object paints it"});
+        material = materials_.resolve_given(*given, "(" + field.what + " " + field.key + ")") + 1;
     }
     if (solid && !is_solid(r.shape)) {
         std::vector<std::string> notes;
@@ -128,7 +132,7 @@ std::shared_ptr<const Shape> ShapeReader::read_operand(const YAML::Node& node, c
         throw source_.error_at(
             node, r.map.what() + " is not a closed solid, so it cannot be a CSG operand", notes);
     }
-    return std::make_shared<const Shape>(std::move(r.shape));
+    return {std::make_shared<const Shape>(std::move(r.shape)), material};
 }
 
 std::shared_ptr<const Shape> ShapeReader::definition(const MapReader& map,

@@ -12,14 +12,16 @@
 #include "glint/scene/mesh/model_loader.h"
 #include "glint/scene/read_sandbox.h"
 #include "glint/scene/yaml/yaml_map_reader.h"
+#include "glint/scene/yaml/yaml_materials.h"
 
 namespace glint {
 
 class ShapeReader {
 public:
-    // Mesh files must lie inside the sandbox, and so must the files they name.
-    ShapeReader(const YamlSource& source, const ReadSandbox& sandbox)
-        : source_(source), sandbox_(sandbox) {}
+    // Mesh files must lie inside the sandbox, and so must the files they name. CSG operands'
+    // own materials go to `materials`.
+    ShapeReader(const YamlSource& source, const ReadSandbox& sandbox, MaterialTable& materials)
+        : source_(source), sandbox_(sandbox), materials_(materials) {}
 
     const YamlSource& source() const { return source_; }
 
@@ -45,9 +47,13 @@ public:
                              std::vector<std::string_view> extra_keys);
 
     // A CSG operand: a shape map that must describe a closed solid, unless not `solid` (the
-    // surface a clip cuts).
-    std::shared_ptr<const Shape> read_operand(const YAML::Node& node, const Field& field,
-                                              bool solid = true);
+    // surface a clip cuts), and the material (index + 1) its part of the surface shows, 0 for
+    // the CSG's own; `painted`: whether its surface shows at all (not a clip's cutting shapes).
+    struct Operand {
+        std::shared_ptr<const Shape> shape;
+        std::uint32_t material = 0;
+    };
+    Operand read_operand(const YAML::Node& node, const Field& field, bool solid, bool painted);
 
     // The shape defined under the name that `key` of the map gives (an instance's `of`).
     std::shared_ptr<const Shape> definition(const MapReader& map, std::string_view key) const;
@@ -65,6 +71,7 @@ private:
 
     const YamlSource& source_;
     const ReadSandbox& sandbox_;
+    MaterialTable& materials_;
     std::map<std::pair<std::string, float>, std::shared_ptr<const Model>> models_;
     std::vector<std::string> warnings_;
     std::map<std::string, std::shared_ptr<const Shape>, std::less<>> definitions_;
