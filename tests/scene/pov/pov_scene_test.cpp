@@ -359,8 +359,9 @@ TEST(PovScene, PatternsReadTheirMapsWavesAndTurbulence) {
         sphere { 0, 1 pigment { gradient <0, 2, 0> color_map { Map } frequency 2 phase 0.5
                                 turbulence 0.3 octaves 3 omega 0.4 lambda 3 sine_wave } }
         sphere { 0, 1 pigment { marble color_map { [0 0.5 color rgb 0 color rgb 1] } } }
-        sphere { 0, 1 pigment { spotted } })");
-    ASSERT_EQ(s.objects.size(), 3u);
+        sphere { 0, 1 pigment { spotted } }
+        sphere { 0, 1 pigment { bumps } })");
+    ASSERT_EQ(s.objects.size(), 4u);
     const PatternTexture& gradient =
         *std::get<PatternTexturePtr>(s.materials[s.objects[0].material].color);
     EXPECT_EQ(gradient.spec.kind, PatternKind::gradient);
@@ -385,6 +386,8 @@ TEST(PovScene, PatternsReadTheirMapsWavesAndTurbulence) {
         *std::get<PatternTexturePtr>(s.materials[s.objects[2].material].color);
     EXPECT_EQ(spotted.spec.kind, PatternKind::bozo);
     EXPECT_EQ(spotted.colors.back().color, (Color{1, 1, 1}));  // POV-Ray's default map
+    EXPECT_EQ(std::get<PatternTexturePtr>(s.materials[s.objects[3].material].color)->spec.kind,
+              PatternKind::bozo);  // bumps as a pigment
 }
 
 // A pattern lies where its object puts it: transforms after the pigment move it, and a union's

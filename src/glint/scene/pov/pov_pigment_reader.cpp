@@ -29,6 +29,7 @@ std::optional<PatternKind> pattern_kind(std::string_view w) {
         {"onion", PatternKind::onion},       {"planar", PatternKind::planar},
         {"radial", PatternKind::radial},     {"spherical", PatternKind::spherical},
         {"spotted", PatternKind::bozo},  // the same function in POV-Ray
+        {"bumps", PatternKind::bozo},    // as a pigment, too
         {"wood", PatternKind::wood},
     };
     for (const Named& k : kKinds)
