@@ -89,8 +89,10 @@ TEST(PovScene, FinishesBecomePhongMaterials) {
         sphere { 0, 1 pigment { rgbt <1, 0, 0, 0.6> }
                  finish { ambient 0.2 diffuse 0.7 phong 0.5 phong_size 30 reflection 0.25 }
                  interior { ior 1.5 } }
-        sphere { 0, 1 finish { specular 0.4 roughness 0.02 } })");
-    ASSERT_EQ(s.materials.size(), 3u);
+        sphere { 0, 1 finish { specular 0.4 roughness 0.02 } }
+        sphere { 0, 1 finish { reflection { 0.1 0.8 metallic } } }
+        sphere { 0, 1 finish { reflection { 0.2, 0.6 fresnel } } })");
+    ASSERT_EQ(s.materials.size(), 5u);
     const Material& plain = s.materials[0];  // POV-Ray's defaults: black, ambient 0.1, diffuse 0.6
     EXPECT_EQ(std::get<Color>(plain.color), (Color{0, 0, 0}));
     EXPECT_FLOAT_EQ(plain.ka, 0.1f);
@@ -107,6 +109,9 @@ TEST(PovScene, FinishesBecomePhongMaterials) {
     EXPECT_FLOAT_EQ(glass.reflect, 0.25f);
     EXPECT_FLOAT_EQ(glass.transmit, 0.6f);
     EXPECT_FLOAT_EQ(glass.ior, 1.5f);
+    // reflection { min max }, with or without a comma: the maximum.
+    EXPECT_FLOAT_EQ(s.materials[3].reflect, 0.8f);
+    EXPECT_FLOAT_EQ(s.materials[4].reflect, 0.6f);
     const Material& shiny = s.materials[2];
     EXPECT_EQ(shiny.highlight, Highlight::blinn);
     EXPECT_FLOAT_EQ(shiny.shininess, 50);  // 1 / roughness

@@ -70,7 +70,7 @@ SceneError PovItemReader::unsupported(const PovToken& token, std::string_view wh
 
 double PovItemReader::optional_amount() { return amount_if_given().value_or(1); }
 
-std::optional<double> PovItemReader::amount_if_given() {
+bool PovItemReader::number_next() {
     const PovToken& ahead = parser_.peek_item();
     bool given = ahead.kind == PovTokenKind::number || ahead.is_symbol("(") ||
                  ahead.is_symbol("-") || ahead.is_symbol("+");
@@ -80,7 +80,11 @@ std::optional<double> PovItemReader::amount_if_given() {
         given = std::find(std::begin(kWords), std::end(kWords), ahead.text) != std::end(kWords) ||
                 (declared && std::holds_alternative<double>(*declared));
     }
-    if (!given) return std::nullopt;
+    return given;
+}
+
+std::optional<double> PovItemReader::amount_if_given() {
+    if (!number_next()) return std::nullopt;
     return parser_.finite_float("after the keyword");
 }
 
@@ -759,7 +763,8 @@ PovFinish PovItemReader::finish(const PovFinish& base) {
             if (parser_.accept("{")) {
                 // reflection { [min,] max [fresnel] [metallic] [falloff F] [exponent E] }
                 f.reflection = amount("in reflection");
-                if (parser_.accept(",")) f.reflection = amount("in reflection");
+                // The maximum after the minimum, with or without a comma between.
+                if (parser_.accept(",") || number_next()) f.reflection = amount("in reflection");
                 for (PovToken r = parser_.next(); !r.is_symbol("}"); r = parser_.next()) {
                     if (r.is_word("fresnel"))
                         f.fresnel = optional_amount() != 0;

@@ -51,7 +51,9 @@ public:
     std::optional<Transform> transform_step(const PovToken& keyword);
     // The float after a keyword that may take one (`metallic 0.5`, `hollow off`), else 1.
     double optional_amount();
-    // The float next, when one is (a number, an expression, a declared float).
+    // Whether a float is next (a number, an expression, a declared float, on or off), and
+    // that float, taken, when one is.
+    bool number_next();
     std::optional<double> amount_if_given();
     // The bounding box of an object as POV-Ray's min_extent and max_extent give it: huge where
     // it is unbounded, empty where it has no surface.
