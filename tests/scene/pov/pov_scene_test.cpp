@@ -120,7 +120,8 @@ TEST(PovScene, FinishesBecomePhongMaterials) {
 TEST(PovScene, TransformsCsgAndDeclaredObjects) {
     const Scene s = parse(R"(
         #declare Ball = sphere { 0, 1 pigment { rgb 1 } }
-        object { Ball scale 2 translate <0, 0, 5> no_shadow }
+        #declare Away = transform { translate <0, 0, 3> }
+        object { Ball scale 2 transform { Away translate z * 2 inverse translate z * 10 } no_shadow }
         union { sphere { 0, 1 } box { -1, 1 } translate x }
         difference { box { -1, 1 } sphere { 0, 1.2 } sphere { y, 0.5 } })");
     ASSERT_EQ(s.objects.size(), 4u);  // the union's two objects each on their own

@@ -164,6 +164,10 @@ std::optional<PovItem> PovItemReader::read(const PovToken& keyword) {
                 t = t.inverse();
                 continue;
             }
+            if (const auto named = declared<Transform>(step)) {  // transform { Declared }
+                t = *named * t;
+                continue;
+            }
             const auto s = transform_step(step);
             if (!s)
                 throw parser_.error_at(
