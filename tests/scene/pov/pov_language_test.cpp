@@ -213,6 +213,8 @@ TEST(PovDirectives, DeclareLocalUndefVersionAndArrays) {
         #declare A = array[2][3] { {1, 2, 3}, {4, 5, 6} };
         #declare A[1][0] = 40;
         #debug str(A[1][0] + A[0][2] + dimensions(A) + dimension_size(A, 2), 0, 0)
+        #declare P = array[3] { <1, 2> <3, 4>, <5, 6,> };  // commas optional, as in POV-Ray
+        #debug str(P[1].u + P[2].v, 0, 0)
         #declare S = "x";
         #undef S
         #ifndef (S) gone #end
@@ -221,7 +223,7 @@ TEST(PovDirectives, DeclareLocalUndefVersionAndArrays) {
         #debug B[0]
     )";
     const Outcome r = run(text);
-    EXPECT_EQ(r.messages, (std::vector<std::string>{"3.6", "48", "s"}));
+    EXPECT_EQ(r.messages, (std::vector<std::string>{"3.6", "48", "9", "s"}));
     EXPECT_EQ(r.tokens, std::vector<std::string>{"gone"});
 }
 

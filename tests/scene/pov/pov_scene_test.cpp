@@ -91,7 +91,7 @@ TEST(PovScene, FinishesBecomePhongMaterials) {
                  interior { ior 1.5 } }
         sphere { 0, 1 finish { specular 0.4 roughness 0.02 } }
         sphere { 0, 1 finish { reflection { 0.1 0.8 metallic } } }
-        sphere { 0, 1 finish { reflection { 0.2, 0.6 fresnel } } })");
+        sphere { 0, 1 finish { reflection { 0.2, 0.6 fresnel } diffuse 0.7, 0.2 } })");
     ASSERT_EQ(s.materials.size(), 5u);
     const Material& plain = s.materials[0];  // POV-Ray's defaults: black, ambient 0.1, diffuse 0.6
     EXPECT_EQ(std::get<Color>(plain.color), (Color{0, 0, 0}));
@@ -112,6 +112,9 @@ TEST(PovScene, FinishesBecomePhongMaterials) {
     // reflection { min max }, with or without a comma: the maximum.
     EXPECT_FLOAT_EQ(s.materials[3].reflect, 0.8f);
     EXPECT_FLOAT_EQ(s.materials[4].reflect, 0.6f);
+    EXPECT_FLOAT_EQ(s.materials[4].kd, 0.7f);  // the light from behind is read past
+    ASSERT_EQ(s.warnings.size(), 1u);
+    EXPECT_NE(s.warnings[0].find("diffuse light from behind"), std::string::npos);
     const Material& shiny = s.materials[2];
     EXPECT_EQ(shiny.highlight, Highlight::blinn);
     EXPECT_FLOAT_EQ(shiny.shininess, 50);  // 1 / roughness

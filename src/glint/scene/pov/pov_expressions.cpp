@@ -322,8 +322,9 @@ PovValue PovParser::vector_literal(const PovToken& open) {
     PovVector v;
     v.size = 0;
     // Commas between components may be left out, as in POV-Ray: `< -1 0 0 >`.
+    // A comma before the closing '>' is left over, as POV-Ray reads `<0.2, 0.1, 0.5,>`.
     const auto another = [this] {
-        if (accept(",")) return true;
+        if (accept(",")) return !peek().is_symbol(">");
         const PovToken& t = peek();
         return t.kind == PovTokenKind::number || t.kind == PovTokenKind::identifier ||
                t.is_symbol("(") || t.is_symbol("-") || t.is_symbol("+");
@@ -427,7 +428,7 @@ PovValue PovParser::array_declaration(const PovToken& keyword) {
         std::size_t filled = 0;
         const auto fill = [&](auto& self, std::size_t dim) -> void {
             for (std::size_t i = 0; i < array->sizes[dim]; ++i) {
-                if (i > 0) expect(",", "between array elements");
+                if (i > 0) accept(",");  // optional, as in POV-Ray
                 if (dim + 1 < array->sizes.size()) {
                     expect("{", "to open a row of the array");
                     self(self, dim + 1);

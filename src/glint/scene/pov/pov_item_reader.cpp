@@ -742,9 +742,15 @@ PovFinish PovItemReader::finish(const PovFinish& base) {
         if (token.is_symbol("}")) return f;
         if (w == "ambient")
             f.ambient = amount("after ambient");
-        else if (w == "diffuse")
+        else if (w == "diffuse") {
             f.diffuse = parser_.finite_float("after diffuse");
-        else if (w == "brilliance")
+            // POV-Ray 3.7's light through the back of a thin surface: `diffuse 0.7, 0.2`.
+            if (parser_.accept(",")) {
+                parser_.finite_float("as the diffuse light from behind");
+                read_past("diffuse light from behind (diffuse A, B)",
+                          "surfaces are lit from the side the light is on");
+            }
+        } else if (w == "brilliance")
             f.brilliance = parser_.finite_float("after brilliance");
         else if (w == "phong")
             f.phong = parser_.finite_float("after phong");
