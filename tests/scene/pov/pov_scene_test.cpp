@@ -545,8 +545,11 @@ TEST(PovScene, PrismsSweepTheirSplinesOutlines) {
         prism { linear_sweep linear_spline 1, -1, 10,
                 <-2, -2>, <2, -2>, <2, 2>, <-2, 2>, <-2, -2>,
                 <-1, -1>, <1, -1>, <1, 1>, <-1, 1>, <-1, -1> }
-        prism { bezier_spline 0, 1, 4, <0, 0>, <0, 1>, <1, 1>, <1, 0> open sturm })");
-    ASSERT_EQ(s.objects.size(), 2u);
+        prism { bezier_spline 0, 1, 4, <0, 0>, <0, 1>, <1, 1>, <1, 0> open sturm }
+        prism { -0.5, 0.5, (2 < 3) + 3 <-1, -0.3>, <1, 0>, <-1, 0.3>, <-1, -0.3> })");
+    ASSERT_EQ(s.objects.size(), 3u);
+    // A count is followed by its points: `4 <-1, ...` is not a comparison.
+    EXPECT_EQ(std::get<Prism>(s.objects[2].shape).profile->edges.size(), 3u);
     const auto& frame = std::get<Prism>(s.objects[0].shape);
     EXPECT_EQ(frame.bottom, -1);
     EXPECT_EQ(frame.top, 1);

@@ -109,6 +109,14 @@ double PovParser::finite_float(std::string_view what) {
 
 int PovParser::whole_number(std::string_view what, int min, int max) {
     const PovToken at = peek();
+    // A count is followed by the vectors it counts (`prism { 0, 1, 4 <-1, 0> ... }`): a '<'
+    // after it starts them rather than comparing.
+    struct Restore {
+        bool& flag;
+        bool was;
+        ~Restore() { flag = was; }
+    } restore{counting_, counting_};
+    counting_ = true;
     const double value = finite_float(what);
     if (!(value >= min && value <= max) || value != std::floor(value))
         throw error_at(at, "the number " + std::string(what) + " must be a whole number from " +
@@ -193,7 +201,7 @@ PovValue PovParser::comparison() {
               (s == ">" && !in_vector_)))
             return left;
         // `box { <0, 0, 0> <1, 1, 1> }`: after a vector, '<' starts the next value.
-        if (s == "<" && !std::holds_alternative<double>(left)) return left;
+        if (s == "<" && (!std::holds_alternative<double>(left) || counting_)) return left;
         const std::string which = next().text;
         const double a = float_of(left, at, "before '" + which + "'");
         const double b = float_of(additive(), at, "after '" + which + "'");
@@ -299,10 +307,11 @@ PovValue PovParser::primary() {
             return checked_string(token.text, token);
         case PovTokenKind::symbol:
             if (token.text == "(") {
-                const bool was_in_vector = in_vector_;
-                in_vector_ = false;
+                const bool was_in_vector = in_vector_, was_counting = counting_;
+                in_vector_ = counting_ = false;
                 PovValue value = expression();
                 in_vector_ = was_in_vector;
+                counting_ = was_counting;
                 expect(")", "to close '('");
                 return value;
             }

@@ -232,6 +232,7 @@ private:
     // One stream of rand() numbers per seed() call, as POV-Ray keeps them.
     std::vector<std::uint32_t> random_streams_;
     bool in_vector_ = false;  // '>' closes the vector rather than comparing
+    bool counting_ = false;   // in a count: '<' starts the vectors after it
     // A scene never writes a file: what it writes is kept here, by the name it gave, for its own
     // #read and #include, and dropped with the parse.
     std::map<std::string, std::string> written_;
