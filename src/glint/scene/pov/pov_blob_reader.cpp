@@ -41,9 +41,6 @@ std::array<std::string, 3> frame_coordinates(const Transform& placement, const P
     return q;
 }
 
-// A radius whose square is positive and finite: the field divides by it.
-bool usable_radius(double r) { return r > 0 && r * r > 0 && std::isfinite(r * r); }
-
 struct BlobComponent {
     bool cylinder = false;
     PovVector a{}, b{};  // the centre; a cylinder's ends
@@ -57,6 +54,14 @@ Shape PovItemReader::blob(const PovToken& keyword) {
     double threshold = 1;
     std::vector<BlobComponent> components;
     // sphere { <c>, r, [strength] s modifiers } and cylinder { <a>, <b>, r, [strength] s ... }.
+    // A radius whose square is positive and finite: the field divides by it.
+    const auto radius = [&] {
+        const PovToken at = parser_.peek();
+        const double r = parser_.finite_float("as the component's radius");
+        if (!(r > 0 && r * r > 0 && std::isfinite(r * r)))
+            throw parser_.error_at(at, "a blob component's radius must be > 0");
+        return r;
+    };
     const auto component = [&](const PovToken& kind) {
         parser_.expect("{", "after " + kind.text);
         BlobComponent c;
@@ -67,10 +72,7 @@ Shape PovItemReader::blob(const PovToken& keyword) {
             c.b = point("as the component's other end");
             parser_.accept(",");
         }
-        const PovToken at = parser_.peek();
-        c.radius = parser_.finite_float("as the component's radius");
-        if (!usable_radius(c.radius))
-            throw parser_.error_at(at, "a blob component's radius must be > 0");
+        c.radius = radius();
         parser_.accept(",");
         parser_.accept_word("strength");
         c.strength = parser_.finite_float("as the component's strength");
@@ -102,10 +104,7 @@ Shape PovItemReader::blob(const PovToken& keyword) {
             BlobComponent c;
             c.strength = parser_.finite_float("as the component's strength");
             parser_.accept(",");
-            const PovToken at = parser_.peek();
-            c.radius = parser_.finite_float("as the component's radius");
-            if (!usable_radius(c.radius))
-                throw parser_.error_at(at, "a blob component's radius must be > 0");
+            c.radius = radius();
             parser_.accept(",");
             c.a = point("as the component's centre");
             components.push_back(c);
