@@ -32,6 +32,16 @@ TEST(PovPolynomial, TermsComeByFallingPowersOfXThenYThenZ) {
     EXPECT_EQ(powers(4, 34), (std::vector<int>{0, 0, 0}));
 }
 
+// Numbers go into expression text in their shortest form that reads back exactly.
+TEST(PovPolynomial, NumbersReadBackExactly) {
+    EXPECT_EQ(expression_number(-0.25), "(-0.25)");
+    EXPECT_EQ(expression_number(0.1), "(0.1)");
+    EXPECT_EQ(expression_number(1), "(1)");
+    const double third = 1.0 / 3;
+    const std::string text = expression_number(third);
+    EXPECT_EQ(std::stod(text.substr(1, text.size() - 2)), third);
+}
+
 TEST(PovPolynomial, TextEvaluatesToThePolynomial) {
     // The torus of torus.pov: (x^2 + y^2 + z^2)^2 - 104 x^2 + 56 y^2 - 104 z^2 + 784, whose
     // tube (R^2 = 40, r^2 = 12) passes through (sqrt(40) + sqrt(12), 0, 0).

@@ -2,27 +2,21 @@
 // within its radius r of its centre (a sphere) or of its axis (a cylinder, whose ends are round),
 // and the surface where the fields add up to the threshold. Written as an expression, the
 // interval search of implicit surfaces finds it; components placed by their own transforms.
-#include <charconv>
 #include <cmath>
 
 #include "glint/geometry/implicit_surface.h"
 #include "glint/math/vector3d.h"
 #include "glint/scene/pov/pov_item_reader.h"
+#include "glint/scene/pov/pov_polynomial.h"
 
 namespace glint {
 
 namespace {
 
-std::string number_text(double v) {
-    char text[32];
-    const auto end = std::to_chars(text, text + sizeof text, v).ptr;
-    return "(" + std::string(text, end) + ")";
-}
-
 // An affine function of the scene point (x, y, z): c[0] x + c[1] y + c[2] z + c[3].
 std::string affine_text(const std::array<double, 4>& c) {
-    return "(" + number_text(c[0]) + "*x+" + number_text(c[1]) + "*y+" + number_text(c[2]) + "*z+" +
-           number_text(c[3]) + ")";
+    return "(" + expression_number(c[0]) + "*x+" + expression_number(c[1]) + "*y+" +
+           expression_number(c[2]) + "*z+" + expression_number(c[3]) + ")";
 }
 
 // The coordinates of the scene point along the unit axes e of the component's space, from its
@@ -116,7 +110,7 @@ Shape PovItemReader::blob(const PovToken& keyword) {
         }
     }
     // f = threshold - the fields' sum: the blob is where f < 0.
-    std::string source = number_text(threshold);
+    std::string source = expression_number(threshold);
     Bounds3 region;
     for (const BlobComponent& c : components) {
         const double r2 = c.radius * c.radius;
@@ -146,10 +140,11 @@ Shape PovItemReader::blob(const PovToken& keyword) {
         const auto q = frame_coordinates(c.transform, c.a, axes);
         // Along the axis, the distance beyond its ends: max(0, -u, u - length).
         const std::string along =
-            length > 0 ? "max(0,max(-" + q[0] + "," + q[0] + "-" + number_text(length) + "))"
+            length > 0 ? "max(0,max(-" + q[0] + "," + q[0] + "-" + expression_number(length) + "))"
                        : q[0];
         const std::string d2 = "(" + along + "^2+" + q[1] + "^2+" + q[2] + "^2)";
-        source += "-" + number_text(c.strength) + "*max(0,1-" + d2 + "/" + number_text(r2) + ")^2";
+        source += "-" + expression_number(c.strength) + "*max(0,1-" + d2 + "/" +
+                  expression_number(r2) + ")^2";
         // Only where some field is positive can the sum reach the threshold.
         if (c.strength > 0) region = merge(region, c.transform(own));
     }

@@ -52,10 +52,15 @@ Shape PovItemReader::height_field(const PovToken& keyword) {
     // Point (x, z) of the grid, z = 0 at the image's bottom row, over the unit square.
     const int w = image.width, h = image.height;
     // A palette image's heights are its indices, as POV-Ray reads them (index 255 is 255/256).
+    std::vector<float> heights(std::size_t(w) * std::size_t(h));
+    for (int z = 0; z < h; ++z)
+        for (int x = 0; x < w; ++x) {
+            const std::size_t pixel = std::size_t(h - 1 - z) * std::size_t(w) + std::size_t(x);
+            heights[std::size_t(z) * std::size_t(w) + std::size_t(x)] =
+                palette ? float(palette->indices[pixel]) / 256 : height_of(image.pixels[pixel]);
+        }
     const auto height = [&](int x, int z) {
-        if (palette)
-            return float(palette->indices[std::size_t(h - 1 - z) * std::size_t(w) + x]) / 256;
-        return height_of(image.at(x, h - 1 - z));
+        return heights[std::size_t(z) * std::size_t(w) + std::size_t(x)];
     };
     MeshData arrays;
     for (int z = 0; z < h; ++z)

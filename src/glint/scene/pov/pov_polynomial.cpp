@@ -1,10 +1,16 @@
 // The terms of POV-Ray's polynomials in its order, as text for glint's expression compiler.
 #include "glint/scene/pov/pov_polynomial.h"
 
-#include <cstdio>
+#include <charconv>
 #include <utility>
 
 namespace glint {
+
+std::string expression_number(double v) {
+    char text[32];
+    const auto end = std::to_chars(text, text + sizeof text, v).ptr;  // shortest exact form
+    return "(" + std::string(text, end) + ")";
+}
 
 int polynomial_term_count(int order) { return (order + 1) * (order + 2) * (order + 3) / 6; }
 
@@ -21,10 +27,8 @@ std::string polynomial_text(int order, const std::vector<double>& coefficients) 
     std::string text;
     for (int i = 0; i < int(coefficients.size()); ++i) {
         if (coefficients[std::size_t(i)] == 0) continue;
-        char number[32];
-        std::snprintf(number, sizeof number, "%.17g", coefficients[std::size_t(i)]);
         if (!text.empty()) text += " + ";
-        text += "(" + std::string(number) + ")";
+        text += expression_number(coefficients[std::size_t(i)]);
         const TermPowers p = polynomial_term(order, i);
         const std::pair<const char*, int> powers[] = {{"x", p.x}, {"y", p.y}, {"z", p.z}};
         for (const auto& [name, power] : powers) {

@@ -8,6 +8,9 @@
 
 namespace glint {
 
+// The number as expression text that reads back exactly, in parentheses: "(-0.25)".
+std::string expression_number(double v);
+
 // The number of terms of a polynomial of this order in x, y and z: (n+1)(n+2)(n+3)/6.
 int polynomial_term_count(int order);
 
