@@ -150,6 +150,23 @@ TEST(Quadric, FarRaysStayAccurate) {
     EXPECT_NEAR(length(to_vector(sp.p)), 1, 1e-6f);
 }
 
+// A paraboloid cut 10^5 out, as glint cuts POV-Ray's unbounded quadrics: the chord's middle lies
+// 10^5 away, so the equation's terms near 10^20 must not be rounded to float (every second ray
+// missed the surface then). Rays from near the surface find it where it is.
+TEST(Quadric, NearHitsInAFarBoxStayAccurate) {
+    //                 x^2 + z^2 - y = 0
+    const Quadric paraboloid{{1, 0, 1, 0, 0, 0, 0, -1, 0, 0},
+                             {{-1e5f, -1e5f, -1e5f}, {1e5f, 1e5f, 1e5f}}};
+    for (int i = 0; i < 100; ++i) {
+        // From (x0, 0, -3) up along y: the surface at y = x0^2 + 9.
+        const float x0 = -2 + 0.04f * float(i);
+        const Ray ray{{x0, 0, -3}, {0, 1, 0}};
+        const auto hit = paraboloid.intersect(ray, {});
+        ASSERT_TRUE(hit) << x0;
+        EXPECT_NEAR(hit->t, x0 * x0 + 9, 1e-4) << x0;
+    }
+}
+
 TEST(Quadric, BoundsAreTheClipBox) {
     EXPECT_EQ(kUnitSphere.bounds().min, (Point3{-2, -2, -2}));
     EXPECT_EQ(kUnitSphere.bounds().max, (Point3{2, 2, 2}));

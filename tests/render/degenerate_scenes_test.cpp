@@ -57,5 +57,31 @@ TEST(DegenerateScenes, RenderWithoutBadSamples) {
         kHeader + "  - {type: sphere, center: [0, 0, 0], radius: 1e30, material: white}\n", "huge");
 }
 
+// An object reaching far out (here a box 10^5 across, as an unbounded quadric cut far out) does
+// not set how far every ray leaves its surface: a small sphere's shadow stays on the floor
+// beside it. With the far box's 10^5 setting it, feelers started 2 units up and missed the
+// sphere.
+TEST(DegenerateScenes, AFarObjectLeavesRayOffsetsAlone) {
+    const std::string text = R"(
+camera: {from: [0, 1, -5], at: [0, 0, 0], fov: 50}
+materials:
+  white: {color: [0.9, 0.9, 0.9], kd: 0.8}
+lights:
+  - {type: point, position: [0, 10, 0], color: [1, 1, 1]}
+objects:
+  - {type: plane, point: [0, 0, 0], normal: [0, 1, 0], material: white}
+  - {type: sphere, center: [0, 0.6, 0], radius: 0.5, material: white}
+  - {type: box, min: [-1e5, -1e5, 1e5], max: [1e5, 1e5, 1.1e5], material: white}
+)";
+    const World world(parse_yaml_scene(text, "far.yaml"));
+    EXPECT_NEAR(world.ray_epsilon(Point3{0, 0, 0}), 1e-5f * 5, 1e-7f);  // the eye's magnitude
+    EXPECT_NEAR(world.ray_epsilon(Point3{1e5f, 0, 0}), 1, 1e-5f);       // far points their own
+    // Right under the sphere, the floor is in its shadow.
+    const Point3 floor{0, 0, 0};
+    const Vector3 up{0, 1, 0};
+    const Ray feeler = world.spawn_ray(floor, Normal3{0, 1, 0}, up);
+    EXPECT_TRUE(world.occluded(feeler, {0, 10}, kVisibleToShadowRays));
+}
+
 }  // namespace
 }  // namespace glint

@@ -89,10 +89,11 @@ std::optional<ShapeHit> Quadric::intersect(const Ray& ray, Interval t_range) con
     const auto grad = gradient(q, ox, oy, oz);
     const double beta = grad[0] * dx + grad[1] * dy + grad[2] * dz;
     const double gamma = value(q, ox, oy, oz);
-    const auto roots = solve_quadratic(static_cast<float>(alpha), static_cast<float>(beta),
-                                       static_cast<float>(gamma));
+    // In double: over a far box (an unbounded quadric cut 10^5 out) the discriminant is a small
+    // difference of numbers near 10^20, which float coefficients would turn into noise.
+    const auto roots = solve_quadratic_double(alpha, beta, gamma);
     if (!roots) return std::nullopt;
-    for (double s : {double{roots->t0}, double{roots->t1}}) {
+    for (double s : {roots->t0, roots->t1}) {
         // A Newton step in double removes the rounding of the float coefficients. It is kept
         // only when it lowers the residual: at a double root (a tangent ray) the slope vanishes.
         const auto residual = [&](double root) { return (alpha * root + beta) * root + gamma; };

@@ -20,10 +20,10 @@ struct Quadric {
 
     // The clip box (the surface part inside is not bounded more tightly).
     Bounds3 bounds() const;
-    // f(O + t R) = alpha t^2 + beta t + gamma is solved with solve_quadratic, keeping the roots
-    // whose points lie inside `clip`. The ray is first cut to the clip box (slabs) and its origin
-    // moved to the middle of that chord, in double, so the coefficients are of the box's size
-    // however far away the ray starts; each root gets one Newton step in double. Zero
+    // f(O + t R) = alpha t^2 + beta t + gamma is solved in double (solve_quadratic_double), keeping
+    // the roots whose points lie inside `clip`. The ray is first cut to the clip box (slabs) and
+    // its origin moved to the middle of that chord, in double, so the coefficients are of the box's
+    // size however far away the ray starts; each root gets one Newton step in double. Zero
     // second-order terms (a plane) or a ray along a ruling (alpha = 0) leave a linear equation.
     std::optional<ShapeHit> intersect(const Ray& ray, Interval t_range) const;
     // The point gets a Newton step onto f = 0 along the gradient. The normal is the gradient's

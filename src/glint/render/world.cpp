@@ -4,7 +4,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <span>
 #include <utility>
+#include <vector>
 
 #include "glint/accel/mesh_bvh.h"
 #include "glint/math/constants.h"
@@ -18,12 +20,25 @@ float max_abs_coordinate(Point3 p) {
     return std::max({std::abs(p.x), std::abs(p.y), std::abs(p.z)});
 }
 
-// The magnitude of coordinates where hits can occur: the finite geometry, or, when there is
-// none (a lone plane), the camera's position.
-float scene_scale(const Bounds3& bounds, Point3 eye) {
-    const float scale = bounds.is_empty() ? max_abs_coordinate(eye)
-                                          : std::max(max_abs_coordinate(bounds.min),
-                                                     max_abs_coordinate(bounds.max));
+// The magnitude of coordinates where hits commonly occur and eye rays start: the camera's
+// position and the finite objects'. An object reaching out a thousand times as far
+// as the median object (an unbounded quadric cut 10^5 out) is left out: its far hits get their
+// own magnitude in ray_epsilon, and it would otherwise push every ray's origin off by as much.
+float scene_scale(std::span<const Primitive> primitives, Point3 eye) {
+    std::vector<float> scales;
+    scales.reserve(primitives.size());
+    for (const Primitive& primitive : primitives) {
+        const Bounds3 b = bounds(primitive.shape);
+        if (!b.is_empty() && b.is_finite())
+            scales.push_back(std::max(max_abs_coordinate(b.min), max_abs_coordinate(b.max)));
+    }
+    float scale = max_abs_coordinate(eye);
+    if (scales.empty()) return std::max(scale, 1e-6f);
+    auto middle = scales.begin() + std::ptrdiff_t((scales.size() - 1) / 2);  // the lower median
+    std::nth_element(scales.begin(), middle, scales.end());
+    const float outlier = 1000 * std::max(*middle, scale);
+    for (const float s : scales)
+        if (s <= outlier) scale = std::max(scale, s);
     return std::max(scale, 1e-6f);
 }
 
@@ -81,7 +96,7 @@ World::World(Scene scene, AccelKind accel, ShadowAcceleration shadows)
                             " integrator draws no fog: fog is drawn by the whitted and "
                             "distributed integrators");
     aggregate_ = make_aggregate(accel, primitives_);
-    scene_scale_ = scene_scale(aggregate_->bounds(), camera_.eye());
+    scene_scale_ = scene_scale(primitives_, camera_.eye());
     const Bounds3 bounded = aggregate_->bounds();
     if (!bounded.is_empty() && bounded.is_finite()) {
         scene_radius_ = std::max(length(bounded.diagonal()) / 2, 1e-6f);
