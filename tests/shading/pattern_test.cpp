@@ -50,6 +50,59 @@ TEST(Pattern, GeometricKindsGivePovRaysValues) {
     expect_povray(twice, {0.9682f, 0.7182f, 0.4682f, 0.2182f, 0.9682f, 0.7182f, 0.4681f, 0.2181f});
 }
 
+// Mandelbrot and spiral patterns: mandel 20, spiral1 3 and spiral2 5 (through their default
+// triangle wave) as POV-Ray's eval_pigment gives them.
+TEST(Pattern, MandelAndSpiralsGivePovRaysValues) {
+    PatternSpec mandel = spec_of(PatternKind::mandel);
+    mandel.iterations = 20;
+    expect_povray(mandel, {0, 0.1f, 1, 0.4f, 1, 1, 1, 0.05f});
+    expect_povray(mandel, {0, 0, 1, 0.1f, 0.05f, 0.15f, 1, 0}, 0.6f);
+    PatternSpec spiral1 = spec_of(PatternKind::spiral1);
+    spiral1.arms = 3;
+    expect_povray(spiral1,
+                  {0.0578f, 0.8719f, 0.0709f, 0.9266f, 0.0991f, 0.0700f, 0.6644f, 0.2476f});
+    PatternSpec spiral2 = spec_of(PatternKind::spiral2);
+    spiral2.arms = 5;
+    expect_povray(spiral2,
+                  {0.3315f, 0.4945f, 0.4680f, 0.9972f, 0.0175f, 0.4945f, 0.9974f, 0.2869f});
+}
+
+// The wave patterns are rings round the wave sources: ripples' mean of sin(2 pi d) over them
+// mapped to [0, 1], waves' weighted by 1 / frequency, 0.2 (2.5 + mean) as POV-Ray maps them.
+TEST(Pattern, RipplesAndWavesAreRingsRoundTheSources) {
+    const Point3 p{0.3f, -1.2f, 2.1f};
+    double ripples = 0, waves = 0;
+    for (const WaveSource& s : wave_sources()) {
+        const double d = length(p - to_point(s.at));
+        ripples += std::sin(2 * std::acos(-1.0) * d);
+        waves += std::sin(2 * std::acos(-1.0) * d * s.frequency) / s.frequency;
+    }
+    EXPECT_EQ(wave_sources().size(), 10u);
+    EXPECT_NEAR(pattern_value(spec_of(PatternKind::ripples), p), 0.5 * (1 + ripples / 10), 1e-5);
+    EXPECT_NEAR(pattern_value(spec_of(PatternKind::waves), p), 0.2 * (2.5 + waves / 10), 1e-5);
+    for (const WaveSource& s : wave_sources()) {
+        EXPECT_NEAR(length(s.at), 1, 1e-6f);
+        EXPECT_GE(s.frequency, 0.01f);
+        EXPECT_LE(s.frequency, 1.01f);
+    }
+}
+
+// wrinkles sums noise in [0, 1] over ten octaves, halving: half that sum lies in [0, 1).
+TEST(Pattern, WrinklesStayInRange) {
+    std::mt19937 rng(7);
+    std::uniform_real_distribution<float> u(-50, 50);
+    float lowest = 1, highest = 0;
+    for (int i = 0; i < 2000; ++i) {
+        const float v = pattern_value(spec_of(PatternKind::wrinkles), {u(rng), u(rng), u(rng)});
+        lowest = std::min(lowest, v);
+        highest = std::max(highest, v);
+    }
+    EXPECT_GE(lowest, 0);
+    EXPECT_LT(highest, 1);
+    EXPECT_LT(lowest, 0.4f);  // it varies
+    EXPECT_GT(highest, 0.6f);
+}
+
 // The list patterns at points of their own: hexagon rgb 0, rgb 0.5, rgb 1 and brick rgb 0, rgb 1
 // (mortar 0, brick 1) as POV-Ray's eval_pigment gives them.
 TEST(Pattern, HexagonAndBrickGivePovRaysValues) {

@@ -50,5 +50,28 @@ TEST(Texture, OnlyUvCheckersAndImagesNeedUv) {
     EXPECT_EQ(uv_needed(NoiseTexture{}), Uv::skip);
 }
 
+// A pigment map: gradient x over [0, 2] (the map scaled by 2) blends red at 0 into, at 1, a
+// solid checker scaled by 0.5 inside the map's space, so of unit cells in the scene's. At x = 1
+// the pattern is 1/2: half red, half the checker there, whose cell (1, 0, 0) is odd: white.
+TEST(Texture, PigmentMapBlendsItsEntriesTextures) {
+    auto checker = std::make_shared<PatternTexture>();
+    checker->spec.kind = PatternKind::checker;
+    checker->colors = {{0, Color{0, 0, 0}}, {1, Color{1, 1, 1}}};
+    checker->to_pattern = Transform::scale(2, 2, 2) * Transform::scale(0.5f, 0.5f, 0.5f);
+    auto map = std::make_shared<PigmentMap>();
+    map->spec.kind = PatternKind::gradient;
+    map->entries = {{0, Color{1, 0, 0}}, {1, PatternTexturePtr(checker)}};
+    map->to_pattern = Transform::scale(0.5f, 0.5f, 0.5f);
+    const Texture texture = PigmentMapPtr(map);
+    EXPECT_EQ(evaluate(texture, at({0, 0.25f, 0.25f})), (Color{1, 0, 0}));
+    const Color half = evaluate(texture, at({1, 0.25f, 0.25f}));
+    EXPECT_FLOAT_EQ(half.r, 1);
+    EXPECT_FLOAT_EQ(half.g, 0.5f);
+    EXPECT_FLOAT_EQ(half.b, 0.5f);
+    // POV-Ray's average: the entries weighted by their values, 0 and 1: the checker alone.
+    map->average = true;
+    EXPECT_EQ(evaluate(texture, at({1, 0.25f, 0.25f})), (Color{1, 1, 1}));
+}
+
 }  // namespace
 }  // namespace glint

@@ -13,8 +13,6 @@ namespace glint {
 
 namespace {
 
-constexpr int kWaveSources = 10;
-
 // POV-Ray's vector noise spreads wider than glint's: under `bumps` with the same small amount, a
 // lit plane's brightness varies 1.19 times as much in POV-Ray's image (1.21 under wrinkles).
 constexpr float kBumpSpread = 1.2f;
@@ -22,40 +20,18 @@ constexpr float kBumpSpread = 1.2f;
 // POV-Ray's noise lies in [0, 1]; glint's Perlin noise in [-1, 1].
 float noise01(Point3 q) { return std::clamp(0.5f + 0.5f * perlin_noise(q), 0.0f, 1.0f); }
 
-struct WaveSource {
-    Vector3 at;
-    float frequency;
-};
-
-// Ten points spread evenly over the unit sphere (a Fibonacci spiral) and POV-Ray's own wave
-// frequencies in [0.01, 1.01], from its linear congruential generator seeded at -560851967.
-const std::array<WaveSource, kWaveSources>& wave_sources() {
-    static const auto sources = [] {
-        std::array<WaveSource, kWaveSources> s{};
-        std::uint32_t next = std::uint32_t(-560851967);
-        const double golden = kPi * (3 - std::sqrt(5.0));
-        for (int i = 0; i < kWaveSources; ++i) {
-            const double y = 1 - (i + 0.5) * 2 / kWaveSources, r = std::sqrt(1 - y * y);
-            s[i].at = {float(r * std::cos(golden * i)), float(y), float(r * std::sin(golden * i))};
-            next = next * 1812433253u + 12345u;
-            s[i].frequency = float(double((next >> 16) & 0x7fff) / 32767 + 0.01);
-        }
-        return s;
-    }();
-    return sources;
-}
-
 // Rings round each source: sin(2 pi (d f + phase)) times amplitude along the way from it.
 Vector3 rings(const NormalPattern& np, Point3 q, bool own_frequencies) {
     Vector3 sum;
-    for (const WaveSource& source : wave_sources()) {
+    const auto sources = wave_sources();
+    for (const WaveSource& source : sources) {
         const Vector3 away = q - to_point(source.at);
         float d = length(away);
         if (d == 0) d = 1;
         const float f = own_frequencies ? source.frequency : 1;
         const double phase = double(d) * np.pattern.frequency * f + np.pattern.phase;
         const float wave = float(std::sin(2 * kPi * (phase - std::floor(phase))));
-        sum += away * (wave / f / (d * kWaveSources));
+        sum += away * (wave / f / (d * float(sources.size())));
     }
     return sum;
 }

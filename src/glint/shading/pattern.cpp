@@ -3,6 +3,7 @@
 #include "glint/shading/pattern.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdint>
 
@@ -87,6 +88,47 @@ float brick(const PatternSpec& spec, Point3 p) {
     return 1;
 }
 
+// POV-Ray's rings round the wave sources: the mean of sin(2 pi (d f + phase)) / f over them, f
+// the source's frequency (waves) or 1 (ripples).
+float rings(const PatternSpec& spec, Point3 p, bool own_frequencies) {
+    double sum = 0;
+    const auto sources = wave_sources();
+    for (const WaveSource& source : sources) {
+        float d = length(p - to_point(source.at));
+        if (d == 0) d = 1;
+        const double f = own_frequencies ? source.frequency : 1;
+        sum += std::sin(2 * kPi * (d * spec.frequency * f + spec.phase)) / f;
+    }
+    return float(sum / double(sources.size()));
+}
+
+// POV-Ray's Mandelbrot pattern: z <- z^2 + c from z = c = x + iy; outside, the iterations it
+// took to leave the circle of radius 2 over the most; inside, 1.
+float mandel(const PatternSpec& spec, Point3 p) {
+    const double cx = p.x, cy = p.y;
+    double a = cx, b = cy;
+    for (int i = 0; i < spec.iterations; ++i) {
+        const double a2 = a * a, b2 = b * b;
+        b = 2 * a * b + cy;
+        a = a2 - b2 + cx;
+        if (a * a + b * b > 4) return float(i) / float(spec.iterations);
+    }
+    return 1;
+}
+
+// The angle round z from -y, over a turn, as POV-Ray's spirals measure it.
+float turn_round_z(float x, float y, float rad) {
+    if (rad == 0) return 0;
+    const float half_pi = 0.5f * kPi;
+    const float phi = x < 0 ? 3 * half_pi - std::asin(y / rad) : half_pi + std::asin(y / rad);
+    return phi / (2 * kPi);
+}
+
+float triangle_wave(float v) {
+    const float f = v - std::floor(v);
+    return f <= 0.5f ? 2 * f : 2 * (1 - f);
+}
+
 float raw_value(const PatternSpec& spec, Point3 p) {
     const float x = p.x, y = p.y, z = p.z;
     switch (spec.kind) {
@@ -129,6 +171,27 @@ float raw_value(const PatternSpec& spec, Point3 p) {
             return std::max(0.0f, 1 - length(to_vector(p)));
         case PatternKind::wood:
             return std::sqrt(x * x + y * y);
+        case PatternKind::mandel:
+            return mandel(spec, p);
+        case PatternKind::ripples:
+            return 0.5f * (1 + rings(spec, p, false));
+        case PatternKind::waves:
+            return 0.2f * (2.5f + rings(spec, p, true));
+        case PatternKind::spiral1:
+        case PatternKind::spiral2: {
+            const float rad = std::sqrt(x * x + y * y);
+            const float s = z + rad + spec.arms * turn_round_z(x, y, rad);
+            return spec.kind == PatternKind::spiral1 ? s : triangle_wave(rad) + triangle_wave(s);
+        }
+        case PatternKind::wrinkles: {
+            // Noise in [0, 1], as POV-Ray's.
+            float sum = 0, weight = 1, scale = 1;
+            for (int i = 0; i < 10; ++i, weight *= 0.5f, scale *= 2)
+                sum +=
+                    weight * std::clamp(0.5f + 0.5f * perlin_noise(to_point(to_vector(p) * scale)),
+                                        0.0f, 1.0f);
+            return sum / 2;
+        }
     }
     return 0;
 }
@@ -153,14 +216,34 @@ float shaped(const PatternSpec& spec, float f) {
 
 }  // namespace
 
+std::span<const WaveSource> wave_sources() {
+    // The frequencies from POV-Ray's linear congruential generator seeded at -560851967.
+    static const auto sources = [] {
+        constexpr int kCount = 10;
+        std::array<WaveSource, kCount> s{};
+        std::uint32_t next = std::uint32_t(-560851967);
+        const double golden = kPi * (3 - std::sqrt(5.0));
+        for (int i = 0; i < kCount; ++i) {
+            const double y = 1 - (i + 0.5) * 2 / kCount, r = std::sqrt(1 - y * y);
+            s[i].at = {float(r * std::cos(golden * i)), float(y), float(r * std::sin(golden * i))};
+            next = next * 1812433253u + 12345u;
+            s[i].frequency = float(double((next >> 16) & 0x7fff) / 32767 + 0.01);
+        }
+        return s;
+    }();
+    return sources;
+}
+
 bool is_list_pattern(PatternKind kind) {
     return kind == PatternKind::checker || kind == PatternKind::brick ||
            kind == PatternKind::hexagon;
 }
 
 PatternWave default_wave(PatternKind kind) {
-    return kind == PatternKind::marble || kind == PatternKind::wood ? PatternWave::triangle
-                                                                    : PatternWave::ramp;
+    return kind == PatternKind::marble || kind == PatternKind::wood ||
+                   kind == PatternKind::spiral1 || kind == PatternKind::spiral2
+               ? PatternWave::triangle
+               : PatternWave::ramp;
 }
 
 Point3 turbulent(const PatternSpec& spec, Point3 p) {

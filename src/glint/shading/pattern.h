@@ -5,6 +5,8 @@
 // detail from POV-Ray's.
 #pragma once
 
+#include <span>
+
 #include "glint/math/vector.h"
 
 namespace glint {
@@ -21,12 +23,18 @@ enum class PatternKind {
     granite,      // turbulent noise (noise.h)
     hexagon,      // 0, 1/2 or 1: hexagons of side 1 in the x-z plane, three colours
     leopard,      // (sin x + sin y + sin z)^2 / 9
+    mandel,       // the Mandelbrot set in the x-y plane: escape iterations over the most, 1 inside
     marble,       // x, by default through the triangle wave
     onion,        // |p|
     planar,       // 1 - |y|
     radial,       // the angle round y, clockwise seen from above, over a turn
+    ripples,      // rings round POV-Ray's ten wave sources, all of one frequency
     spherical,    // 1 - |p|
+    spiral1,      // z + the distance from z + arms x the angle round it over a turn
+    spiral2,      // the same through triangle waves, crossed
+    waves,        // rings round the wave sources, each of its own frequency and amplitude
     wood,         // sqrt(x^2 + y^2), by default through the triangle wave
+    wrinkles,     // noise summed over ten octaves, each half as strong and twice as fine
 };
 
 // How the value, after frequency and phase and taken modulo 1 (f), becomes the map's index.
@@ -54,13 +62,24 @@ struct PatternSpec {
     // mortar's width, both with their mortar; POV-Ray's defaults.
     Vector3 brick_size{8, 3, 4.5f};
     float mortar = 0.5f;
+    int iterations = 1;  // mandel: the most iterations, >= 1
+    float arms = 1;      // spiral1, spiral2
 };
+
+// The centres of POV-Ray's waves and ripples: ten points spread evenly over the unit sphere (a
+// Fibonacci spiral, glint's own) with POV-Ray's own wave frequencies in [0.01, 1.01].
+struct WaveSource {
+    Vector3 at;
+    float frequency;
+};
+std::span<const WaveSource> wave_sources();
 
 // Whether the pattern picks one of a few colours, as POV-Ray's list patterns do: its value is
 // not shaped by a wave, frequency or phase.
 bool is_list_pattern(PatternKind kind);
 
-// POV-Ray's default wave for the kind: triangle for marble and wood, ramp for the others.
+// POV-Ray's default wave for the kind: triangle for marble, wood and the spirals, ramp for the
+// others.
 PatternWave default_wave(PatternKind kind);
 
 // The point p moved by the spec's turbulence (p itself without turbulence).

@@ -38,9 +38,26 @@ struct Evaluate {
         return glint::evaluate(*pattern, sp.p);
     }
     Color operator()(const ProjectedImagePtr& image) const { return glint::evaluate(*image, sp.p); }
+    Color operator()(const PigmentMapPtr& map) const { return glint::evaluate(*map, sp); }
 };
 
 }  // namespace
+
+Color evaluate(const PigmentMap& map, const SurfacePoint& sp) {
+    if (map.average) {
+        Color sum{0, 0, 0};
+        float weights = 0;
+        for (const PigmentMap::Entry& e : map.entries) {
+            sum += evaluate(e.texture, sp) * e.at;
+            weights += e.at;
+        }
+        return weights != 0 ? sum * (1 / weights) : Color{0, 0, 0};
+    }
+    const MapSpan span = span_at(map.entries, pattern_value(map.spec, map.to_pattern(sp.p)));
+    const Color lower = evaluate(map.entries[span.lower].texture, sp);
+    if (span.weight == 0) return lower;
+    return lower * (1 - span.weight) + evaluate(map.entries[span.upper].texture, sp) * span.weight;
+}
 
 Color evaluate_pattern(const Texture& texture, const SurfacePoint& sp) {
     return std::visit(Evaluate{sp}, texture);

@@ -1,11 +1,13 @@
 // Colour sources for materials: a constant colour, a checker pattern, either painted on the
 // surface's uv coordinates (2D) or carved out of space (3D, a solid texture), an image on the
-// surface's uv or projected through space, a noise pattern through a colour ramp (solid), or one
-// of POV-Ray's patterns through a colour map (solid, placed by its own transform).
+// surface's uv or projected through space, a noise pattern through a colour ramp (solid), one
+// of POV-Ray's patterns through a colour map (solid, placed by its own transform), or such a
+// pattern choosing between other colour sources (POV-Ray's pigment_map).
 #pragma once
 
 #include <memory>
 #include <variant>
+#include <vector>
 
 #include "glint/geometry/surface_point.h"
 #include "glint/math/color.h"
@@ -29,9 +31,28 @@ struct CheckerTexture {
 // every material.
 using PatternTexturePtr = std::shared_ptr<const PatternTexture>;
 using ProjectedImagePtr = std::shared_ptr<const ProjectedImage>;
+struct PigmentMap;
+using PigmentMapPtr = std::shared_ptr<const PigmentMap>;
 
 using Texture = std::variant<Color, CheckerTexture, ImageTexture, NoiseTexture, PatternTexturePtr,
-                             ProjectedImagePtr>;
+                             ProjectedImagePtr, PigmentMapPtr>;
+
+// A pattern choosing between colour sources, as POV-Ray's pigment_map: the two entries either
+// side of the pattern's value blended as a colour map's colours are. Or, as POV-Ray's
+// `average`, every entry's colour weighted by its value. Each entry's own pattern is placed by
+// its own transform, which includes the map's.
+struct PigmentMap {
+    struct Entry {
+        float at = 0;  // the pattern's value, or the weight when averaged
+        Texture texture;
+    };
+    PatternSpec spec;
+    std::vector<Entry> entries;  // sorted by `at`, at least one
+    bool average = false;
+    Transform to_pattern;  // scene space to the pattern's
+};
+
+Color evaluate(const PigmentMap& map, const SurfacePoint& sp);
 
 // evaluate() for the kinds other than a constant colour.
 Color evaluate_pattern(const Texture& texture, const SurfacePoint& sp);

@@ -184,8 +184,8 @@ TEST(PovScene, WhatIsNotReadIsALocatedErrorNamingIt) {
     EXPECT_NE(error_of("isosurface { }").find("POV-Ray's isosurface is not supported yet"),
               std::string::npos);
     EXPECT_NE(error_of("sphere { 0, -1 }").find("sphere radius must be > 0"), std::string::npos);
-    EXPECT_NE(error_of("sphere { 0, 1 pigment { mandel 20 } }")
-                  .find("pigment pattern \"mandel\" is not supported yet"),
+    EXPECT_NE(error_of("sphere { 0, 1 pigment { julia <0.3, 0.4> 20 } }")
+                  .find("pigment pattern \"julia\" is not supported yet"),
               std::string::npos);
 }
 
@@ -243,7 +243,7 @@ TEST(PovScene, ListPatternsOfNormalsLeaveTheSurfaceSmooth) {
 // As an include file declares what a scene may never use: only what is used stops the scene.
 TEST(PovScene, UnreadDeclarationsStopOnlyTheObjectsThatUseThem) {
     const Scene s = parse(R"(
-        #declare Fractal = pigment { mandel 20 color_map { [0 rgb 0] [1 rgb 1] } }
+        #declare Fractal = pigment { julia <0.3, 0.4> 20 color_map { [0 rgb 0] [1 rgb 1] } }
         #declare Map = color_map { [0 rgb 0] [1 rgb 1] }
         #declare Quilts = normal { quilted 0.5 control0 1 }
         sphere { 0, 1 pigment { rgb 1 } normal { Quilts } })");
@@ -251,9 +251,11 @@ TEST(PovScene, UnreadDeclarationsStopOnlyTheObjectsThatUseThem) {
     ASSERT_EQ(s.warnings.size(), 1u);
     EXPECT_EQ(s.warnings[0],
               "normal pattern \"quilted\" is not supported yet: surfaces with it stay smooth");
-    EXPECT_NE(error_of("#declare Cloudy = pigment { mandel 9 }\nsphere { 0, 1 pigment { Cloudy } }")
-                  .find("scene.pov:1:29: error: pigment pattern \"mandel\" is not supported yet"),
-              std::string::npos);
+    EXPECT_NE(
+        error_of(
+            "#declare Cloudy = pigment { julia <0.3, 0.4> 9 }\nsphere { 0, 1 pigment { Cloudy } }")
+            .find("scene.pov:1:29: error: pigment pattern \"julia\" is not supported yet"),
+        std::string::npos);
 }
 
 TEST(PovScene, DeprecatedDeclarationsAndMetallicAmounts) {
@@ -445,6 +447,72 @@ TEST(PovScene, SkySpheresBecomeTheSkyImage) {
     EXPECT_NE(error_of("sky_sphere { sphere { 0, 1 } }")
                   .find("\"sphere\" is not supported in a sky_sphere yet"),
               std::string::npos);
+}
+
+// pigment_map: a pattern choosing between pigments, each placed inside the map's space; the
+// same in a sky; average; a list pattern of pigments; and the errors.
+TEST(PovScene, PigmentMapsChooseBetweenPigments) {
+    const Scene s = parse(R"(
+        #version 3.7;
+        #declare Cells = pigment { checker rgb 0, rgb 1 scale 0.5 }
+        sphere { 0, 1 pigment { gradient x pigment_map { [0 rgb <1, 0, 0>] [1 Cells] } scale 2 } }
+        sphere { 0, 1 pigment { average pigment_map { [1 rgb <1, 0, 0>] [3 rgb <0, 0, 1>] } } }
+        sphere { 0, 1 pigment { checker pigment { rgb <1, 1, 0> }, pigment { gradient y } } }
+        sky_sphere { pigment { gradient y pigment_map { [0 rgb 0] [1 gradient x] } } })");
+    ASSERT_EQ(s.objects.size(), 3u);
+    const auto color_at = [&](std::size_t object, Point3 p) {
+        SurfacePoint sp;
+        sp.p = p;
+        return evaluate(s.materials[s.objects[object].material].color, sp);
+    };
+    // At x = 1 the gradient is 1/2: half red, half the checker, whose cell (1, 0, 0) is white.
+    const Color half = color_at(0, {1, 0.25f, 0.25f});
+    EXPECT_FLOAT_EQ(half.r, 1);
+    EXPECT_FLOAT_EQ(half.g, 0.5f);
+    EXPECT_FLOAT_EQ(half.b, 0.5f);
+    EXPECT_EQ(color_at(0, {0, 0.25f, 0.25f}), (Color{1, 0, 0}));
+    const Color averaged = color_at(1, {0.3f, 0.6f, 0.9f});
+    EXPECT_FLOAT_EQ(averaged.r, 0.25f);
+    EXPECT_FLOAT_EQ(averaged.b, 0.75f);
+    EXPECT_EQ(color_at(2, {0.5f, 0.5f, 0.5f}), (Color{1, 1, 0}));               // an even cell
+    EXPECT_EQ(color_at(2, {1.5f, 0.25f, 0.5f}), (Color{0.25f, 0.25f, 0.25f}));  // gradient y
+    // The sky: at height y, y of the way from black to the gradient x's value there.
+    ASSERT_TRUE(s.sky.has_value());
+    for (const Vector3 d : {Vector3{0.8f, 0.6f, 0}, normalize(Vector3{0.5f, 0.2f, 0.8f})})
+        EXPECT_NEAR(Sky(*s.sky).radiance(d).r, d.y * d.x, 0.02);
+    EXPECT_NE(error_of("sphere { 0, 1 pigment { average } }")
+                  .find("scene.pov:1:25: error: average needs a pigment_map"),
+              std::string::npos);
+    EXPECT_NE(error_of("sphere { 0, 1 pigment { gradient x pigment_map { [0 rgb 1] [1 "
+                       "julia <0, 1> 9] } } }")
+                  .find("pigment pattern \"julia\" is not supported yet"),
+              std::string::npos);
+    EXPECT_NE(error_of("sky_sphere { pigment { julia <0, 1> 9 } }")
+                  .find("scene.pov:1:24: error: pigment pattern \"julia\" is not supported yet"),
+              std::string::npos);
+    EXPECT_NE(error_of("sphere { 0, 1 pigment { gradient x pigment_map { [0 rgb 1 } } }")
+                  .find("scene.pov:1:59: error: expected ']' after the pigment, got '}'"),
+              std::string::npos);
+}
+
+// As POV-Ray: an orthographic camera without up or right, or with an angle, sees the area a
+// perspective camera of the same vectors sees at look_at; with up or right, their size.
+TEST(PovScene, OrthographicViewsAreSizedAsPovRaySizesThem) {
+    // Default up 1 over direction 1, 10 away: 10 high.
+    EXPECT_NEAR(parse("camera { orthographic location <0, 0, -10> look_at 0 }").camera.height, 10,
+                1e-4);
+    // angle 90 across right 1.33: direction 0.665, so 10 / 0.665 high.
+    EXPECT_NEAR(
+        parse("camera { orthographic location <0, 0, -10> look_at 0 angle 90 }").camera.height,
+        10 / 0.665, 1e-3);
+    // up given: its length.
+    EXPECT_NEAR(parse("camera { orthographic location <0, 0, -10> look_at 0 up 3 * y right 4 * x }")
+                    .camera.height,
+                3, 1e-5);
+    // angle without a number: the default direction's view, as without it.
+    EXPECT_NEAR(
+        parse("camera { orthographic location <0, 0, -4> look_at 0 up 3 * y angle }").camera.height,
+        12, 1e-4);
 }
 
 // An inverse operand is the rest of space: intersection takes it away, difference keeps it; an

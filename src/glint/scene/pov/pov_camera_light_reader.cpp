@@ -25,14 +25,16 @@ PovCamera PovItemReader::camera(const PovToken& keyword) {
             c.look_at = parser_.finite_vector("after look_at");
         else if (w == "direction")
             c.direction = parser_.finite_vector("after direction");
-        else if (w == "up")
-            c.up = parser_.finite_vector("after up");
-        else if (w == "right")
-            c.right = parser_.finite_vector("after right");
-        else if (w == "sky")
+        else if (w == "up" || w == "right") {
+            (w == "up" ? c.up : c.right) = parser_.finite_vector("after " + w);
+            c.sized = true;
+        } else if (w == "sky")
             c.sky = parser_.finite_vector("after sky");
         else if (w == "angle")
-            c.angle = parser_.finite_float("after angle");
+            // An orthographic camera's angle may come without a number: the view of a
+            // perspective camera's default angle.
+            c.angle = c.orthographic && !number_next() ? std::optional<double>(0)
+                                                       : parser_.finite_float("after angle");
         else if (w == "focal_point")
             c.focal_point = parser_.finite_vector("after focal_point");
         else if (w == "aperture")

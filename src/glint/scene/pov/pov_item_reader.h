@@ -35,6 +35,10 @@ public:
     // texture { checker texture { } texture { } }: the keyword read; onto a checker pigment.
     void checker_texture(const PovToken& keyword, PovTexture& t);
     PovPigment pigment(const PovPigment& base);
+    // What a pigment holds, over `base`, up to `closing` ("}", or "]" in a pigment_map).
+    PovPigment pigment_body(const PovPigment& base, std::string_view closing);
+    // pigment_map { [value pigment-body] ... }: a colour map whose stops hold pigments.
+    PovColorMap pigment_map(const PovToken& keyword);
     // normal { [declared] pattern [amount] modifiers } over `base` (pov_normal_reader.cpp).
     PovNormal normal(const std::optional<PovNormal>& base);
     PovColorMap color_map(const PovToken& keyword);

@@ -33,9 +33,11 @@ struct PovFinish {
 };
 
 // One entry of a color_map: the colour (r, g, b, filter, transmit) from the value `at` on.
+struct PovPigment;
 struct PovColorStop {
     double at = 0;
     PovVector color = PovVector::of(0, 5);
+    std::shared_ptr<const PovPigment> pigment;  // a pigment_map's entry: the pigment, not color
 };
 
 struct PovColorMap {
@@ -57,6 +59,7 @@ struct PovPigment {
     // image on the surface's uv (uv_mapping); `color` holds its filter and transmit all.
     std::shared_ptr<const ProjectedImage> image;
     bool uv_mapping = false;
+    bool average = false;  // pattern: POV-Ray's average of its pigment_map's entries
 };
 
 // sky_sphere: pigments layered from the first up, seen in each direction as at the point of the
@@ -120,6 +123,7 @@ struct PovCamera {
     std::optional<PovVector> look_at, focal_point;
     std::optional<double> angle, aperture;
     std::optional<int> blur_samples;
+    bool sized = false;   // up or right given: an orthographic camera's view is their size
     Transform transform;  // rotate, translate, ... after the vectors
 };
 

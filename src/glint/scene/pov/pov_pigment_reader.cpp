@@ -1,6 +1,7 @@
 // POV-Ray's pigments: a colour, or a pattern with its colour map, wave, frequency, phase and
 // turbulence, read onto glint's patterns (shading/pattern.h).
 #include <algorithm>
+#include <cmath>
 #include <optional>
 #include <string_view>
 
@@ -30,7 +31,10 @@ std::optional<PatternKind> pattern_kind(std::string_view w) {
         {"radial", PatternKind::radial},     {"spherical", PatternKind::spherical},
         {"spotted", PatternKind::bozo},  // the same function in POV-Ray
         {"bumps", PatternKind::bozo},    // as a pigment, too
-        {"wood", PatternKind::wood},
+        {"wood", PatternKind::wood},         {"mandel", PatternKind::mandel},
+        {"ripples", PatternKind::ripples},   {"waves", PatternKind::waves},
+        {"spiral1", PatternKind::spiral1},   {"spiral2", PatternKind::spiral2},
+        {"wrinkles", PatternKind::wrinkles},
     };
     for (const Named& k : kKinds)
         if (k.name == w) return k.kind;
@@ -112,6 +116,11 @@ PovPigment PovItemReader::pattern(const PovToken& name) {
         const Vector3 d = to_vector(parser_.finite_vector("after gradient"));
         if (!(length(d) > 0)) throw parser_.error_at(at, "gradient direction must not be zero");
         p.spec.direction = normalize(d);
+    } else if (p.spec.kind == PatternKind::mandel) {
+        p.spec.iterations = parser_.whole_number("as mandel's iterations", 1, 1 << 16);
+    } else if (p.spec.kind == PatternKind::spiral1 || p.spec.kind == PatternKind::spiral2) {
+        // A whole number of arms, as POV-Ray truncates it.
+        p.spec.arms = std::trunc(float(parser_.finite_float("as the spiral's arms")));
     } else if (is_list_pattern(p.spec.kind)) {
         // The colours each value picks, POV-Ray's defaults unless the pattern lists its own:
         // checker blue and green; hexagon blue, green and red; brick's mortar grey, its bricks
@@ -132,15 +141,21 @@ PovPigment PovItemReader::pattern(const PovToken& name) {
                    (ahead.kind == PovTokenKind::identifier && parser_.symbols().find(ahead.text) &&
                     !declared<PovColorMap>(ahead));
         };
-        // The colours given, in order; the ones not given stay.
-        for (std::size_t i = 0; i < colors.size(); ++i) {
-            if (i > 0) parser_.accept(",");
-            if (!colour_next()) break;
-            colors[i] = parser_.color_expression("as the " + name.text + "'s colour");
-        }
         p.map.stops.clear();
         for (std::size_t i = 0; i < colors.size(); ++i)
-            p.map.stops.push_back({float(i) / float(colors.size() - 1), colors[i]});
+            p.map.stops.push_back({float(i) / float(colors.size() - 1), colors[i], nullptr});
+        // The colours or pigments given, in order; the ones not given stay.
+        for (PovColorStop& stop : p.map.stops) {
+            if (&stop != &p.map.stops.front()) parser_.accept(",");
+            if (parser_.peek_item().is_word("pigment")) {
+                parser_.next();
+                stop.pigment = std::make_shared<const PovPigment>(pigment({}));
+            } else if (colour_next()) {
+                stop.color = parser_.color_expression("as the " + name.text + "'s colour");
+            } else {
+                break;
+            }
+        }
     }
     return p;
 }
@@ -150,6 +165,8 @@ bool PovItemReader::pattern_modifier(const PovToken& token, PovPigment& p) {
     PatternSpec& s = p.spec;
     if (w == "color_map" || w == "colour_map") {
         p.map = color_map(token);
+    } else if (w == "pigment_map") {
+        p.map = pigment_map(token);
     } else if (w == "turbulence") {
         s.turbulence = to_vector(parser_.finite_vector("after turbulence"));
     } else if (w == "octaves") {
@@ -202,9 +219,55 @@ bool PovItemReader::pattern_modifier(const PovToken& token, PovPigment& p) {
     return true;
 }
 
+PovColorMap PovItemReader::pigment_map(const PovToken& keyword) {
+    parser_.expect("{", "after " + keyword.text);
+    PovColorMap map;
+    if (auto d = take_declared<PovColorMap>()) {
+        map = *d;
+    }
+    for (PovToken t = parser_.next(); !t.is_symbol("}"); t = parser_.next()) {
+        if (!t.is_symbol("["))
+            throw parser_.error_at(
+                t, "expected '[' or '}' in " + keyword.text + ", got " + describe(t));
+        if (map.stops.size() + 1 > kMaxColorMapEntries)
+            throw parser_.error_at(t, keyword.text + " has more than " +
+                                          std::to_string(kMaxColorMapEntries) + " entries");
+        PovColorStop stop;
+        stop.at = parser_.finite_float("as the entry's value");
+        parser_.accept(",");
+        auto entry = std::make_shared<const PovPigment>(pigment_body({}, "]"));
+        stop.color = entry->color;
+        stop.pigment = std::move(entry);
+        map.stops.push_back(std::move(stop));
+    }
+    if (map.stops.empty())
+        throw parser_.error_at(keyword, keyword.text + " needs at least one [value pigment]");
+    std::stable_sort(map.stops.begin(), map.stops.end(),
+                     [](const PovColorStop& x, const PovColorStop& y) { return x.at < y.at; });
+    return map;
+}
+
 PovPigment PovItemReader::pigment(const PovPigment& base) {
     parser_.expect("{", "after pigment");
+    return pigment_body(base, "}");
+}
+
+PovPigment PovItemReader::pigment_body(const PovPigment& base, std::string_view closing) {
+    // Past a pigment glint does not read yet, to its end.
+    const auto skip_rest = [&](const PovToken& from) {
+        if (closing == "}") return parser_.skip_to_closing_brace(from);
+        for (int depth = 0;;) {
+            const PovToken t = parser_.next();
+            if (t.kind == PovTokenKind::end)
+                throw parser_.error_at(from, "a map entry is not closed by ]");
+            if (depth == 0 && t.is_symbol("]")) return;
+            depth += t.is_symbol("{") || t.is_symbol("[")   ? 1
+                     : t.is_symbol("}") || t.is_symbol("]") ? -1
+                                                            : 0;
+        }
+    };
     PovPigment p = base;
+    std::optional<PovToken> average;
     // uv_mapping: the pattern on the surface's uv, written first or among the modifiers.
     std::optional<PovPosition> uv_mapping;
     if (parser_.peek_item().is_word("uv_mapping")) uv_mapping = parser_.next().at;
@@ -215,6 +278,11 @@ PovPigment PovItemReader::pigment(const PovPigment& base) {
     } else if (const PovToken& first = parser_.peek_item();
                first.kind == PovTokenKind::identifier && pattern_kind(first.text)) {
         p = pattern(parser_.next());
+    } else if (first.is_word("average")) {
+        average = parser_.next();
+        p = PovPigment{};
+        p.kind = PovPigment::Kind::pattern;
+        p.average = true;
     } else if (first.kind == PovTokenKind::identifier && !starts_color(first) &&
                !parser_.symbols().find(first.text)) {
         // A pattern glint does not read yet: only an object that uses it stops the scene.
@@ -223,15 +291,18 @@ PovPigment PovItemReader::pigment(const PovPigment& base) {
         p.kind = PovPigment::Kind::unsupported;
         p.pattern = pattern.text;
         p.at = pattern.at;
-        parser_.skip_to_closing_brace(pattern);
+        skip_rest(pattern);
         return p;
-    } else if (!first.is_symbol("}")) {
+    } else if (!first.is_symbol(closing)) {
         p.kind = PovPigment::Kind::color;
         p.color = parser_.color_expression("as the pigment's colour");
     }
     for (;;) {
         const PovToken token = parser_.next();
-        if (token.is_symbol("}")) break;
+        if (token.is_symbol(closing)) break;
+        if (token.kind == PovTokenKind::end || (closing == "]" && token.is_symbol("}")))
+            throw parser_.error_at(token, "expected '" + std::string(closing) +
+                                              "' after the pigment, got " + describe(token));
         if (const auto step = transform_step(token)) {
             p.transform = *step * p.transform;
             continue;
@@ -247,9 +318,12 @@ PovPigment PovItemReader::pigment(const PovPigment& base) {
         unread.kind = PovPigment::Kind::unsupported;
         unread.pattern = token.text;
         unread.at = token.at;
-        parser_.skip_to_closing_brace(token);
+        skip_rest(token);
         return unread;
     }
+    if (average && !std::any_of(p.map.stops.begin(), p.map.stops.end(),
+                                [](const PovColorStop& s) { return s.pigment != nullptr; }))
+        throw parser_.error_at(*average, "average needs a pigment_map");
     if (uv_mapping && p.kind == PovPigment::Kind::image) p.uv_mapping = true;
     if (uv_mapping && p.kind == PovPigment::Kind::pattern) {
         // A pattern on the surface's uv: not read yet, an error where an object uses it.

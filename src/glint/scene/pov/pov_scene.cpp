@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <fstream>
+#include <functional>
 #include <map>
 #include <numbers>
 #include <set>
@@ -58,8 +59,34 @@ double transmitted(const PovPigment& p) {
     if (p.kind != PovPigment::Kind::pattern) return p.color[3] + p.color[4];
     double least = 1;
     for (const PovColorStop& stop : p.map.stops)
-        least = std::min(least, stop.color[3] + stop.color[4]);
+        least = std::min(least,
+                         stop.pigment ? transmitted(*stop.pigment) : stop.color[3] + stop.color[4]);
     return least;
+}
+
+// The first pigment glint does not read yet, at any depth of its pigment_maps.
+const PovPigment* unread_pigment(const PovPigment& p) {
+    if (p.kind == PovPigment::Kind::unsupported) return &p;
+    for (const PovColorStop& stop : p.map.stops)
+        if (const PovPigment* unread = stop.pigment ? unread_pigment(*stop.pigment) : nullptr)
+            return unread;
+    return nullptr;
+}
+
+// The texture with every colour in it decoded, through pigment maps.
+Texture decoded(const Texture& texture, const std::function<Color(Color)>& decode) {
+    if (const auto* color = std::get_if<Color>(&texture)) return decode(*color);
+    if (const auto* pattern = std::get_if<PatternTexturePtr>(&texture)) {
+        auto d = std::make_shared<PatternTexture>(**pattern);
+        for (ColorStop& stop : d->colors) stop.color = decode(stop.color);
+        return d;
+    }
+    if (const auto* map = std::get_if<PigmentMapPtr>(&texture)) {
+        auto d = std::make_shared<PigmentMap>(**map);
+        for (PigmentMap::Entry& e : d->entries) e.texture = decoded(e.texture, decode);
+        return d;
+    }
+    return texture;
 }
 
 class Builder {
@@ -96,9 +123,10 @@ public:
             if (t.is_symbol(";")) continue;
             if (w == "camera")
                 camera(items_.camera(t));
-            else if (w == "sky_sphere")
+            else if (w == "sky_sphere") {
                 sky_ = items_.sky_sphere(t);
-            else if (w == "background")
+                for (const PovPigment& p : sky_->pigments) refuse_unread(p);
+            } else if (w == "background")
                 background(t);
             else if (w == "fog")
                 fog(items_.fog(t));
@@ -155,7 +183,7 @@ private:
     void camera(const PovCamera& pov) {
         PovVector direction = pov.direction, up = pov.up, right = pov.right;
         // As POV-Ray: the angle sets the direction's length against right's.
-        if (pov.angle) {
+        if (pov.angle && !(pov.orthographic && *pov.angle == 0)) {
             if (!(*pov.angle > 0 && *pov.angle < 180))
                 throw files_.error_at(pov.at, "camera angle must be in (0, 180)");
             direction = scaled(direction, 0.5 * norm(right) /
@@ -186,6 +214,16 @@ private:
             PovVector u = cross3(direction, right);
             if (handed < 0) u = scaled(u, -1);
             up = scaled(u, length_u / norm(u));
+        }
+        if (pov.orthographic && (!pov.sized || pov.angle)) {
+            // As POV-Ray: the view at look_at is a perspective camera's of the same vectors.
+            PovVector d = pov.look_at.value_or(PovVector{{0, 0, 1}});
+            for (int i = 0; i < 3; ++i) d[i] -= pov.location[i];
+            const double k = norm(d) / norm(direction);
+            if (std::isfinite(k) && k > 0) {
+                right = scaled(right, k);
+                up = scaled(up, k);
+            }
         }
         const Transform& t = pov.transform;
         const Vector3 view = t(to_vector(direction)), up_placed = t(to_vector(up));
@@ -343,16 +381,21 @@ private:
                                   {"docs/povray.md lists what glint reads"});
     }
 
+    // A pigment glint does not read yet, at any depth of its pigment maps, stops the scene.
+    void refuse_unread(const PovPigment& pigment) const {
+        if (const PovPigment* unread = unread_pigment(pigment))
+            throw files_.error_at(
+                unread->at, "pigment pattern " + quote(unread->pattern) + " is not supported yet",
+                {"docs/povray.md lists what glint reads"});
+    }
+
     // The glint material of a texture and interior. A pattern's material also depends on where
     // its texture lies (`frame`: the texture's space to the scene's), as it is placed by it.
     std::uint32_t material(const std::shared_ptr<const PovTexture>& texture,
                            const std::shared_ptr<const PovInterior>& interior,
                            const Transform& frame) {
         const PovPigment& p = texture->pigment;
-        if (p.kind == PovPigment::Kind::unsupported)
-            throw files_.error_at(p.at,
-                                  "pigment pattern " + quote(p.pattern) + " is not supported yet",
-                                  {"docs/povray.md lists what glint reads"});
+        refuse_unread(p);
         const std::optional<PovNormal>& normal = texture->normal;
         const bool tilted = normal && normal->unsupported.empty();
         const bool projected = p.kind == PovPigment::Kind::image && !p.uv_mapping;
@@ -372,22 +415,7 @@ private:
             maps.normal_pattern->to_pattern = (frame * normal->transform).inverse();
             m.maps = std::make_shared<const MaterialMaps>(std::move(maps));
         }
-        if (p.kind == PovPigment::Kind::pattern) {
-            auto pattern = std::make_shared<PatternTexture>();
-            pattern->spec = p.spec;
-            for (const PovColorStop& stop : p.map.stops)
-                pattern->colors.push_back({float(stop.at), rgb(stop.color)});
-            pattern->to_pattern = (frame * p.transform).inverse();
-            m.color = std::move(pattern);
-        } else if (projected) {
-            auto image = std::make_shared<ProjectedImage>(*p.image);
-            image->to_projection = (frame * p.transform).inverse();
-            m.color = std::move(image);
-        } else if (p.kind == PovPigment::Kind::image) {
-            m.color = p.image->image;  // on the surface's uv
-        } else {
-            m.color = rgb(p.color);
-        }
+        m.color = texture_of(p, frame);
         const PovFinish& f = t.finish;
         m.ka = float(f.ambient);
         m.kd = float(f.diffuse);
@@ -417,6 +445,39 @@ private:
         const auto index = std::uint32_t(scene_.materials.size() - 1);
         materials_.emplace(key, index);
         return index;
+    }
+
+    // glint's colour source for a pigment lying in `frame` (its texture's space to the scene's).
+    static Texture texture_of(const PovPigment& p, const Transform& frame) {
+        const bool mapped = std::any_of(p.map.stops.begin(), p.map.stops.end(),
+                                        [](const PovColorStop& s) { return s.pigment != nullptr; });
+        if (p.kind == PovPigment::Kind::pattern && mapped) {
+            // Each entry's pigment lies in the map's pattern space.
+            auto map = std::make_shared<PigmentMap>();
+            map->spec = p.spec;
+            map->average = p.average;
+            for (const PovColorStop& stop : p.map.stops)
+                map->entries.push_back(
+                    {float(stop.at), stop.pigment ? texture_of(*stop.pigment, frame * p.transform)
+                                                  : Texture{rgb(stop.color)}});
+            map->to_pattern = (frame * p.transform).inverse();
+            return map;
+        }
+        if (p.kind == PovPigment::Kind::pattern) {
+            auto pattern = std::make_shared<PatternTexture>();
+            pattern->spec = p.spec;
+            for (const PovColorStop& stop : p.map.stops)
+                pattern->colors.push_back({float(stop.at), rgb(stop.color)});
+            pattern->to_pattern = (frame * p.transform).inverse();
+            return pattern;
+        }
+        if (p.kind == PovPigment::Kind::image && !p.uv_mapping) {
+            auto image = std::make_shared<ProjectedImage>(*p.image);
+            image->to_projection = (frame * p.transform).inverse();
+            return image;
+        }
+        if (p.kind == PovPigment::Kind::image) return p.image->image;  // on the surface's uv
+        return rgb(p.color);
     }
 
     // Where the textures of a CSG's operands lie and what they are seen through: the scene's
@@ -621,12 +682,7 @@ private:
         };
         if (gamma != 1) {
             for (Material& m : scene_.materials) {
-                if (auto* color = std::get_if<Color>(&m.color)) *color = decode(*color);
-                if (auto* pattern = std::get_if<PatternTexturePtr>(&m.color)) {
-                    auto decoded = std::make_shared<PatternTexture>(**pattern);
-                    for (ColorStop& stop : decoded->colors) stop.color = decode(stop.color);
-                    *pattern = std::move(decoded);
-                }
+                m.color = decoded(m.color, decode);
                 m.emission = decode(m.emission);
             }
             for (Light& light : scene_.lights)

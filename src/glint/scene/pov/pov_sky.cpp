@@ -12,8 +12,16 @@ namespace glint {
 
 namespace {
 
+PovVector pigment_color(const PovPigment& pigment, Point3 pattern_p);
+
+// A colour map's stop at a point of the map's pattern space: its colour, or its pigment's.
+PovVector stop_color(const PovColorStop& stop, Point3 pattern_p) {
+    if (!stop.pigment) return stop.color;
+    return pigment_color(*stop.pigment, stop.pigment->transform.inverse()(pattern_p));
+}
+
 // The pigment's five components (r, g, b, filter, transmit) at a point of its pattern's space:
-// a colour, or its pattern through its colour map.
+// a colour, or its pattern through its colour or pigment map.
 PovVector pigment_color(const PovPigment& pigment, Point3 pattern_p) {
     if (pigment.kind == PovPigment::Kind::image) {
         // Seen from the sphere's centre, whatever the projection's name.
@@ -24,11 +32,21 @@ PovVector pigment_color(const PovPigment& pigment, Point3 pattern_p) {
     }
     if (pigment.kind != PovPigment::Kind::pattern) return pigment.color;
     const std::vector<PovColorStop>& stops = pigment.map.stops;
-    const MapSpan span = span_at(stops, pattern_value(pigment.spec, pattern_p));
     PovVector c = PovVector::of(0, 5);
-    for (int i = 0; i < 5; ++i)
-        c[i] = stops[span.lower].color[i] * (1 - span.weight) +
-               stops[span.upper].color[i] * span.weight;
+    if (pigment.average) {
+        double weights = 0;
+        for (const PovColorStop& stop : stops) {
+            const PovVector s = stop_color(stop, pattern_p);
+            for (int i = 0; i < 5; ++i) c[i] += stop.at * s[i];
+            weights += stop.at;
+        }
+        for (int i = 0; i < 5; ++i) c[i] = weights != 0 ? c[i] / weights : 0;
+        return c;
+    }
+    const MapSpan span = span_at(stops, pattern_value(pigment.spec, pattern_p));
+    const PovVector lower = stop_color(stops[span.lower], pattern_p);
+    const PovVector upper = span.weight == 0 ? lower : stop_color(stops[span.upper], pattern_p);
+    for (int i = 0; i < 5; ++i) c[i] = lower[i] * (1 - span.weight) + upper[i] * span.weight;
     return c;
 }
 
