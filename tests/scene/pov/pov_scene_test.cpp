@@ -181,7 +181,7 @@ TEST(PovScene, WhatIsNotReadIsALocatedErrorNamingIt) {
               "    2 |   split_union on }\n"
               "      |   ^~~~~~~~~~~\n"
               "note: docs/povray.md lists what glint reads\n");
-    EXPECT_NE(error_of("isosurface { }").find("POV-Ray's isosurface is not supported yet"),
+    EXPECT_NE(error_of("isosurface { }").find("an isosurface needs a function { }"),
               std::string::npos);
     EXPECT_NE(error_of("sphere { 0, -1 }").find("sphere radius must be > 0"), std::string::npos);
     EXPECT_NE(error_of("sphere { 0, 1 pigment { julia <0.3, 0.4> 20 } }")
@@ -513,6 +513,61 @@ TEST(PovScene, OrthographicViewsAreSizedAsPovRaySizesThem) {
     EXPECT_NEAR(
         parse("camera { orthographic location <0, 0, -4> look_at 0 up 3 * y angle }").camera.height,
         12, 1e-4);
+}
+
+// isosurface: the function less the threshold as glint's implicit surface, within its
+// container: intersected with it when closed, clipped by it (or bounded, a box) when open.
+// Functions are written out: built-ins, declared floats, declared functions with their own
+// parameters, functions.inc's internal ones.
+TEST(PovScene, IsosurfacesAreImplicitSurfacesInTheirContainers) {
+    const Scene s = parse(R"(
+        #declare R = 0.5;
+        #declare f_sphere = function { internal(61) }
+        #declare Shifted = function(a, b, c, k) { f_sphere(a - k, b, c, R) }
+        isosurface { function { Shifted(x, y, z, 1) } contained_by { box { -2, 2 } } }
+        isosurface { function { pow(x, 2) + y*y + z^2 } threshold 1 open
+                     contained_by { sphere { 0, 2 } } }
+        isosurface { function { y - ln(exp(tan(x) * 0)) - max(-5, u, -3) } open })");
+    ASSERT_EQ(s.objects.size(), 3u);
+    const auto* closed = std::get_if<Csg>(&s.objects[0].shape);
+    ASSERT_TRUE(closed);
+    EXPECT_EQ(closed->operation, CsgOperation::intersection);
+    const auto* surface = std::get_if<ImplicitSurface>(closed->a.get());
+    ASSERT_TRUE(surface);
+    EXPECT_NEAR(surface->f->value(1, 0, 0), -0.5, 1e-12);  // the centre of a sphere at x = 1
+    EXPECT_NEAR(surface->f->value(1, 2, 0), 1.5, 1e-12);
+    EXPECT_TRUE(std::holds_alternative<Box>(*closed->b));
+    const auto* clipped = std::get_if<Csg>(&s.objects[1].shape);
+    ASSERT_TRUE(clipped);
+    EXPECT_EQ(clipped->operation, CsgOperation::clip);
+    EXPECT_NEAR(std::get<ImplicitSurface>(*clipped->a).f->value(1, 1, 1), 3 - 1, 1e-12);
+    EXPECT_TRUE(std::holds_alternative<Sphere>(*clipped->b));
+    // Open in POV-Ray's default box: the surface alone, bounded by it. u is x: max(-5, -4, -3).
+    const auto& plain = std::get<ImplicitSurface>(s.objects[2].shape);
+    EXPECT_NEAR(plain.f->value(-4, 0.25, 0), 0.25 + 3, 1e-12);
+    EXPECT_EQ(plain.region.max, (Point3{1, 1, 1}));
+
+    EXPECT_NE(error_of("#declare N = function { internal(80) }\n"
+                       "isosurface { function { y + N(x, y, z) } }")
+                  .find("scene.pov:2:14: error: the isosurface's function uses internal(80), "
+                        "which glint does not compute yet"),
+              std::string::npos);
+    EXPECT_NE(error_of("isosurface { function { atan2(x, z) } }")
+                  .find("uses atan2, which glint does not compute yet"),
+              std::string::npos);
+    EXPECT_NE(error_of("isosurface { function { x < 1 } }")
+                  .find("scene.pov:1:27: error: comparisons and logic (<) in a function are not "
+                        "supported yet"),
+              std::string::npos);
+    EXPECT_NE(error_of("#declare F = function(a) { a }\nisosurface { function { F(x, y) } }")
+                  .find("scene.pov:2:25: error: \"F\" takes 1 arguments, got 2"),
+              std::string::npos);
+    EXPECT_NE(error_of("isosurface { function { w } }")
+                  .find("\"w\" is not a parameter, a declared float or a function"),
+              std::string::npos);
+    EXPECT_NE(error_of("isosurface { function { x } contained_by { cone { 0, 1, y, 0 } } }")
+                  .find("contained_by holds a box or a sphere, got \"cone\""),
+              std::string::npos);
 }
 
 // An inverse operand is the rest of space: intersection takes it away, difference keeps it; an

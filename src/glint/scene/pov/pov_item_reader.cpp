@@ -26,13 +26,14 @@ bool is_shape(const std::string& keyword) {
            keyword == "smooth_triangle" || keyword == "polygon" || keyword == "mesh" ||
            keyword == "mesh2" || keyword == "height_field" || keyword == "superellipsoid" ||
            keyword == "blob" || keyword == "prism" || keyword == "lathe" || keyword == "sor" ||
-           keyword == "text" || keyword == "julia_fractal" || is_polynomial(keyword);
+           keyword == "text" || keyword == "julia_fractal" || keyword == "isosurface" ||
+           is_polynomial(keyword);
 }
 
 // POV-Ray's objects that glint does not read yet: read past, so that only using one stops the
 // scene (include files declare many).
 bool is_unread_object(const std::string& keyword) {
-    static const std::string_view kUnread[] = {"bicubic_patch", "isosurface", "lemon",       "ovus",
+    static const std::string_view kUnread[] = {"bicubic_patch", "lemon",      "ovus",
                                                "parametric",    "polynomial", "sphere_sweep"};
     return std::find(std::begin(kUnread), std::end(kUnread), keyword) != std::end(kUnread);
 }
@@ -128,15 +129,7 @@ std::optional<PovItem> PovItemReader::read(const PovToken& keyword) {
         return PovUnread{w, keyword.at};
     }
     if (w == "normal") return normal(default_texture_->normal);
-    if (w == "function") {
-        // function [(parameters)] { ... }: not read yet, an error where it is used.
-        if (parser_.accept("(")) {
-            while (!parser_.next().is_symbol(")")) {
-            }
-        }
-        parser_.skip_braced(keyword);
-        return PovUnread{w, keyword.at};
-    }
+    if (w == "function") return function(keyword);
     if (starts_object(w)) return object(keyword);
     if (w == "camera") return camera(keyword);
     if (w == "sky_sphere") return sky_sphere(keyword);
@@ -355,6 +348,7 @@ Shape PovItemReader::shape(const PovToken& keyword) {
         return surface;
     }
     if (w == "superellipsoid") return superellipsoid(keyword);
+    if (w == "isosurface") return isosurface(keyword);
     if (w == "blob") return blob(keyword);
     if (w == "torus") {
         const float major = number("as the torus's major radius");

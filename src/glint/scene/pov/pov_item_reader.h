@@ -84,6 +84,12 @@ private:
     Shape julia_fractal(const PovToken& keyword);
     Shape superellipsoid(const PovToken& keyword);  // pov_superellipsoid_reader.cpp
     Shape blob(const PovToken& keyword);            // pov_blob_reader.cpp
+    Shape isosurface(const PovToken& keyword);      // pov_isosurface_reader.cpp
+    // function [(parameters)] { body }, the keyword read (pov_function_reader.cpp).
+    PovFunction function(const PovToken& keyword);
+    // The glint expression text of a function body up to its closing brace, its parameters
+    // written $0, $1, ...; what glint cannot compute yet noted in `unsupported`.
+    std::string function_body(const std::vector<std::string>& parameters, std::string& unsupported);
     void text(const PovToken& keyword, PovObject& object);
     // The corners of triangles as read, three a triangle, with a smooth one's normals.
     struct MeshCorners {

@@ -176,6 +176,21 @@ struct PovObject {
     PovPosition at;                           // where it was written
 };
 
+// A POV-Ray function { }: glint expression text over its parameters, written $0, $1, ... (x, y
+// and z unless it names its own), which a call replaces by its arguments
+// (pov_function_reader.cpp). A function glint cannot compute yet (an internal one such as
+// f_noise3d, a pattern's or a pigment's) names what stops it in `unsupported`: declaring it is
+// fine, using it in an isosurface an error.
+struct PovFunction {
+    int arity = 3;
+    std::string text;
+    std::string unsupported;
+    PovPosition at;
+};
+
+// The function's text with each argument, in parentheses, in place of its parameter.
+std::string call_text(const PovFunction& function, const std::vector<std::string>& arguments);
+
 // A map (color_map, pigment_map, ...) that glint does not read yet: kept to stop the scene only
 // where it is used.
 struct PovUnread {
@@ -185,7 +200,7 @@ struct PovUnread {
 
 using PovItem =
     std::variant<PovObject, PovTexture, PovPigment, PovFinish, PovInterior, Transform, PovUnread,
-                 PovCamera, PovColorMap, PovSkySphere, PovMaterial, PovNormal>;
+                 PovCamera, PovColorMap, PovSkySphere, PovMaterial, PovNormal, PovFunction>;
 
 // A declared item as an identifier's value holds it.
 struct PovItemRef {

@@ -214,7 +214,7 @@ private:
             advance(2);
             return;
         }
-        if (std::string_view("{}()[]<>,;+-*/=!?:.&|").find(c) == std::string_view::npos) {
+        if (std::string_view("{}()[]<>,;+-*/=!?:.&|^").find(c) == std::string_view::npos) {
             const bool printable = std::isprint(static_cast<unsigned char>(c));
             throw files_.error_at(
                 here(), printable ? "unexpected character '" + std::string(1, c) + "'"

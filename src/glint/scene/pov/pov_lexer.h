@@ -16,7 +16,7 @@ enum class PovTokenKind : std::uint8_t {
     identifier,  // text: the name
     number,      // number: the value; text: as written
     string,      // text: the value, escapes resolved
-    symbol,      // text: one of { } ( ) [ ] < > , ; + - * / = ! ? : . & | <= >= !=
+    symbol,      // text: one of { } ( ) [ ] < > , ; + - * / = ! ? : . & | ^ <= >= !=
     directive,   // text: the word after `#` ("declare")
     end,         // the end of the file
 };
