@@ -103,10 +103,11 @@ TEST(Expression, UnknownFunctionSuggestsTheNearestName) {
     EXPECT_EQ(e.length, 3u);
     EXPECT_EQ(e.message, "unknown function \"son\"");
     ASSERT_EQ(e.notes.size(), 1u);
-    EXPECT_EQ(e.notes[0],
-              "functions are: abs, cos, exp, log, max, min, sin, sqrt (did you mean \"sin\"?)");
+    EXPECT_EQ(
+        e.notes[0],
+        "functions are: abs, atan2, cos, exp, log, max, min, sin, sqrt (did you mean \"sin\"?)");
     EXPECT_EQ(error_of("frobnicate(x)").notes[0],
-              "functions are: abs, cos, exp, log, max, min, sin, sqrt");
+              "functions are: abs, atan2, cos, exp, log, max, min, sin, sqrt");
 }
 
 TEST(Expression, UnknownNameListsCoordinatesAndConstants) {
@@ -221,6 +222,26 @@ TEST(Expression, GradientAgreesWithDifferenceQuotients) {
                     1e-5 * (1 + std::abs(g.dy)));
         EXPECT_NEAR(g.dz, (f.value(x, y, z + h) - f.value(x, y, z - h)) / (2 * h),
                     1e-5 * (1 + std::abs(g.dz)));
+    }
+}
+
+// atan2(a, b), the angle of (b, a): worked values, its gradient (-a, b) / (a^2 + b^2), and its
+// jump along a = 0, b < 0, where a ray's segment is not continuous.
+TEST(Expression, Atan2IsTheAngleOfAPoint) {
+    const Expression f = compile("atan2(y, x)");
+    EXPECT_NEAR(f.value(1, 1, 0), std::acos(-1.0) / 4, 1e-15);
+    EXPECT_NEAR(f.value(-1, 0, 0), std::acos(-1.0), 1e-15);
+    const Expression::Gradient g = f.gradient(1, 2, 0);
+    EXPECT_NEAR(g.dx, -2.0 / 5, 1e-15);
+    EXPECT_NEAR(g.dy, 1.0 / 5, 1e-15);
+    EXPECT_NEAR(compile("atan2(1, 1)").value(0, 0, 0), std::acos(-1.0) / 4, 1e-15);  // folded
+    const Ray up{{-1, -1, 0}, {0, 1, 0}};  // x = -1, y = t - 1: crosses the jump at t = 1
+    EXPECT_FALSE(f.along_ray(up, RealInterval{0.5, 1.5}).continuous);
+    const Expression::RaySegment before = f.along_ray(up, RealInterval{0.1, 0.5});
+    EXPECT_TRUE(before.continuous);
+    for (double t = 0.1; t <= 0.5; t += 0.05) {
+        EXPECT_TRUE(before.value.contains(f.along_ray(up, t).value));
+        EXPECT_TRUE(before.slope.contains(f.along_ray(up, t).slope));
     }
 }
 

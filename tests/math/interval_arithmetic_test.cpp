@@ -143,6 +143,32 @@ TEST(IntervalArithmetic, InfiniteEndpointsGiveNoNaN) {
 
 // The defining property: for random intervals and random points inside them, the function of
 // the points lies in the function of the intervals.
+// atan2: the angles of a box's corners where it keeps clear of the origin and of the jump along
+// the negative x axis; the whole [-pi, pi] where it does not.
+TEST(IntervalArithmetic, Atan2TakesTheCornersAnglesAwayFromItsJump) {
+    const double pi = std::acos(-1.0);
+    const RealInterval first = atan2(RealInterval{1, 2}, RealInterval{1, 2});  // y, x
+    EXPECT_NEAR(first.lo, std::atan2(1, 2), 1e-15);
+    EXPECT_NEAR(first.hi, std::atan2(2, 1), 1e-15);
+    EXPECT_LE(first.lo, std::atan2(1, 2));
+    // Across the positive x axis: continuous, from -pi/4 to pi/4.
+    const RealInterval across = atan2(RealInterval{-1, 1}, RealInterval{1, 3});
+    EXPECT_NEAR(across.lo, -pi / 4, 1e-15);
+    EXPECT_NEAR(across.hi, pi / 4, 1e-15);
+    EXPECT_TRUE(atan2_continuous({-1, 1}, {1, 3}));
+    // Across the negative x axis, or round the origin: every angle.
+    EXPECT_FALSE(atan2_continuous({-1, 1}, {-3, -1}));
+    EXPECT_FALSE(atan2_continuous({-1, 1}, {-1, 1}));
+    const RealInterval jump = atan2(RealInterval{-1, 1}, RealInterval{-3, -1});
+    EXPECT_LE(jump.lo, -pi);
+    EXPECT_GE(jump.hi, pi);
+    // Above the negative x axis, clear of it: between the angles of (-0.5, 1) and (-1, 0.5).
+    const RealInterval left = atan2(RealInterval{0.5, 1}, RealInterval{-1, -0.5});
+    EXPECT_NEAR(left.lo, std::atan2(1, -0.5), 1e-14);
+    EXPECT_NEAR(left.hi, std::atan2(0.5, -1), 1e-14);
+    EXPECT_TRUE(atan2(RealInterval::empty(), RealInterval{1, 2}).is_empty());
+}
+
 TEST(IntervalArithmetic, EveryOperationEnclosesItsPointValues) {
     std::mt19937 rng(7);
     std::uniform_real_distribution<double> endpoint(-6, 6), unit(0, 1);
@@ -184,6 +210,8 @@ TEST(IntervalArithmetic, EveryOperationEnclosesItsPointValues) {
          [](double x, double y) { return std::min(x, y); }},
         {[](RealInterval a, RealInterval b) { return max(a, b); },
          [](double x, double y) { return std::max(x, y); }},
+        {[](RealInterval a, RealInterval b) { return atan2(a, b); },
+         [](double x, double y) { return std::atan2(x, y); }},
     };
     // Only finite values count: NaN is "undefined here", +-inf a pole, neither a value.
     for (int i = 0; i < 3000; ++i) {

@@ -102,6 +102,9 @@ typename A::Value run(std::span<const ExpressionInstruction> program, A& a,
                     case ExpressionOp::kMax:
                         l = a.max(l, r);
                         break;
+                    case ExpressionOp::kAtan2:
+                        l = a.atan2(l, r);
+                        break;
                     default:
                         break;
                 }
@@ -131,6 +134,7 @@ struct Real {
     static double abs(double a) { return std::abs(a); }
     static double min(double a, double b) { return std::min(a, b); }
     static double max(double a, double b) { return std::max(a, b); }
+    static double atan2(double a, double b) { return std::atan2(a, b); }
 };
 
 // Forward-mode dual numbers with N partial derivatives: v + sum d_i eps_i, eps_i eps_j = 0.
@@ -191,6 +195,12 @@ struct Dual {
     static Value abs(const Value& a) { return a.v < 0 ? negate(a) : a; }
     static Value min(const Value& a, const Value& b) { return b.v < a.v ? b : a; }
     static Value max(const Value& a, const Value& b) { return b.v > a.v ? b : a; }
+    static Value atan2(const Value& a, const Value& b) {  // d = (b a' - a b') / (a^2 + b^2)
+        Value r{std::atan2(a.v, b.v)};
+        const double r2 = a.v * a.v + b.v * b.v;
+        for (int i = 0; i < N; ++i) r.d[i] = (b.v * a.d[i] - a.v * b.d[i]) / r2;
+        return r;
+    }
 };
 
 // Plain intervals: enclosures of the value only.
@@ -213,6 +223,7 @@ struct Intervals {
     static Value abs(Value a) { return glint::abs(a); }
     static Value min(Value a, Value b) { return glint::min(a, b); }
     static Value max(Value a, Value b) { return glint::max(a, b); }
+    static Value atan2(Value a, Value b) { return glint::atan2(a, b); }
 };
 
 // Intervals with an enclosure of the derivative along one direction (the ray parameter t).
@@ -284,6 +295,11 @@ struct IntervalSlopes {
         if (a.v.lo >= b.v.hi) return a;
         if (b.v.lo >= a.v.hi) return b;
         return {glint::max(a.v, b.v), hull(a.d, b.d)};
+    }
+    Value atan2(const Value& a, const Value& b) {
+        if (!atan2_continuous(a.v, b.v)) continuous = false;
+        const RealInterval r2 = glint::pow(a.v, 2) + glint::pow(b.v, 2);
+        return {glint::atan2(a.v, b.v), (b.v * a.d - a.v * b.d) / r2};
     }
 };
 

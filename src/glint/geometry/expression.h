@@ -53,6 +53,7 @@ enum class ExpressionOp : std::uint8_t {
     kAbs,
     kMin,
     kMax,
+    kAtan2,  // atan2(a, b): the angle of the point (b, a)
 };
 
 struct ExpressionInstruction {
@@ -126,7 +127,7 @@ private:
 std::variant<Expression, ExpressionError> compile_expression(
     std::string_view source, const ExpressionConstants& constants = {});
 
-// The function names of the language, sorted: abs, cos, exp, log, max, min, sin, sqrt.
+// The function names of the language, sorted: abs, atan2, cos, exp, log, max, min, sin, sqrt.
 std::span<const std::string_view> expression_functions();
 
 }  // namespace glint

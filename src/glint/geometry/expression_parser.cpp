@@ -22,13 +22,14 @@ struct Function {
 
 // Sorted by name: the error notes list them in this order.
 constexpr std::array kFunctions{
-    Function{"abs", ExpressionOp::kAbs, 1}, Function{"cos", ExpressionOp::kCos, 1},
-    Function{"exp", ExpressionOp::kExp, 1}, Function{"log", ExpressionOp::kLog, 1},
-    Function{"max", ExpressionOp::kMax, 2}, Function{"min", ExpressionOp::kMin, 2},
-    Function{"sin", ExpressionOp::kSin, 1}, Function{"sqrt", ExpressionOp::kSqrt, 1},
+    Function{"abs", ExpressionOp::kAbs, 1},   Function{"atan2", ExpressionOp::kAtan2, 2},
+    Function{"cos", ExpressionOp::kCos, 1},   Function{"exp", ExpressionOp::kExp, 1},
+    Function{"log", ExpressionOp::kLog, 1},   Function{"max", ExpressionOp::kMax, 2},
+    Function{"min", ExpressionOp::kMin, 2},   Function{"sin", ExpressionOp::kSin, 1},
+    Function{"sqrt", ExpressionOp::kSqrt, 1},
 };
 constexpr std::array<std::string_view, kFunctions.size()> kFunctionNames{
-    "abs", "cos", "exp", "log", "max", "min", "sin", "sqrt"};
+    "abs", "atan2", "cos", "exp", "log", "max", "min", "sin", "sqrt"};
 
 const Function* find_function(std::string_view name) {
     for (const Function& f : kFunctions)
@@ -499,6 +500,8 @@ private:
                 return std::min(a, b);
             case ExpressionOp::kMax:
                 return std::max(a, b);
+            case ExpressionOp::kAtan2:
+                return std::atan2(a, b);
             default:
                 return std::numeric_limits<double>::quiet_NaN();
         }
@@ -533,6 +536,7 @@ int stack_depth(std::span<const ExpressionInstruction> program) {
             case ExpressionOp::kPower:
             case ExpressionOp::kMin:
             case ExpressionOp::kMax:
+            case ExpressionOp::kAtan2:
                 --depth;
                 break;
             default:

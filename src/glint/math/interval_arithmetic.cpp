@@ -215,4 +215,24 @@ RealInterval max(RealInterval a, RealInterval b) {
     return {std::max(a.lo, b.lo), std::max(a.hi, b.hi)};
 }
 
+bool atan2_continuous(RealInterval y, RealInterval x) {
+    return !(x.lo <= 0 && y.lo <= 0 && y.hi >= 0);
+}
+
+RealInterval atan2(RealInterval y, RealInterval x) {
+    if (y.is_empty() || x.is_empty()) return RealInterval::empty();
+    constexpr double pi = std::numbers::pi;
+    if (!atan2_continuous(y, x)) return outward(-pi, pi);
+    // A convex set clear of the origin and the cut: its angles form an interval whose ends are
+    // the angles of extreme points, the box's corners (infinite ones as limits).
+    double lo = kInf, hi = -kInf;
+    for (const double yc : {y.lo, y.hi})
+        for (const double xc : {x.lo, x.hi}) {
+            const double a = std::atan2(yc, xc);
+            lo = std::min(lo, a);
+            hi = std::max(hi, a);
+        }
+    return {std::max(down(lo), -pi - 1e-15), std::min(up(hi), pi + 1e-15)};
+}
+
 }  // namespace glint

@@ -66,5 +66,11 @@ RealInterval cos(RealInterval a);
 RealInterval abs(RealInterval a);
 RealInterval min(RealInterval a, RealInterval b);
 RealInterval max(RealInterval a, RealInterval b);
+// The angle of the points (x, y), in [-pi, pi] with the cut along the negative x axis: from the
+// box's corners where the box keeps clear of the origin and the cut, else the whole [-pi, pi].
+RealInterval atan2(RealInterval y, RealInterval x);
+// Whether atan2 is continuous over the box: it holds neither the origin nor a point of the cut
+// (x <= 0, y = 0), where the angle jumps from pi to -pi.
+bool atan2_continuous(RealInterval y, RealInterval x);
 
 }  // namespace glint

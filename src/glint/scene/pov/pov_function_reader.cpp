@@ -31,8 +31,8 @@ constexpr Internal kInternals[] = {
     {68, "f_superellipsoid", 5,
      "1-((abs($0)^(2/$3)+abs($1)^(2/$3))^($3/$4)+abs($2)^(2/$4))^($4/2)"},
     {70, "f_torus", 5, "sqrt((sqrt($0^2+$2^2)-$3)^2+$1^2)-$4"},
-    {47, "f_ph", 3, ""},
-    {69, "f_th", 3, ""},
+    {47, "f_ph", 3, "atan2(sqrt($0^2+$2^2),$1)"},
+    {69, "f_th", 3, "atan2($0,$2)"},
     {76, "f_noise3d", 3, ""},
 };
 
@@ -71,6 +71,8 @@ const std::vector<Builtin>& builtins() {
         {"radians", 1, [](const Args& a) { return "(" + a[0] + "*pi/180)"; }},
         {"degrees", 1, [](const Args& a) { return "(" + a[0] + "*180/pi)"; }},
         {"pow", 2, [](const Args& a) { return "(" + a[0] + "^" + a[1] + ")"; }},
+        {"atan2", 2, [](const Args& a) { return "atan2(" + a[0] + "," + a[1] + ")"; }},
+        {"atan", 1, [](const Args& a) { return "atan2(" + a[0] + ",1)"; }},
         {"min", -1, [](const Args& a) { return folded("min", a); }},
         {"max", -1, [](const Args& a) { return folded("max", a); }},
     };
@@ -79,9 +81,9 @@ const std::vector<Builtin>& builtins() {
 
 // POV-Ray's other built-in functions, which glint's expressions cannot write yet.
 bool is_unwritable_builtin(std::string_view name) {
-    static constexpr std::string_view kOthers[] = {"acos",  "acosh", "asin", "asinh",  "atan",
-                                                   "atan2", "atanh", "ceil", "floor",  "int",
-                                                   "mod",   "prod",  "sum",  "select", "div"};
+    static constexpr std::string_view kOthers[] = {"acos", "acosh",  "asin", "asinh", "atanh",
+                                                   "ceil", "floor",  "int",  "mod",   "prod",
+                                                   "sum",  "select", "div"};
     return std::find(std::begin(kOthers), std::end(kOthers), name) != std::end(kOthers);
 }
 
