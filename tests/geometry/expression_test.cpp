@@ -7,6 +7,8 @@
 #include <random>
 #include <string>
 
+#include "glint/sampling/perlin_noise.h"
+
 namespace glint {
 namespace {
 
@@ -103,11 +105,11 @@ TEST(Expression, UnknownFunctionSuggestsTheNearestName) {
     EXPECT_EQ(e.length, 3u);
     EXPECT_EQ(e.message, "unknown function \"son\"");
     ASSERT_EQ(e.notes.size(), 1u);
-    EXPECT_EQ(
-        e.notes[0],
-        "functions are: abs, atan2, cos, exp, log, max, min, sin, sqrt (did you mean \"sin\"?)");
+    EXPECT_EQ(e.notes[0],
+              "functions are: abs, atan2, cos, exp, log, max, min, noise, sin, sqrt (did you mean "
+              "\"sin\"?)");
     EXPECT_EQ(error_of("frobnicate(x)").notes[0],
-              "functions are: abs, atan2, cos, exp, log, max, min, sin, sqrt");
+              "functions are: abs, atan2, cos, exp, log, max, min, noise, sin, sqrt");
 }
 
 TEST(Expression, UnknownNameListsCoordinatesAndConstants) {
@@ -242,6 +244,46 @@ TEST(Expression, Atan2IsTheAngleOfAPoint) {
     for (double t = 0.1; t <= 0.5; t += 0.05) {
         EXPECT_TRUE(before.value.contains(f.along_ray(up, t).value));
         EXPECT_TRUE(before.slope.contains(f.along_ray(up, t).slope));
+    }
+}
+
+// noise(a, b, c) is Perlin's noise at (a, b, c): its value and exact gradient, folded when
+// constant, and enclosures over boxes and ray segments that hold what it takes there.
+TEST(Expression, NoiseIsPerlinsNoiseWithEnclosures) {
+    const Expression f = compile("noise(2*x, y, z + 1)");
+    const Point3 p{0.3f, 1.7f, -0.4f};
+    EXPECT_DOUBLE_EQ(f.value(p.x, p.y, p.z), perlin_noise(Point3{0.6f, 1.7f, 0.6f}));
+    const Vector3 g = perlin_noise_gradient(Point3{0.6f, 1.7f, 0.6f});
+    const Expression::Gradient fg = f.gradient(p.x, p.y, p.z);
+    EXPECT_NEAR(fg.dx, 2 * g.x, 1e-6);
+    EXPECT_NEAR(fg.dy, g.y, 1e-6);
+    EXPECT_NEAR(fg.dz, g.z, 1e-6);
+    EXPECT_DOUBLE_EQ(compile("noise(0.5, 0.25, 0.125)").value(0, 0, 0),
+                     perlin_noise(Point3{0.5f, 0.25f, 0.125f}));
+    std::mt19937 rng(9);
+    std::uniform_real_distribution<double> u(-20, 20), unit(0, 1);
+    for (int i = 0; i < 300; ++i) {
+        RealInterval box[3];
+        for (auto& b : box) {
+            const double a = u(rng), w = unit(rng) * unit(rng) * 3;
+            b = {a, a + w};
+        }
+        const RealInterval r = f.range(box[0], box[1], box[2]);
+        EXPECT_GE(r.lo, -2);
+        EXPECT_LE(r.hi, 2);
+        for (int j = 0; j < 10; ++j) {
+            const double v = f.value(box[0].lo + unit(rng) * box[0].width(),
+                                     box[1].lo + unit(rng) * box[1].width(),
+                                     box[2].lo + unit(rng) * box[2].width());
+            ASSERT_TRUE(r.contains(v)) << v;
+        }
+    }
+    const Ray ray{{0.2f, -3, 1}, normalize(Vector3{1, 2, 0.5f})};
+    const Expression::RaySegment s = f.along_ray(ray, RealInterval{0, 2});
+    EXPECT_TRUE(s.continuous);
+    for (double t = 0; t <= 2; t += 0.02) {
+        EXPECT_TRUE(s.value.contains(f.along_ray(ray, t).value));
+        EXPECT_TRUE(s.slope.contains(f.along_ray(ray, t).slope));
     }
 }
 

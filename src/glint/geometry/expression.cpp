@@ -3,8 +3,11 @@
 // The value stack is a fixed array of Expression::kMaxStack entries: nothing is allocated.
 #include "glint/geometry/expression.h"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
+
+#include "glint/sampling/perlin_noise.h"
 
 namespace glint {
 
@@ -19,6 +22,28 @@ double power_int(double a, int n) {
         base *= base;
     }
     return result;
+}
+
+// Perlin's noise is at most 2 in magnitude (a blend of eight terms g . d, each at most 2) and
+// each of its partial derivatives at most 8.5 (the blend's weights change by 2 |fade'| <= 3.75
+// along an axis, times 2, plus the gradients' own components, at most 1).
+constexpr double kNoiseBound = 2, kNoiseSlope = 8.5;
+
+double noise_at(double x, double y, double z) {
+    return perlin_noise(Point3{float(x), float(y), float(z)});
+}
+
+// An enclosure of the noise over a box: its value at the centre, give or take the slope bound
+// over the half-widths (and the centre's rounding to float, and the noise's own in float).
+RealInterval noise_range(RealInterval x, RealInterval y, RealInterval z) {
+    if (x.is_empty() || y.is_empty() || z.is_empty()) return RealInterval::empty();
+    const RealInterval all{-kNoiseBound, kNoiseBound};
+    const double cx = 0.5 * (x.lo + x.hi), cy = 0.5 * (y.lo + y.hi), cz = 0.5 * (z.lo + z.hi);
+    const double spread = 0.5 * (x.width() + y.width() + z.width()) +
+                          3 * std::max({std::abs(cx), std::abs(cy), std::abs(cz)}) * 0x1p-23;
+    if (!std::isfinite(spread)) return all;
+    const double c = noise_at(cx, cy, cz), margin = kNoiseSlope * spread * (1 + 1e-12) + 1e-5;
+    return intersect({c - margin, c + margin}, all);
 }
 
 // The interpreter. A supplies the number type (A::Value) and its operations.
@@ -75,6 +100,10 @@ typename A::Value run(std::span<const ExpressionInstruction> program, A& a,
                 break;
             case ExpressionOp::kAbs:
                 last = a.abs(last);
+                break;
+            case ExpressionOp::kNoise:
+                top -= 2;
+                stack[top - 1] = a.noise(stack[top - 1], stack[top], stack[top + 1]);
                 break;
             default: {
                 --top;
@@ -135,6 +164,7 @@ struct Real {
     static double min(double a, double b) { return std::min(a, b); }
     static double max(double a, double b) { return std::max(a, b); }
     static double atan2(double a, double b) { return std::atan2(a, b); }
+    static double noise(double a, double b, double c) { return noise_at(a, b, c); }
 };
 
 // Forward-mode dual numbers with N partial derivatives: v + sum d_i eps_i, eps_i eps_j = 0.
@@ -201,6 +231,13 @@ struct Dual {
         for (int i = 0; i < N; ++i) r.d[i] = (b.v * a.d[i] - a.v * b.d[i]) / r2;
         return r;
     }
+    static Value noise(const Value& a, const Value& b, const Value& c) {
+        const Point3 p{float(a.v), float(b.v), float(c.v)};
+        const Vector3 g = perlin_noise_gradient(p);
+        Value r{perlin_noise(p)};
+        for (int i = 0; i < N; ++i) r.d[i] = g.x * a.d[i] + g.y * b.d[i] + g.z * c.d[i];
+        return r;
+    }
 };
 
 // Plain intervals: enclosures of the value only.
@@ -224,6 +261,7 @@ struct Intervals {
     static Value min(Value a, Value b) { return glint::min(a, b); }
     static Value max(Value a, Value b) { return glint::max(a, b); }
     static Value atan2(Value a, Value b) { return glint::atan2(a, b); }
+    static Value noise(Value a, Value b, Value c) { return noise_range(a, b, c); }
 };
 
 // Intervals with an enclosure of the derivative along one direction (the ray parameter t).
@@ -300,6 +338,10 @@ struct IntervalSlopes {
         if (!atan2_continuous(a.v, b.v)) continuous = false;
         const RealInterval r2 = glint::pow(a.v, 2) + glint::pow(b.v, 2);
         return {glint::atan2(a.v, b.v), (b.v * a.d - a.v * b.d) / r2};
+    }
+    static Value noise(const Value& a, const Value& b, const Value& c) {
+        const RealInterval slope{-kNoiseSlope, kNoiseSlope};
+        return {noise_range(a.v, b.v, c.v), slope * a.d + slope * b.d + slope * c.d};
     }
 };
 

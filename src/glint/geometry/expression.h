@@ -54,6 +54,7 @@ enum class ExpressionOp : std::uint8_t {
     kMin,
     kMax,
     kAtan2,  // atan2(a, b): the angle of the point (b, a)
+    kNoise,  // noise(a, b, c): Perlin's noise (sampling/perlin_noise.h) at the point (a, b, c)
 };
 
 struct ExpressionInstruction {
@@ -127,7 +128,8 @@ private:
 std::variant<Expression, ExpressionError> compile_expression(
     std::string_view source, const ExpressionConstants& constants = {});
 
-// The function names of the language, sorted: abs, atan2, cos, exp, log, max, min, sin, sqrt.
+// The function names of the language, sorted: abs, atan2, cos, exp, log, max, min, noise, sin,
+// sqrt.
 std::span<const std::string_view> expression_functions();
 
 }  // namespace glint

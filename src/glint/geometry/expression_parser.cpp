@@ -9,6 +9,7 @@
 #include <optional>
 
 #include "glint/geometry/expression.h"
+#include "glint/sampling/perlin_noise.h"
 
 namespace glint {
 
@@ -22,14 +23,14 @@ struct Function {
 
 // Sorted by name: the error notes list them in this order.
 constexpr std::array kFunctions{
-    Function{"abs", ExpressionOp::kAbs, 1},   Function{"atan2", ExpressionOp::kAtan2, 2},
-    Function{"cos", ExpressionOp::kCos, 1},   Function{"exp", ExpressionOp::kExp, 1},
-    Function{"log", ExpressionOp::kLog, 1},   Function{"max", ExpressionOp::kMax, 2},
-    Function{"min", ExpressionOp::kMin, 2},   Function{"sin", ExpressionOp::kSin, 1},
-    Function{"sqrt", ExpressionOp::kSqrt, 1},
+    Function{"abs", ExpressionOp::kAbs, 1}, Function{"atan2", ExpressionOp::kAtan2, 2},
+    Function{"cos", ExpressionOp::kCos, 1}, Function{"exp", ExpressionOp::kExp, 1},
+    Function{"log", ExpressionOp::kLog, 1}, Function{"max", ExpressionOp::kMax, 2},
+    Function{"min", ExpressionOp::kMin, 2}, Function{"noise", ExpressionOp::kNoise, 3},
+    Function{"sin", ExpressionOp::kSin, 1}, Function{"sqrt", ExpressionOp::kSqrt, 1},
 };
 constexpr std::array<std::string_view, kFunctions.size()> kFunctionNames{
-    "abs", "atan2", "cos", "exp", "log", "max", "min", "sin", "sqrt"};
+    "abs", "atan2", "cos", "exp", "log", "max", "min", "noise", "sin", "sqrt"};
 
 const Function* find_function(std::string_view name) {
     for (const Function& f : kFunctions)
@@ -353,8 +354,9 @@ private:
                             (function->arity == 1 ? " argument" : " arguments") + ", got " +
                             std::to_string(arguments));
         }
-        const bool ok = function->arity == 1 ? emit_unary(function->op, name_token.offset)
-                                             : emit_binary(function->op);
+        const bool ok = function->arity == 1   ? emit_unary(function->op, name_token.offset)
+                        : function->arity == 2 ? emit_binary(function->op)
+                                               : emit_noise();
         if (!ok) return false;
         operands_.back().begin = name_token.offset;
         operands_.back().end = end;
@@ -443,6 +445,15 @@ private:
             return true;
         }
         return push_op(ExpressionInstruction{op}, 2);
+    }
+
+    bool emit_noise() {
+        const Operand* p = &operands_[operands_.size() - 3];
+        if (p[0].constant && p[1].constant && p[2].constant) {
+            fold(3, perlin_noise(Point3{float(p[0].value), float(p[1].value), float(p[2].value)}));
+            return true;
+        }
+        return push_op(ExpressionInstruction{ExpressionOp::kNoise}, 3);
     }
 
     bool emit_power() {
@@ -538,6 +549,9 @@ int stack_depth(std::span<const ExpressionInstruction> program) {
             case ExpressionOp::kMax:
             case ExpressionOp::kAtan2:
                 --depth;
+                break;
+            case ExpressionOp::kNoise:
+                depth -= 2;
                 break;
             default:
                 break;  // unary: one in, one out

@@ -6,18 +6,9 @@
 
 #include "glint/math/color.h"
 #include "glint/math/vector.h"
+#include "glint/sampling/perlin_noise.h"
 
 namespace glint {
-
-// Ken Perlin's improved noise (Perlin 2002, "Improving Noise"): gradient noise on the integer
-// lattice with the quintic fade 6t^5 - 15t^4 + 10t^3 and the 12 cube-edge gradients. Range about
-// [-1, 1] (2e6 samples reach +-1.006), gradient length below 3.5, 0 at every lattice point,
-// C2-continuous, period 256 in each axis. Defined for every finite point; a NaN or infinite
-// coordinate gives 0.
-float perlin_noise(Point3 p);
-
-// The exact gradient of perlin_noise at p, for bump mapping; 0 for a non-finite p.
-Vector3 perlin_noise_gradient(Point3 p);
 
 // Three of those noises far apart in space: a random vector field, each component in about
 // [-1, 1] (Perlin's DNoise), for turbulence and for bumps.

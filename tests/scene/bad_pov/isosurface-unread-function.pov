@@ -1,4 +1,4 @@
-// error: 4:14: the isosurface's function uses f_noise3d, which glint does not compute yet
+// error: 4:14: the isosurface's function uses f_ridged_mf, which glint does not compute yet
 // note: docs/povray.md lists what glint reads
-#declare f_noise3d = function { internal(76) }
-isosurface { function { y - f_noise3d(x, y, z) } contained_by { box { -1, 1 } } }
+#declare f_ridged_mf = function { internal(59) }
+isosurface { function { y - f_ridged_mf(x, y, z, 0.5, 2, 6, 1, 2, 1) } contained_by { box { -1, 1 } } }

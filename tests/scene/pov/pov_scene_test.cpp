@@ -11,6 +11,7 @@
 #include <functional>
 #include <numbers>
 
+#include "glint/sampling/perlin_noise.h"
 #include "glint/scene/scene_error.h"
 
 namespace glint {
@@ -527,8 +528,10 @@ TEST(PovScene, IsosurfacesAreImplicitSurfacesInTheirContainers) {
         isosurface { function { Shifted(x, y, z, 1) } contained_by { box { -2, 2 } } }
         isosurface { function { pow(x, 2) + y*y + z^2 } threshold 1 open
                      contained_by { sphere { 0, 2 } } }
-        isosurface { function { y - ln(exp(tan(x) * 0)) - max(-5, u, -3) } open })");
-    ASSERT_EQ(s.objects.size(), 3u);
+        isosurface { function { y - ln(exp(tan(x) * 0)) - max(-5, u, -3) } open }
+        #declare f_noise3d = function { internal(76) }
+        isosurface { function { f_noise3d(x, 2 * y, z) - 0.5 } })");
+    ASSERT_EQ(s.objects.size(), 4u);
     const auto* closed = std::get_if<Csg>(&s.objects[0].shape);
     ASSERT_TRUE(closed);
     EXPECT_EQ(closed->operation, CsgOperation::intersection);
@@ -546,6 +549,9 @@ TEST(PovScene, IsosurfacesAreImplicitSurfacesInTheirContainers) {
     const auto& plain = std::get<ImplicitSurface>(s.objects[2].shape);
     EXPECT_NEAR(plain.f->value(-4, 0.25, 0), 0.25 + 3, 1e-12);
     EXPECT_EQ(plain.region.max, (Point3{1, 1, 1}));
+    // POV-Ray's f_noise3d, in [0, 1]: glint's noise mapped there.
+    const auto& noisy = std::get<ImplicitSurface>(*std::get<Csg>(s.objects[3].shape).a);
+    EXPECT_NEAR(noisy.f->value(0.3, 0.2, 0.7), 0.5 * perlin_noise(Point3{0.3f, 0.4f, 0.7f}), 1e-7);
 
     EXPECT_NE(error_of("#declare N = function { internal(80) }\n"
                        "isosurface { function { y + N(x, y, z) } }")

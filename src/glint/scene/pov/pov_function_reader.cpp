@@ -32,8 +32,10 @@ constexpr Internal kInternals[] = {
      "1-((abs($0)^(2/$3)+abs($1)^(2/$3))^($3/$4)+abs($2)^(2/$4))^($4/2)"},
     {70, "f_torus", 5, "sqrt((sqrt($0^2+$2^2)-$3)^2+$1^2)-$4"},
     {47, "f_ph", 3, "atan2(sqrt($0^2+$2^2),$1)"},
+    {59, "f_ridged_mf", 9, ""},
     {69, "f_th", 3, "atan2($0,$2)"},
-    {76, "f_noise3d", 3, ""},
+    // POV-Ray's noise lies in [0, 1]; glint's Perlin noise, which looks alike, in [-1, 1].
+    {76, "f_noise3d", 3, "(0.5+0.5*noise($0,$1,$2))"},
 };
 
 // A built-in function of POV-Ray's function language as glint's expression text of its
