@@ -922,6 +922,25 @@ TEST(PovScene, JuliaFractalsAreGlintsJuliaSets) {
               std::string::npos);
 }
 
+// interior { dispersion D }: the index runs from ior / sqrt(D) at the red end (700 nm) to
+// ior sqrt(D) at the violet (400 nm) on glint's Cauchy formula, rendered by the distributed
+// integrator with at least dispersion_samples samples a pixel.
+TEST(PovScene, DispersionIsCauchysFormulaThroughTheSpectrumsEnds) {
+    const Scene s = parse(
+        "sphere { 0, 1 pigment { rgbf 1 } interior { ior 1.5 dispersion 1.1 "
+        "dispersion_samples 12 } }");
+    const Material& m = s.materials[s.objects[0].material];
+    EXPECT_EQ(m.dispersion.model, DispersionModel::cauchy);
+    EXPECT_NEAR(refractive_index(m.dispersion, m.ior, 700), 1.5 / std::sqrt(1.1), 1e-5);
+    EXPECT_NEAR(refractive_index(m.dispersion, m.ior, 400), 1.5 * std::sqrt(1.1), 1e-5);
+    EXPECT_NEAR(m.ior, refractive_index(m.dispersion, m.ior, kReferenceWavelength), 1e-6);
+    EXPECT_EQ(s.settings.integrator, IntegratorKind::distributed);
+    EXPECT_EQ(s.settings.samples_per_pixel, 12);
+    EXPECT_NE(error_of("sphere { 0, 1 interior { dispersion 0 } }")
+                  .find("scene.pov:1:37: error: dispersion must be in (0.5, 2), got 0"),
+              std::string::npos);
+}
+
 TEST(PovScene, MaterialsGiveTextureAndInterior) {
     const Scene s = parse(R"(
         #declare Glass = material { texture { pigment { rgbf <1, 0, 0, 0.5> } } interior { ior 1.5 } }

@@ -827,10 +827,17 @@ PovInterior PovItemReader::interior(const PovInterior& base) {
         if (token.is_symbol("}")) return in;
         if (token.is_word("ior"))
             in.ior = parser_.finite_float("after ior");
-        else if (token.is_word("dispersion"))
+        else if (token.is_word("dispersion")) {
+            const PovToken at = parser_.peek();
             in.dispersion = parser_.finite_float("after dispersion");
+            if (!(in.dispersion > 0.5 && in.dispersion < 2))
+                throw parser_.error_at(
+                    at, "dispersion must be in (0.5, 2), got " + format_pov_number(in.dispersion),
+                    {"1 is none; POV-Ray suggests 1.01 to 1.1"});
+        } else if (token.is_word("dispersion_samples"))
+            in.dispersion_samples = parser_.whole_number("after dispersion_samples", 2, 1 << 10);
         else if (token.is_word("fade_distance") || token.is_word("fade_power") ||
-                 token.is_word("caustics") || token.is_word("dispersion_samples"))
+                 token.is_word("caustics"))
             parser_.finite_float("in an interior");  // read; the absorption is not rendered yet
         else if (token.is_word("fade_color") || token.is_word("fade_colour"))
             parser_.color_expression("in an interior");

@@ -105,7 +105,8 @@ struct PovTexture {
 
 struct PovInterior {
     double ior = 1;
-    double dispersion = 1;
+    double dispersion = 1;  // the index's ratio from the red end of the spectrum to the violet
+    int dispersion_samples = 7;
 };
 
 // material { texture interior }: what it gives; null where it gives nothing.
