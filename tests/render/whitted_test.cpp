@@ -142,6 +142,18 @@ TEST(Whitted, ObjectThatCastsNoShadowLetsTheLightThrough) {
     expect_near(WhittedIntegrator(world).trace(down, 2, 1, stats), Color::gray(0.6f));
 }
 
+// A light that casts no shadows (POV-Ray's shadowless) sends no feeler: the occluder that does
+// cast shadows lets its light through all the same.
+TEST(Whitted, ALightWithoutShadowsSendsNoFeeler) {
+    Scene scene = shadow_scene(true);
+    std::get<PointLight>(scene.lights[0]).casts_shadows = false;
+    const World world(scene);
+    RayStats stats;
+    const Ray down{{0, 0.05f, 0}, {0, -1, 0}};
+    expect_near(WhittedIntegrator(world).trace(down, 2, 1, stats), Color::gray(0.6f));
+    EXPECT_EQ(stats[RayKind::shadow], 0u);
+}
+
 TEST(Whitted, TransparentShadowsMultiplyTheTransmitOfEachSurfaceCrossed) {
     Scene scene = shadow_scene(true);
     scene.settings.transparent_shadows = true;

@@ -267,7 +267,7 @@ TEST(YamlScene, LightsScaleColorByIntensityAndNormaliseDirections) {
                               "lights:\n"
                               "  - {type: point, position: [1, 2, 3], color: [1, 0.5, 0], "
                               "intensity: 2, attenuation: [0, 0, 1]}\n"
-                              "  - {type: directional, direction: [0, -2, 0]}\n"
+                              "  - {type: directional, direction: [0, -2, 0], shadows: false}\n"
                               "  - {type: point, position: [0, 0, 0]}\n");
     ASSERT_EQ(scene.lights.size(), 3u);
     const auto& point = std::get<PointLight>(scene.lights[0]);
@@ -278,6 +278,8 @@ TEST(YamlScene, LightsScaleColorByIntensityAndNormaliseDirections) {
     const auto& sun = std::get<DirectionalLight>(scene.lights[1]);
     EXPECT_EQ(sun.direction, (Vector3{0, -1, 0}));
     EXPECT_EQ(sun.color, Color::gray(1));
+    EXPECT_FALSE(sun.casts_shadows);
+    EXPECT_TRUE(point.casts_shadows);
     const auto& plain = std::get<PointLight>(scene.lights[2]);
     EXPECT_EQ(plain.color, Color::gray(1));
     EXPECT_EQ(plain.attenuation.constant, 1);

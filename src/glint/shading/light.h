@@ -21,10 +21,13 @@ struct Attenuation {
     float quadratic = 0;
 };
 
+// Every light casts shadows unless `casts_shadows` is false: then its shadow feelers are not
+// traced and it lights every surface facing it, as POV-Ray's shadowless fill lights do.
 struct PointLight {
     Point3 position;
     Color color{1, 1, 1};
     Attenuation attenuation;
+    bool casts_shadows = true;
 };
 
 // A point light that shines into a cone: full intensity within the falloff's start, none beyond
@@ -37,11 +40,13 @@ struct SpotLight {
         0.866025f;  // cosine of the half-angle where the falloff starts; >= cos_cone
     Color color{1, 1, 1};
     Attenuation attenuation;
+    bool casts_shadows = true;
 };
 
 struct DirectionalLight {
     Vector3 direction{0, -1, 0};  // unit; the way the light travels
     Color color{1, 1, 1};
+    bool casts_shadows = true;
 };
 
 // A light with an extent, for soft shadows (Cook, Porter and Carpenter 1984). Its colour is that
@@ -58,6 +63,7 @@ struct AreaLight {
     Attenuation attenuation;
     // Shadow rays a sample sends to it; 0 takes the scene's image.shadow_rays.
     int shadow_rays = 0;
+    bool casts_shadows = true;
 };
 
 AreaLight sphere_light(Point3 center, float radius);
@@ -70,6 +76,10 @@ std::optional<AreaLight> rectangle_light(Point3 center, Vector3 u, Vector3 v);
 Point3 point_seen_from(const AreaLight& light, Point3 p, Point2 u);
 
 using Light = std::variant<PointLight, SpotLight, DirectionalLight, AreaLight>;
+
+inline bool casts_shadows(const Light& light) {
+    return std::visit([](const auto& l) { return l.casts_shadows; }, light);
+}
 
 // What a surface point receives from one light, before shadowing.
 struct LightSample {

@@ -53,6 +53,21 @@ TEST(PovScene, AngleIsHorizontalAndLookAtTurnsTheView) {
     EXPECT_FALSE(parse("camera { right -1.33*x look_at z }").camera.left_handed);
 }
 
+// shadowless: the light casts no shadows, whatever its kind.
+TEST(PovScene, ShadowlessLightsCastNoShadows) {
+    const Scene s = parse(R"(
+        light_source { <0, 9, 0> color 1 shadowless }
+        light_source { <0, 9, 0> color 1 parallel point_at 0 shadowless }
+        light_source { <0, 9, 0> color 1 area_light x, z, 2, 2 shadowless }
+        light_source { <0, 9, 0> color 1 })");
+    ASSERT_EQ(s.lights.size(), 4u);
+    EXPECT_FALSE(casts_shadows(s.lights[0]));
+    EXPECT_FALSE(casts_shadows(s.lights[1]));
+    EXPECT_FALSE(casts_shadows(s.lights[2]));
+    EXPECT_TRUE(casts_shadows(s.lights[3]));
+    EXPECT_TRUE(s.warnings.empty());
+}
+
 TEST(PovScene, LightsBackgroundAndGlobalSettings) {
     const Scene s = parse(R"(
         #version 3.7;

@@ -8,6 +8,7 @@ namespace glint {
 float ShadowFeelers::transmittance(std::size_t light, const SurfacePoint& sp, Normal3 n,
                                    Vector3 to_light, float light_distance, float time,
                                    RayStats& stats) {
+    if (light != kNoLight && !casts_shadows(world_.lights()[light])) return 1;
     if (light != kNoLight)
         if (const ShadowMap* map = world_.shadow_map(light)) {
             Lookup& last = last_lookup_[light];

@@ -254,9 +254,7 @@ private:
     // A light_source onto glint's point, spot, directional, rectangle or disk light.
     void light(const PovLight& pov, const Transform& parent) {
         const Transform placed = parent * pov.transform;
-        if (pov.shadowless)
-            scene_.warnings.push_back(files_.name(pov.at.file) + ":" + std::to_string(pov.at.line) +
-                                      ": shadowless light_source casts shadows in glint");
+        const bool shadows = !pov.shadowless;
         const Point3 at = placed(to_point(pov.position));
         if (pov.looks_like) {
             // POV-Ray moves the object to the light; it casts no shadow, so the light shines.
@@ -275,7 +273,7 @@ private:
                 attenuation = {0.5f, 0, 1 / (2 * fd * fd)};
         }
         if (pov.kind == PovLight::Kind::parallel) {
-            scene_.lights.push_back(DirectionalLight{normalize(target - at), c});
+            scene_.lights.push_back(DirectionalLight{normalize(target - at), c, shadows});
             return;
         }
         if (pov.kind == PovLight::Kind::spot) {
@@ -287,6 +285,7 @@ private:
             s.cos_falloff = float(std::cos(std::min(pov.radius, cone) * std::numbers::pi / 180));
             s.color = c;
             s.attenuation = attenuation;
+            s.casts_shadows = shadows;
             scene_.lights.push_back(s);
             return;
         }
@@ -300,12 +299,13 @@ private:
                 a.color = c;
                 a.attenuation = attenuation;
                 a.shadow_rays = pov.n1 * pov.n2;
+                a.casts_shadows = shadows;
                 scene_.lights.push_back(a);
                 any_area_light_ = true;
                 return;
             }
         }
-        scene_.lights.push_back(PointLight{at, c, attenuation});
+        scene_.lights.push_back(PointLight{at, c, attenuation, shadows});
     }
 
     void background(const PovToken&) {

@@ -24,6 +24,11 @@ const KeySchema kVisible{"visible", "bool", "true",
                          "the light's face is an object that the camera and mirrors see, glowing "
                          "in `color × intensity`; it casts no shadow",
                          ""};
+const KeySchema kShadows{"shadows", "bool", "true",
+                         "whether objects shadow the light; `false` lights every surface facing "
+                         "it, as POV-Ray's `shadowless` fill lights (the Whitted family and path "
+                         "tracing's light samples; particles from the light still stop at objects)",
+                         ""};
 const KeySchema kAreaAttenuation{"attenuation", "`[constant, linear, quadratic]`",
                                  "`[1, 0, 0]` (none)",
                                  "intensity at distance d is `color / (constant + linear·d + "
@@ -32,7 +37,8 @@ const KeySchema kAreaAttenuation{"attenuation", "`[constant, linear, quadratic]`
 
 // An area light: its shape's keys, then those every area light takes.
 EntitySchema area_light(std::string_view name, std::vector<KeySchema> keys) {
-    keys.insert(keys.end(), {kShadowRays, kVisible, kColor, kIntensity, kAreaAttenuation});
+    keys.insert(keys.end(),
+                {kShadowRays, kVisible, kColor, kIntensity, kAreaAttenuation, kShadows});
     return {EntityFamily::light, name, std::move(keys)};
 }
 
@@ -47,6 +53,7 @@ std::vector<EntitySchema> light_schemas() {
              kColor,
              kIntensity,
              kAttenuation,
+             kShadows,
          }},
         {EntityFamily::light,
          "directional",
@@ -55,6 +62,7 @@ std::vector<EntitySchema> light_schemas() {
               "the way the light travels (e.g. `[0, -1, 0]` shines down); normalised", "non-zero"},
              kColor,
              kIntensity,
+             kShadows,
          }},
         {EntityFamily::light,
          "spot",
@@ -73,6 +81,7 @@ std::vector<EntitySchema> light_schemas() {
              kColor,
              kIntensity,
              kAttenuation,
+             kShadows,
          }},
         area_light("sphere",
                    {

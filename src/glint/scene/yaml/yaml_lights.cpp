@@ -46,6 +46,7 @@ LightEntry parse_point(const MapReader& map) {
     light.position = map.point("position");
     light.color = read_emitted(map);
     light.attenuation = read_attenuation(map);
+    light.casts_shadows = map.boolean("shadows", true);
     return {light, std::nullopt};
 }
 
@@ -85,6 +86,7 @@ LightEntry parse_spot(const MapReader& map) {
     light.cos_falloff = std::cos(radians(cone - falloff));
     light.color = read_emitted(map);
     light.attenuation = read_attenuation(map);
+    light.casts_shadows = map.boolean("shadows", true);
     return {light, std::nullopt};
 }
 
@@ -92,6 +94,7 @@ LightEntry parse_directional(const MapReader& map) {
     DirectionalLight light;
     light.direction = map.direction("direction");
     light.color = read_emitted(map);
+    light.casts_shadows = map.boolean("shadows", true);
     return {light, std::nullopt};
 }
 
@@ -100,6 +103,7 @@ LightEntry area_light(const MapReader& map, AreaLight light) {
     light.color = read_emitted(map);
     light.attenuation = read_attenuation(map);
     light.shadow_rays = map.integer_or("shadow_rays", 0);
+    light.casts_shadows = map.boolean("shadows", true);
     LightEntry entry{light, std::nullopt};
     if (map.boolean("visible", true))
         entry.visible_shape =
