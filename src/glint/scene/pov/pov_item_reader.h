@@ -2,10 +2,12 @@
 // stream, as the items of a scene or the values of #declare.
 #pragma once
 
+#include <functional>
 #include <memory>
 #include <optional>
 #include <set>
 #include <string>
+#include <string_view>
 #include <variant>
 #include <vector>
 
@@ -39,6 +41,9 @@ public:
     PovPigment pigment_body(const PovPigment& base, std::string_view closing);
     // pigment_map { [value pigment-body] ... }: a colour map whose stops hold pigments.
     PovColorMap pigment_map(const PovToken& keyword);
+    // A map's braces and [value ...] entries, each read past its value by `entry`; sorted.
+    PovColorMap blend_map(const PovToken& keyword, std::string_view entry_kind,
+                          const std::function<void(double, PovColorMap&)>& entry);
     // normal { [declared] pattern [amount] modifiers } over `base` (pov_normal_reader.cpp).
     PovNormal normal(const std::optional<PovNormal>& base);
     PovColorMap color_map(const PovToken& keyword);

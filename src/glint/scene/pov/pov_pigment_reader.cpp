@@ -64,7 +64,8 @@ PovColorMap black_to_white() {
 
 }  // namespace
 
-PovColorMap PovItemReader::color_map(const PovToken& keyword) {
+PovColorMap PovItemReader::blend_map(const PovToken& keyword, std::string_view entry_kind,
+                                     const std::function<void(double, PovColorMap&)>& entry) {
     parser_.expect("{", "after " + keyword.text);
     PovColorMap map;
     if (auto d = take_declared<PovColorMap>()) {
@@ -77,8 +78,21 @@ PovColorMap PovItemReader::color_map(const PovToken& keyword) {
         if (map.stops.size() + 2 > kMaxColorMapEntries)
             throw parser_.error_at(t, keyword.text + " has more than " +
                                           std::to_string(kMaxColorMapEntries) + " entries");
-        const double a = parser_.finite_float("as the entry's value");
+        const double at = parser_.finite_float("as the entry's value");
         parser_.accept(",");
+        entry(at, map);
+    }
+    if (map.stops.empty())
+        throw parser_.error_at(
+            keyword, keyword.text + " needs at least one [value " + std::string(entry_kind) + "]");
+    // POV-Ray looks entries up in their order; written out of order, they are taken sorted.
+    std::stable_sort(map.stops.begin(), map.stops.end(),
+                     [](const PovColorStop& x, const PovColorStop& y) { return x.at < y.at; });
+    return map;
+}
+
+PovColorMap PovItemReader::color_map(const PovToken& keyword) {
+    return blend_map(keyword, "colour", [&](double a, PovColorMap& map) {
         const PovToken& next = parser_.peek();
         const PovValue* declared_value =
             next.kind == PovTokenKind::identifier ? parser_.symbols().find(next.text) : nullptr;
@@ -90,19 +104,13 @@ PovColorMap PovItemReader::color_map(const PovToken& keyword) {
             const PovVector c1 = parser_.color_expression("as the entry's first colour");
             parser_.accept(",");
             const PovVector c2 = parser_.color_expression("as the entry's second colour");
-            map.stops.push_back({a, c1});
-            map.stops.push_back({b, c2});
+            map.stops.push_back({a, c1, nullptr});
+            map.stops.push_back({b, c2, nullptr});
         } else {
-            map.stops.push_back({a, parser_.color_expression("as the entry's colour")});
+            map.stops.push_back({a, parser_.color_expression("as the entry's colour"), nullptr});
         }
         parser_.expect("]", "after the entry's colour");
-    }
-    if (map.stops.empty())
-        throw parser_.error_at(keyword, keyword.text + " needs at least one [value colour]");
-    // POV-Ray looks entries up in their order; written out of order, they are taken sorted.
-    std::stable_sort(map.stops.begin(), map.stops.end(),
-                     [](const PovColorStop& x, const PovColorStop& y) { return x.at < y.at; });
-    return map;
+    });
 }
 
 PovPigment PovItemReader::pattern(const PovToken& name) {
@@ -220,31 +228,11 @@ bool PovItemReader::pattern_modifier(const PovToken& token, PovPigment& p) {
 }
 
 PovColorMap PovItemReader::pigment_map(const PovToken& keyword) {
-    parser_.expect("{", "after " + keyword.text);
-    PovColorMap map;
-    if (auto d = take_declared<PovColorMap>()) {
-        map = *d;
-    }
-    for (PovToken t = parser_.next(); !t.is_symbol("}"); t = parser_.next()) {
-        if (!t.is_symbol("["))
-            throw parser_.error_at(
-                t, "expected '[' or '}' in " + keyword.text + ", got " + describe(t));
-        if (map.stops.size() + 1 > kMaxColorMapEntries)
-            throw parser_.error_at(t, keyword.text + " has more than " +
-                                          std::to_string(kMaxColorMapEntries) + " entries");
-        PovColorStop stop;
-        stop.at = parser_.finite_float("as the entry's value");
-        parser_.accept(",");
-        auto entry = std::make_shared<const PovPigment>(pigment_body({}, "]"));
-        stop.color = entry->color;
-        stop.pigment = std::move(entry);
-        map.stops.push_back(std::move(stop));
-    }
-    if (map.stops.empty())
-        throw parser_.error_at(keyword, keyword.text + " needs at least one [value pigment]");
-    std::stable_sort(map.stops.begin(), map.stops.end(),
-                     [](const PovColorStop& x, const PovColorStop& y) { return x.at < y.at; });
-    return map;
+    return blend_map(keyword, "pigment", [&](double at, PovColorMap& map) {
+        auto pigment = std::make_shared<const PovPigment>(pigment_body({}, "]"));
+        const PovVector color = pigment->color;
+        map.stops.push_back({at, color, std::move(pigment)});
+    });
 }
 
 PovPigment PovItemReader::pigment(const PovPigment& base) {
