@@ -583,6 +583,10 @@ TEST(PovScene, IsosurfacesAreImplicitSurfacesInTheirContainers) {
     EXPECT_NE(error_of("#declare F = function(a) { a }\nisosurface { function { F(x, y) } }")
                   .find("scene.pov:2:25: error: \"F\" takes 1 arguments, got 2"),
               std::string::npos);
+    EXPECT_NE(error_of("isosurface { function { " + std::string(300, '(') + "x" +
+                       std::string(300, ')') + " } }")
+                  .find("the function nests deeper than 200 levels"),
+              std::string::npos);
     EXPECT_NE(error_of("isosurface { function { w } }")
                   .find("\"w\" is not a parameter, a declared float or a function"),
               std::string::npos);

@@ -71,8 +71,8 @@ Shape PovItemReader::isosurface(const PovToken& keyword) {
         } else if (ahead.is_word("accuracy") || ahead.is_word("max_gradient") ||
                    ahead.is_word("max_trace")) {
             // POV-Ray's search settings: glint's interval search needs none.
-            parser_.next();
-            parser_.finite_float("after " + ahead.text);
+            const PovToken setting = parser_.next();
+            parser_.finite_float("after " + setting.text);
         } else if (ahead.is_word("evaluate")) {
             parser_.next();
             for (int i = 0; i < 3; ++i) {
