@@ -29,6 +29,17 @@ TEST(Camera, CornerRaysOfThePerspectiveWindow) {
     EXPECT_EQ(camera.generate_ray({0, 0}).origin, (Point3{0, 0, 0}));
 }
 
+// A view of its own shape, 1:2 on the same 2:1 image: the window spans x' in [-0.5, 0.5], and
+// the image stretches it.
+TEST(Camera, AViewOfItsOwnShapeIsStretchedOverTheImage) {
+    CameraSpec spec;
+    spec.from = {0, 0, 0}, spec.at = {0, 0, 1}, spec.up = {0, 1, 0}, spec.fov = 90;
+    spec.aspect = 0.5f;
+    const Camera camera(spec, 200, 100);
+    expect_near(camera.generate_ray({0, 0}).direction, normalize(Vector3{0.5f, 1, 1}));
+    expect_near(camera.generate_ray({200, 100}).direction, normalize(Vector3{-0.5f, -1, 1}));
+}
+
 // POV-Ray's cameras are left-handed: right = up x forward, so the same view is mirrored.
 TEST(Camera, ALeftHandedCameraHasRightOnTheOtherSide) {
     CameraSpec spec;

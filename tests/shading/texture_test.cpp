@@ -50,6 +50,19 @@ TEST(Texture, OnlyUvCheckersAndImagesNeedUv) {
     EXPECT_EQ(uv_needed(NoiseTexture{}), Uv::skip);
 }
 
+TEST(Texture, MapsAndLayersNeedUvWhenAnyPartDoes) {
+    auto map = std::make_shared<PigmentMap>();
+    map->entries = {{0, kWhite}, {1, kBlack}};
+    EXPECT_EQ(uv_needed(PigmentMapPtr(map)), Uv::skip);
+    map->entries[1].texture = ImageTexture{};
+    EXPECT_EQ(uv_needed(PigmentMapPtr(map)), Uv::compute);
+    auto layered = std::make_shared<LayeredTexture>();
+    layered->layers = {{kWhite, kBlack}, {PigmentMapPtr(map), kBlack}};
+    EXPECT_EQ(uv_needed(LayeredTexturePtr(layered)), Uv::compute);
+    layered->layers.pop_back();
+    EXPECT_EQ(uv_needed(LayeredTexturePtr(layered)), Uv::skip);
+}
+
 // A pigment map: gradient x over [0, 2] (the map scaled by 2) blends red at 0 into, at 1, a
 // solid checker scaled by 0.5 inside the map's space, so of unit cells in the scene's. At x = 1
 // the pattern is 1/2: half red, half the checker there, whose cell (1, 0, 0) is odd: white.
@@ -71,6 +84,48 @@ TEST(Texture, PigmentMapBlendsItsEntriesTextures) {
     // POV-Ray's average: the entries weighted by their values, 0 and 1: the checker alone.
     map->average = true;
     EXPECT_EQ(evaluate(texture, at({1, 0.25f, 0.25f})), (Color{1, 1, 1}));
+}
+
+// A red top layer with filter 1/2 and transmit 1/4 over an opaque one of diffuse weight 2 and
+// ambient weight 4: the top covers by 1 - 1/2 - 1/4 = 1/4 and lets through
+// 1/2 (0.5, 0, 0) + 1/4 = (0.5, 0.25, 0.25), so
+//   C = 1/4 (0.5, 0, 0) + (0.5, 0.25, 0.25) (0.2, 0.4, 0.8) 2 = (0.325, 0.2, 0.4),
+//   C_ambient = 1/4 (0.5, 0, 0) + (0.5, 0.25, 0.25) (0.2, 0.4, 0.8) 4 = (0.525, 0.4, 0.8).
+// POV-Ray 3.6's opacity is 1 - (1/2 0.5 + 1/4) = 1/2 instead: C = (0.45, 0.2, 0.4).
+TEST(Texture, LayersLetWhatLiesBelowThroughByTheirFilterAndTransmit) {
+    auto layered = std::make_shared<LayeredTexture>();
+    layered->layers = {{Color{0.5f, 0, 0}, Color{0.5f, 0.25f, 0}},
+                       {Color{0.2f, 0.4f, 0.8f}, kBlack, 2, 4}};
+    const Texture texture = LayeredTexturePtr(layered);
+    const Color c = evaluate(texture, at({}));
+    EXPECT_FLOAT_EQ(c.r, 0.325f);
+    EXPECT_FLOAT_EQ(c.g, 0.2f);
+    EXPECT_FLOAT_EQ(c.b, 0.4f);
+    const Color ambient = evaluate_layers(*layered, at({})).ambient;
+    EXPECT_FLOAT_EQ(ambient.r, 0.525f);
+    EXPECT_FLOAT_EQ(ambient.g, 0.4f);
+    EXPECT_FLOAT_EQ(ambient.b, 0.8f);
+    layered->legacy_opacity = true;
+    const Color legacy = evaluate(texture, at({}));
+    EXPECT_FLOAT_EQ(legacy.r, 0.45f);
+    EXPECT_FLOAT_EQ(legacy.g, 0.2f);
+    EXPECT_FLOAT_EQ(legacy.b, 0.4f);
+}
+
+// Transmit varying over the surface, from 0 at x = 0 to 1 at x = 1 (a gradient through a colour
+// map of the second source): a white top over a black bottom is 1 - x white. An opaque top hides
+// the layers below it.
+TEST(Texture, LayersFilterAndTransmitMayVaryOverTheSurface) {
+    auto transmit = std::make_shared<PatternTexture>();
+    transmit->spec.kind = PatternKind::gradient;
+    transmit->colors = {{0, Color{0, 0, 0}}, {1, Color{0, 1, 0}}};
+    auto layered = std::make_shared<LayeredTexture>();
+    layered->layers = {{kWhite, PatternTexturePtr(transmit)}, {kBlack, kBlack}};
+    const Texture texture = LayeredTexturePtr(layered);
+    EXPECT_FLOAT_EQ(evaluate(texture, at({0.25f, 0, 0})).g, 0.75f);
+    EXPECT_FLOAT_EQ(evaluate(texture, at({0.75f, 0, 0})).g, 0.25f);
+    layered->layers = {{kWhite, kBlack}, {Color{1, 0, 0}, kBlack}};
+    EXPECT_EQ(evaluate(texture, at({})), kWhite);
 }
 
 }  // namespace

@@ -67,7 +67,7 @@ Camera::Camera(const CameraSpec& spec, int width, int height)
     if (spec.left_handed) u_ = -u_;
     half_height_ =
         projection_ == Projection::perspective ? std::tan(radians(spec.fov) / 2) : spec.height / 2;
-    half_width_ = half_height_ * width_ / height_;
+    half_width_ = half_height_ * (spec.aspect > 0 ? spec.aspect : width_ / height_);
 }
 
 Point2 Camera::aperture_point(Point2 u) const {

@@ -13,7 +13,8 @@ namespace glint {
 
 class Camera {
 public:
-    // The spec must be valid (see CameraSpec); the aspect ratio comes from width / height.
+    // The spec must be valid (see CameraSpec); the aspect ratio comes from width / height
+    // unless the spec gives its own.
     Camera(const CameraSpec& spec, int width, int height);
 
     // The ray through a film position given in pixels: (0, 0) is the top-left corner of the

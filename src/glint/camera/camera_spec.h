@@ -35,6 +35,9 @@ struct CameraSpec {
     Vector3 up{0, 1, 0};   // need not be perpendicular to the view; not parallel to it
     float fov = 45;        // perspective: full vertical field of view, degrees, in (0, 180)
     float height = 2;      // orthographic: height of the view in scene units, > 0
+    // The view's width over its height: 0 for the image's own (square pixels), or as POV-Ray's
+    // right and up vectors give it, which stretch the view over the image whatever its size.
+    float aspect = 0;
     LensSpec lens;
     // The shutter is open from shutter_open to shutter_close: eye rays take times spread over
     // it, which blurs what moves. Equal times freeze the picture at that moment.

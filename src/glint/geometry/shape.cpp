@@ -68,4 +68,15 @@ bool is_solid(const Shape& shape) { return std::visit(IsSolid{}, shape); }
 
 int csg_depth(const Shape& shape) { return std::visit(CsgDepth{}, shape); }
 
+Shape csg_of(Shape a, Shape b, CsgOperation operation, std::uint32_t material_a,
+             std::uint32_t material_b) {
+    Csg csg;
+    csg.operation = operation;
+    csg.a = std::make_shared<const Shape>(std::move(a));
+    csg.b = std::make_shared<const Shape>(std::move(b));
+    csg.material_a = material_a;
+    csg.material_b = material_b;
+    return csg;
+}
+
 }  // namespace glint

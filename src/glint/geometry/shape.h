@@ -76,4 +76,8 @@ bool is_solid(const Shape& shape);
 // How many CSG levels the shape nests, through transforms and instances.
 int csg_depth(const Shape& shape);
 
+// The CSG `a operation b`, each operand painted with a material (index + 1; 0: the CSG's own).
+Shape csg_of(Shape a, Shape b, CsgOperation operation, std::uint32_t material_a = 0,
+             std::uint32_t material_b = 0);
+
 }  // namespace glint

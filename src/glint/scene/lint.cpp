@@ -181,7 +181,7 @@ public:
           perspective_(c.projection == Projection::perspective),
           lens_(c.lens.radius) {
         half_height_ = perspective_ ? std::tan(radians(c.fov) / 2) : c.height / 2;
-        half_width_ = half_height_ * float(s.width) / float(s.height);
+        half_width_ = half_height_ * (c.aspect > 0 ? c.aspect : float(s.width) / float(s.height));
     }
 
     bool sees(const Bounds3& box) const {

@@ -1,6 +1,8 @@
-// Evaluating a colour source at a surface point: constant, 2D or solid checker, or image lookup.
+// Evaluating a colour source at a surface point: constant, 2D or solid checker, image lookup,
+// pattern, pigment map or layers.
 #include "glint/shading/texture.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 
@@ -39,6 +41,9 @@ struct Evaluate {
     }
     Color operator()(const ProjectedImagePtr& image) const { return glint::evaluate(*image, sp.p); }
     Color operator()(const PigmentMapPtr& map) const { return glint::evaluate(*map, sp); }
+    Color operator()(const LayeredTexturePtr& layered) const {
+        return glint::evaluate(*layered, sp);
+    }
 };
 
 }  // namespace
@@ -57,6 +62,41 @@ Color evaluate(const PigmentMap& map, const SurfacePoint& sp) {
     const Color lower = evaluate(map.entries[span.lower].texture, sp);
     if (span.weight == 0) return lower;
     return lower * (1 - span.weight) + evaluate(map.entries[span.upper].texture, sp) * span.weight;
+}
+
+LayeredColors evaluate_layers(const LayeredTexture& layered, const SurfacePoint& sp) {
+    LayeredColors sum{{0, 0, 0}, {0, 0, 0}};
+    Color passed{1, 1, 1};  // what the layers above let through
+    for (const LayeredTexture::Layer& layer : layered.layers) {
+        const Color c = evaluate(layer.color, sp);
+        const Color ft = evaluate(layer.filter_transmit, sp);
+        const float filter = ft.r, transmit = ft.g;
+        const float opacity = layered.legacy_opacity
+                                  ? 1 - (filter * std::max({c.r, c.g, c.b}) + transmit)
+                                  : 1 - filter - transmit;
+        const Color seen = passed * c * opacity;
+        sum.diffuse += seen * layer.diffuse;
+        sum.ambient += seen * layer.ambient;
+        passed = passed * (c * filter + Color::gray(transmit));
+        if (passed.r <= 0 && passed.g <= 0 && passed.b <= 0) break;
+    }
+    return sum;
+}
+
+Uv uv_needed_inside(const Texture& texture) {
+    const auto* checker = std::get_if<CheckerTexture>(&texture);
+    if ((checker && checker->space == CheckerSpace::uv) ||
+        std::holds_alternative<ImageTexture>(texture))
+        return Uv::compute;
+    if (const auto* map = std::get_if<PigmentMapPtr>(&texture))
+        for (const PigmentMap::Entry& e : (*map)->entries)
+            if (uv_needed(e.texture) == Uv::compute) return Uv::compute;
+    if (const auto* layered = std::get_if<LayeredTexturePtr>(&texture))
+        for (const LayeredTexture::Layer& layer : (*layered)->layers)
+            if (uv_needed(layer.color) == Uv::compute ||
+                uv_needed(layer.filter_transmit) == Uv::compute)
+                return Uv::compute;
+    return Uv::skip;
 }
 
 Color evaluate_pattern(const Texture& texture, const SurfacePoint& sp) {

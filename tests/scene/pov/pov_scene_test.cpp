@@ -40,7 +40,19 @@ TEST(PovScene, TheDefaultCameraIsPovRaysAndLeftHanded) {
     EXPECT_EQ(s.camera.at, (Point3{0, 0, 1}));
     // up 1 over direction 1: 2 atan(1/2) vertically.
     EXPECT_NEAR(s.camera.fov, degrees(2 * std::atan(0.5)), 1e-4);
+    EXPECT_EQ(s.camera.aspect, 0);  // right 1.33: the image's own shape
     EXPECT_EQ(s.objects.size(), 1u);
+}
+
+// The right vector's length against up's is the view's shape, stretched over any image; within
+// 1% of image_width / image_height's, the image's own shape at any size.
+TEST(PovScene, RightAndUpGiveTheViewItsShape) {
+    EXPECT_FLOAT_EQ(parse("camera { location -130*z direction 8*z right 0.8*x }").camera.aspect,
+                    0.8f);
+    EXPECT_FLOAT_EQ(parse("camera { up 2*y right 3*x look_at z }").camera.aspect, 1.5f);
+    EXPECT_FLOAT_EQ(parse("camera { orthographic up 2*y right 1*x }").camera.aspect, 0.5f);
+    EXPECT_EQ(parse("camera { right x*image_width/image_height look_at z }").camera.aspect, 0);
+    EXPECT_EQ(parse("camera { right -4/3*x up y }").camera.aspect, 0);
 }
 
 TEST(PovScene, AngleIsHorizontalAndLookAtTurnsTheView) {
@@ -585,7 +597,7 @@ TEST(PovScene, IsosurfacesAreImplicitSurfacesInTheirContainers) {
               std::string::npos);
     EXPECT_NE(error_of("isosurface { function { " + std::string(300, '(') + "x" +
                        std::string(300, ')') + " } }")
-                  .find("the function nests deeper than 200 levels"),
+                  .find("nested more than 200 levels deep"),
               std::string::npos);
     EXPECT_NE(error_of("isosurface { function { w } }")
                   .find("\"w\" is not a parameter, a declared float or a function"),
@@ -1051,15 +1063,70 @@ TEST(PovScene, FogsBecomeGlintsFogs) {
     EXPECT_EQ(s.warnings.size(), 1u);
 }
 
-TEST(PovScene, LayeredTexturesKeepTheBottomLayer) {
+// Three layers, from the top: clear (rgbt 1), white half transmitting with diffuse 0.5 and
+// ambient 0.3, and blue. The top's finish (diffuse 0.6, ambient 0.1) is the material's; the
+// white's weighs it by 0.5 / 0.6 in the diffuse term and by 3 in the ambient one:
+//   C = 0 + 1 (1 - 0.5) (0.5 / 0.6) (1, 1, 1) + 0.5 (0, 0, 1) = (5/12, 5/12, 11/12),
+//   C_ambient = 0 + 1 (1 - 0.5) 3 (1, 1, 1) + 0.5 (0, 0, 1) = (1.5, 1.5, 2).
+TEST(PovScene, LayeredTexturesLetTheLayersBelowShowThrough) {
     const Scene s = parse(R"(
-        #declare Base = texture { pigment { rgb <0, 0, 1> } } texture { pigment { rgbt <1, 1, 1, 0.5> } }
+        #version 3.7;
+        #declare Base = texture { pigment { rgb <0, 0, 1> } }
+            texture { pigment { rgbt <1, 1, 1, 0.5> } finish { diffuse 0.5 ambient 0.3 } }
         #declare Again = texture { Base scale 2 }
-        sphere { 0, 1 texture { Again } texture { pigment { rgbt 1 } } })");
+        sphere { 0, 1 texture { Again } texture { pigment { rgbt 1 } } }
+        sphere { 0, 1 texture { Base } texture { pigment { rgb <1, 0, 0> } } }
+        sphere { 0, 1 texture { Base } pigment { rgb <0, 1, 0> } })");
+    ASSERT_EQ(s.objects.size(), 3u);
+    const Material& layered = s.materials[s.objects[0].material];
+    ASSERT_TRUE(std::holds_alternative<LayeredTexturePtr>(layered.color));
+    const LayeredTexture& layers = *std::get<LayeredTexturePtr>(layered.color);
+    EXPECT_EQ(layers.layers.size(), 3u);
+    EXPECT_FALSE(layers.legacy_opacity);
+    const Color c = evaluate(layered.color, SurfacePoint{});
+    EXPECT_FLOAT_EQ(c.r, 5.0f / 12);
+    EXPECT_FLOAT_EQ(c.g, 5.0f / 12);
+    EXPECT_FLOAT_EQ(c.b, 11.0f / 12);
+    const Color ambient = evaluate_layers(layers, SurfacePoint{}).ambient;
+    EXPECT_FLOAT_EQ(ambient.r, 1.5f);
+    EXPECT_FLOAT_EQ(ambient.b, 2);
+    EXPECT_FLOAT_EQ(layered.kd, 0.6f);
+    EXPECT_FLOAT_EQ(layered.ka, 0.1f);  // the opacity is the layers' own, not scaled again
+    EXPECT_FLOAT_EQ(layered.transmit, 0);
+    // An opaque layer hides what lies below it.
+    EXPECT_EQ(std::get<Color>(s.materials[s.objects[1].material].color), (Color{1, 0, 0}));
+    // A pigment after a layered texture is the top layer's, as in POV-Ray, which keeps its
+    // finish.
+    const Material& top = s.materials[s.objects[2].material];
+    EXPECT_EQ(std::get<Color>(top.color), (Color{0, 1, 0}));
+    EXPECT_FLOAT_EQ(top.kd, 0.5f);
+    EXPECT_TRUE(s.warnings.empty());
+}
+
+// A texture written after another on an object is a layer over it, even after a transform, and
+// is read from the default texture, not from the one below it.
+TEST(PovScene, EveryTextureOnAnObjectIsALayer) {
+    const Scene s = parse(R"(
+        #version 3.7;
+        #declare Shiny = sphere { 0, 1 texture { pigment { rgb <0, 0, 1> } finish { phong 1 } } }
+        object { Shiny translate x texture { pigment { rgbf <1, 1, 1, 0.5> } } }
+        object { Shiny texture { pigment { rgb 1 } } })");
+    ASSERT_EQ(s.objects.size(), 2u);
+    EXPECT_TRUE(
+        std::holds_alternative<LayeredTexturePtr>(s.materials[s.objects[0].material].color));
+    const Material& covered = s.materials[s.objects[1].material];
+    EXPECT_EQ(std::get<Color>(covered.color), (Color{1, 1, 1}));
+    EXPECT_FLOAT_EQ(covered.ks, 0);
+}
+
+// Scenes written for POV-Ray 3.6 or before get its opacity, 1 - (filter max(C) + transmit).
+TEST(PovScene, OldScenesLayersTakeTheOldOpacity) {
+    const Scene s = parse(R"(
+        #version 3.6;
+        sphere { 0, 1 texture { pigment { rgb 1 } } texture { pigment { rgbf <0.5, 0, 0, 0.5> } } })");
     ASSERT_EQ(s.objects.size(), 1u);
-    EXPECT_EQ(std::get<Color>(s.materials[s.objects[0].material].color), (Color{0, 0, 1}));
-    ASSERT_EQ(s.warnings.size(), 1u);
-    EXPECT_NE(s.warnings[0].find("layered textures"), std::string::npos);
+    EXPECT_TRUE(
+        std::get<LayeredTexturePtr>(s.materials[s.objects[0].material].color)->legacy_opacity);
 }
 
 TEST(PovScene, DefaultTexturesApplyToLaterObjectsWithoutOne) {

@@ -63,7 +63,7 @@ void RayTreeRecorder::hit(const SurfaceContext& c, const Hit& hit) {
     n.entering = c.entering;
     n.pencil = c.pencil;
     n.emission = c.emission;
-    n.ambient = ambient_term(m, c.color, world_.ambient());
+    n.ambient = ambient_term(m, c.ambient_color, world_.ambient());
 }
 
 void RayTreeRecorder::fog(const FogEffect& effect) { current().fog = effect; }

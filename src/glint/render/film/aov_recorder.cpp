@@ -57,7 +57,7 @@ void AovRecorder::hit(const SurfaceContext& c, const Hit& hit) {
     s.object = std::int32_t(hit.primitive);
     s.material = std::int32_t(world_.material_index_at(hit));
     s.emission = c.emission;
-    s.ambient = ambient_term(m, c.color, world_.ambient());
+    s.ambient = ambient_term(m, c.ambient_color, world_.ambient());
 }
 
 Color AovRecorder::diffuse_part(const SurfaceContext& c, const LightSample& ls, Color term) {

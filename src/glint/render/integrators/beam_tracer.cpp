@@ -231,7 +231,7 @@ void BeamIntegrator::draw_fragment(const Paths& fragment, const BeamPolygon& pol
         }
         const SurfaceContext s = surface_context(world_, ray, hit);
         const Material& m = *s.material;
-        Color local = s.emission + ambient_term(m, s.color, world_.ambient());
+        Color local = s.emission + ambient_term(m, s.ambient_color, world_.ambient());
         for (std::size_t l = 0; l < lights.size(); ++l) {
             float share = drawing.lit_share[l];
             if (share > 0) share = float(std::min(1.0, drawing.lit[l].area_at(x, y) / area));

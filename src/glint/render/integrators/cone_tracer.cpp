@@ -141,7 +141,7 @@ Color ConeIntegrator::shade(const RayCone& cone, const Ray& ray, const Hit& hit,
                                  t * cone.spread};
     const SurfaceContext c = surface_context(world_, ray, hit, &pencil);
     const Material& m = *c.material;
-    Color color = c.emission + ambient_term(m, c.color, world_.ambient());
+    Color color = c.emission + ambient_term(m, c.ambient_color, world_.ambient());
     // The cone's radius where it meets the surface, and the footprint's as the lights see it:
     // the ellipse it cuts from the surface, foreshortened again towards the light.
     const float distance = dot(c.sp.p - cone.apex, ray.direction);

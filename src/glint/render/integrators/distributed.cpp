@@ -87,7 +87,7 @@ Color DistributedIntegrator::shade(const Ray& ray, int depth, float weight, Samp
         if (fog) recorder_->fog(*fog);
     }
     const Material& m = *c.material;
-    Color color = c.emission + ambient_term(m, c.color, world_.ambient());
+    Color color = c.emission + ambient_term(m, c.ambient_color, world_.ambient());
     color = plus_direct_light<kRecord>(c, ray, stream, stats, color);
 
     if (depth >= settings.max_depth) {

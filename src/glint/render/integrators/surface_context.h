@@ -21,12 +21,13 @@ struct SurfaceContext {
     SurfacePoint sp;
     std::uint32_t primitive;  // the object hit
     const Material* material;
-    Color color;        // the material's colour (texture) at the point, C of the formulas
-    Color emission;     // what it emits towards the ray: none from the back of a one-sided one
-    bool entering;      // the ray meets the front (outward) side
-    Normal3 ng;         // geometric normal on the ray's side: where secondary rays start
-    Normal3 n;          // shading normal on the ray's side: what the formulas use
-    Vector3 to_viewer;  // -direction of the ray, V
+    Color color;          // the material's colour (texture) at the point, C of the formulas
+    Color ambient_color;  // C of the ambient term: the same, but for layers (LayeredTexture)
+    Color emission;       // what it emits towards the ray: none from the back of a one-sided one
+    bool entering;        // the ray meets the front (outward) side
+    Normal3 ng;           // geometric normal on the ray's side: where secondary rays start
+    Normal3 n;            // shading normal on the ray's side: what the formulas use
+    Vector3 to_viewer;    // -direction of the ray, V
     // The material's reflect, roughness and transmit_roughness at the point (maps evaluated).
     float reflect, roughness, transmit_roughness;
     // The ray's pencil where it meets the surface, when the ray carries one (pencil.h).
@@ -48,7 +49,14 @@ inline SurfaceContext surface_context(const World& world, const Ray& ray, const 
         c.pencil = pencil_at(ray, *pencil, hit.shape_hit.t, c.sp);
         c.sp.footprint = c.pencil->footprint;
     }
-    c.color = evaluate(m.color, c.sp);
+    if (const auto* layered = std::get_if<LayeredTexturePtr>(&m.color)) [[unlikely]] {
+        const LayeredColors colors = evaluate_layers(**layered, c.sp);
+        c.color = colors.diffuse;
+        c.ambient_color = colors.ambient;
+    } else {
+        c.color = evaluate(m.color, c.sp);
+        c.ambient_color = c.color;
+    }
     c.reflect = m.reflect;
     c.roughness = m.roughness;
     c.transmit_roughness = m.transmit_roughness;

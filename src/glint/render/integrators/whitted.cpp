@@ -66,7 +66,7 @@ Color WhittedIntegrator::shade(const Ray& ray, int depth, float weight, RayStats
         if (fog) recorder_->fog(*fog);
     }
     const Material& m = *c.material;
-    Color color = c.emission + ambient_term(m, c.color, world_.ambient());
+    Color color = c.emission + ambient_term(m, c.ambient_color, world_.ambient());
     const auto lights = world_.lights();
     for (std::size_t light = 0; light < lights.size(); ++light) {
         const LightSample ls = sample_light(lights[light], c.sp.p);

@@ -102,7 +102,7 @@ public:
           unsupported_(unsupported) {}
 
     std::string sum() {
-        Nesting nested(*this);
+        const PovParser::Nested nested(parser_, parser_.peek());
         std::string text = product();
         while (parser_.peek().is_symbol("+") || parser_.peek().is_symbol("-")) {
             const std::string op = parser_.next().text;
@@ -121,21 +121,6 @@ public:
     }
 
 private:
-    // Parentheses, calls and signs nest at most kMaxNesting deep: an error, not a stack overflow.
-    static constexpr int kMaxNesting = 200;
-    struct Nesting {
-        explicit Nesting(FunctionBody& body) : body_(body) {
-            if (++body_.depth_ > kMaxNesting)
-                throw body_.parser_.error_at(
-                    body_.parser_.peek(),
-                    "the function nests deeper than " + std::to_string(kMaxNesting) + " levels");
-        }
-        ~Nesting() { --body_.depth_; }
-        Nesting(const Nesting&) = delete;
-        Nesting& operator=(const Nesting&) = delete;
-        FunctionBody& body_;
-    };
-
     std::string product() {
         std::string text = signed_power();
         while (parser_.peek().is_symbol("*") || parser_.peek().is_symbol("/")) {
@@ -146,7 +131,7 @@ private:
     }
 
     std::string signed_power() {
-        Nesting nested(*this);
+        const PovParser::Nested nested(parser_, parser_.peek());
         if (parser_.accept("-")) return "(-" + signed_power() + ")";
         if (parser_.accept("+")) return signed_power();
         if (parser_.peek().is_symbol("!"))
@@ -245,7 +230,6 @@ private:
     const std::vector<std::string>& parameters_;
     bool aliases_;
     std::string& unsupported_;
-    int depth_ = 0;
 };
 
 }  // namespace

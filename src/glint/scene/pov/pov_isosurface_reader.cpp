@@ -4,24 +4,11 @@
 // surface (clipped by it).
 #include <memory>
 
-#include "glint/geometry/csg.h"
 #include "glint/geometry/implicit_surface.h"
 #include "glint/scene/pov/pov_item_reader.h"
 #include "glint/scene/pov/pov_polynomial.h"
 
 namespace glint {
-
-namespace {
-
-Shape combined(Shape a, Shape b, CsgOperation operation) {
-    Csg csg;
-    csg.operation = operation;
-    csg.a = std::make_shared<const Shape>(std::move(a));
-    csg.b = std::make_shared<const Shape>(std::move(b));
-    return csg;
-}
-
-}  // namespace
 
 Shape PovItemReader::isosurface(const PovToken& keyword) {
     std::optional<std::string> f;
@@ -102,8 +89,8 @@ Shape PovItemReader::isosurface(const PovToken& keyword) {
     if (open)
         return std::holds_alternative<Box>(container)
                    ? Shape{surface}
-                   : combined(surface, container, CsgOperation::clip);
-    return combined(surface, container, CsgOperation::intersection);
+                   : csg_of(surface, container, CsgOperation::clip);
+    return csg_of(surface, container, CsgOperation::intersection);
 }
 
 }  // namespace glint

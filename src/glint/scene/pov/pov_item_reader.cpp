@@ -38,6 +38,38 @@ bool is_unread_object(const std::string& keyword) {
     return std::find(std::begin(kUnread), std::end(kUnread), keyword) != std::end(kUnread);
 }
 
+// Whether the pigment lets nothing through anywhere: no filter or transmit in any colour.
+bool opaque(const PovPigment& p) {
+    if (p.kind == PovPigment::Kind::unsupported) return false;
+    const auto clear = [](const PovVector& c) { return c[3] == 0 && c[4] == 0; };
+    if (p.kind != PovPigment::Kind::pattern) return clear(p.color);
+    return std::all_of(p.map.stops.begin(), p.map.stops.end(), [&](const PovColorStop& s) {
+        return s.pigment ? opaque(*s.pigment) : clear(s.color);
+    });
+}
+
+// The texture without the layers that an opaque one above them hides.
+PovTexture without_hidden(PovTexture t) {
+    for (std::size_t i = t.above.size(); i-- > 0;) {
+        if (!opaque(t.above[i].pigment)) continue;
+        PovTexture top = std::move(t.above[i]);
+        top.above.assign(std::make_move_iterator(t.above.begin() + std::ptrdiff_t(i) + 1),
+                         std::make_move_iterator(t.above.end()));
+        return top;
+    }
+    return t;
+}
+
+// `layer`, with its own layers, laid over `below`, as POV-Ray lays every texture written after
+// another.
+PovTexture laid_over(PovTexture below, PovTexture layer) {
+    std::vector<PovTexture> upper = std::move(layer.above);
+    layer.above.clear();
+    below.above.push_back(std::move(layer));
+    for (PovTexture& l : upper) below.above.push_back(std::move(l));
+    return without_hidden(std::move(below));
+}
+
 bool is_csg(const std::string& keyword) {
     return keyword == "union" || keyword == "merge" || keyword == "intersection" ||
            keyword == "difference";
@@ -134,17 +166,14 @@ std::optional<PovItem> PovItemReader::read(const PovToken& keyword) {
     if (w == "camera") return camera(keyword);
     if (w == "sky_sphere") return sky_sphere(keyword);
     if (w == "texture") {
-        PovTexture bottom = texture(*default_texture_);
-        // Layers over it (`texture { } texture { }`): the bottom one is kept. A lookahead past
-        // a complete value: a directive after it must not run before the value is declared.
+        PovTexture layered = texture(*default_texture_);
+        // Layers over it (`texture { } texture { }`). A lookahead past a complete value: a
+        // directive after it must not run before the value is declared.
         while (parser_.peek().is_word("texture")) {
             parser_.next();
-            texture(*default_texture_);
-            if (!warned_layers_)
-                warnings_.push_back("layered textures: only each object's bottom layer is used");
-            warned_layers_ = true;
+            layered = laid_over(std::move(layered), texture(*default_texture_));
         }
-        return bottom;
+        return layered;
     }
     if (w == "pigment") return pigment(default_texture_->pigment);
     if (w == "finish") return finish(default_texture_->finish);
@@ -586,11 +615,8 @@ void bound_polynomial(Shape& shape, const Bounds3& region) {
 }
 
 void PovItemReader::modifiers(PovObject& object) {
-    bool last_was_texture = false;
     bool clip_by_bounds = false, bound_by_clip = false;  // `clipped_by { bounded_by }` and back
     for (;;) {
-        const bool layered = last_was_texture;
-        last_was_texture = parser_.peek_item().is_word("texture");
         const PovToken token = parser_.next();
         if (token.is_symbol("}")) {
             if (clip_by_bounds) object.clipped_by = object.bounded_by;
@@ -609,22 +635,18 @@ void PovItemReader::modifiers(PovObject& object) {
                 moved.move(*step);
                 object.texture = std::make_shared<const PovTexture>(moved);
             }
-        } else if (w == "texture" && layered) {
-            // A layer over the texture just given: the bottom layer is kept.
-            texture(*default_texture_);
-            if (!warned_layers_)
-                warnings_.push_back("layered textures: only each object's bottom layer is used");
-            warned_layers_ = true;
         } else if (w == "texture") {
-            object.texture = std::make_shared<const PovTexture>(
-                texture(object.texture ? *object.texture : *default_texture_));
+            // A texture written after another is a layer over it, as in POV-Ray.
+            PovTexture t = texture(*default_texture_);
+            if (object.texture) t = laid_over(*object.texture, std::move(t));
+            object.texture = std::make_shared<const PovTexture>(std::move(t));
         } else if (w == "pigment") {
             PovTexture t = object.texture ? *object.texture : *default_texture_;
-            t.pigment = pigment(t.pigment);
-            object.texture = std::make_shared<const PovTexture>(t);
+            t.top().pigment = pigment(t.top().pigment);
+            object.texture = std::make_shared<const PovTexture>(without_hidden(std::move(t)));
         } else if (w == "finish") {
             PovTexture t = object.texture ? *object.texture : *default_texture_;
-            t.finish = finish(t.finish);
+            t.top().finish = finish(t.top().finish);
             object.texture = std::make_shared<const PovTexture>(t);
         } else if (w == "interior") {
             object.interior = std::make_shared<const PovInterior>(
@@ -635,7 +657,7 @@ void PovItemReader::modifiers(PovObject& object) {
             object.interior = m.interior;
         } else if (w == "normal") {
             PovTexture t = object.texture ? *object.texture : *default_texture_;
-            t.normal = normal(t.normal);
+            t.top().normal = normal(t.top().normal);
             object.texture = std::make_shared<const PovTexture>(t);
         } else if (w == "no_shadow") {
             object.no_shadow = true;
@@ -671,17 +693,18 @@ PovTexture PovItemReader::texture(const PovTexture& base) {
     if (auto d = take_declared<PovTexture>()) {
         t = *d;
     }
+    // What is written after a declared layered texture changes its top layer, as in POV-Ray.
     for (;;) {
         const PovToken token = parser_.next();
-        if (token.is_symbol("}")) return t;
+        if (token.is_symbol("}")) return without_hidden(std::move(t));
         if (token.is_word("pigment"))
-            t.pigment = pigment(t.pigment);
+            t.top().pigment = pigment(t.top().pigment);
         else if (token.is_word("finish"))
-            t.finish = finish(t.finish);
+            t.top().finish = finish(t.top().finish);
         else if (token.is_word("normal"))
-            t.normal = normal(t.normal);
+            t.top().normal = normal(t.top().normal);
         else if (token.is_word("checker"))
-            checker_texture(token, t);
+            checker_texture(token, t.top());
         else if (const auto step = transform_step(token))
             t.move(*step);
         else
@@ -799,8 +822,9 @@ PovMaterial PovItemReader::material(const PovMaterial& base) {
         const PovToken token = parser_.next();
         if (token.is_symbol("}")) return m;
         if (token.is_word("texture")) {
-            m.texture = std::make_shared<const PovTexture>(
-                texture(m.texture ? *m.texture : *default_texture_));
+            PovTexture t = texture(*default_texture_);
+            if (m.texture) t = laid_over(*m.texture, std::move(t));
+            m.texture = std::make_shared<const PovTexture>(std::move(t));
         } else if (token.is_word("interior")) {
             m.interior = std::make_shared<const PovInterior>(
                 interior(m.interior ? *m.interior : PovInterior{}));

@@ -144,7 +144,6 @@ private:
     PovParser& parser_;
     std::vector<std::string>& warnings_;
     std::shared_ptr<const PovTexture> default_texture_ = std::make_shared<const PovTexture>();
-    bool warned_layers_ = false;
     bool warned_fog_noise_ = false;
     bool warned_checker_finish_ = false;
     bool warned_crackle_ = false;

@@ -91,15 +91,23 @@ struct PovNormal {
     std::string unsupported;
 };
 
+// A texture, and the layers over it (`texture { } texture { }`): each of those a texture of
+// its own, with none above it.
 struct PovTexture {
     PovPigment pigment;
     PovFinish finish;
     std::optional<PovNormal> normal;
+    std::vector<PovTexture> above;  // bottom first
 
-    // The texture moved by `step`, after what moved it before: its pigment and normal with it.
+    // The layer on top, which pigment, finish and normal written after the layers change.
+    PovTexture& top() { return above.empty() ? *this : above.back(); }
+    const PovTexture& top() const { return above.empty() ? *this : above.back(); }
+
+    // The texture moved by `step`, after what moved it before: its pigments and normals with it.
     void move(const Transform& step) {
         pigment.transform = step * pigment.transform;
         if (normal) normal->transform = step * normal->transform;
+        for (PovTexture& layer : above) layer.move(step);
     }
 };
 

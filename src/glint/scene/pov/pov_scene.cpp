@@ -73,7 +73,7 @@ const PovPigment* unread_pigment(const PovPigment& p) {
     return nullptr;
 }
 
-// The texture with every colour in it decoded, through pigment maps.
+// The texture with every colour in it decoded, through pigment maps and layers.
 Texture decoded(const Texture& texture, const std::function<Color(Color)>& decode) {
     if (const auto* color = std::get_if<Color>(&texture)) return decode(*color);
     if (const auto* pattern = std::get_if<PatternTexturePtr>(&texture)) {
@@ -84,6 +84,11 @@ Texture decoded(const Texture& texture, const std::function<Color(Color)>& decod
     if (const auto* map = std::get_if<PigmentMapPtr>(&texture)) {
         auto d = std::make_shared<PigmentMap>(**map);
         for (PigmentMap::Entry& e : d->entries) e.texture = decoded(e.texture, decode);
+        return d;
+    }
+    if (const auto* layered = std::get_if<LayeredTexturePtr>(&texture)) {
+        auto d = std::make_shared<LayeredTexture>(**layered);  // filters and transmits stay
+        for (LayeredTexture::Layer& layer : d->layers) layer.color = decoded(layer.color, decode);
         return d;
     }
     return texture;
@@ -232,6 +237,14 @@ private:
         c.at = c.from + view;
         c.up = up_placed;
         c.left_handed = handed >= 0;
+        // As POV-Ray: right's length against up's is the view's shape, whatever the image's.
+        // Within 1% of the shape image_width / image_height gives the reader, it is taken for
+        // the image's own, at whatever size the image is rendered.
+        const double aspect = length(t(to_vector(right))) / length(up_placed);
+        const PovLanguageOptions& o = parser_.options();
+        const double image_aspect = double(o.image_width) / o.image_height;
+        if (std::isfinite(aspect) && aspect > 0 && std::abs(aspect / image_aspect - 1) > 0.01)
+            c.aspect = float(aspect);
         if (pov.orthographic) {
             c.projection = Projection::orthographic;
             c.height = length(up_placed);
@@ -391,19 +404,32 @@ private:
 
     // The glint material of a texture and interior. A pattern's material also depends on where
     // its texture lies (`frame`: the texture's space to the scene's), as it is placed by it.
+    // Layers become one colour source (LayeredTexture) under the top layer's finish, each
+    // layer's ambient and diffuse coefficients weighed against its; the top-most normal tilts
+    // them all.
     std::uint32_t material(const std::shared_ptr<const PovTexture>& texture,
                            const std::shared_ptr<const PovInterior>& interior,
                            const Transform& frame) {
-        const PovPigment& p = texture->pigment;
-        refuse_unread(p);
-        const std::optional<PovNormal>& normal = texture->normal;
+        std::vector<const PovTexture*> layers;  // from the top down
+        for (auto layer = texture->above.rbegin(); layer != texture->above.rend(); ++layer)
+            layers.push_back(&*layer);
+        layers.push_back(texture.get());
+        std::optional<PovNormal> normal;
+        bool placed = false;
+        for (const PovTexture* layer : layers) {
+            refuse_unread(layer->pigment);
+            if (!normal) normal = layer->normal;
+            const PovPigment& p = layer->pigment;
+            placed = placed || p.kind == PovPigment::Kind::pattern ||
+                     (p.kind == PovPigment::Kind::image && !p.uv_mapping);
+        }
         const bool tilted = normal && normal->unsupported.empty();
-        const bool projected = p.kind == PovPigment::Kind::image && !p.uv_mapping;
-        const bool placed = p.kind == PovPigment::Kind::pattern || projected || tilted;
+        placed = placed || tilted;
         const MaterialKey key{texture, interior, placed ? frame.matrix().m : Matrix4::identity().m};
         if (const auto found = materials_.find(key); found != materials_.end())
             return found->second;
-        const PovTexture& t = *texture;
+        const PovTexture& t = *layers.front();
+        const PovPigment& p = t.pigment;
         Material m;
         m.name = "pov" + std::to_string(scene_.materials.size());
         if (normal && !tilted && warned_normals_.insert(normal->unsupported).second)
@@ -415,7 +441,6 @@ private:
             maps.normal_pattern->to_pattern = (frame * normal->transform).inverse();
             m.maps = std::make_shared<const MaterialMaps>(std::move(maps));
         }
-        m.color = texture_of(p, frame);
         const PovFinish& f = t.finish;
         m.ka = float(f.ambient);
         m.kd = float(f.diffuse);
@@ -435,17 +460,53 @@ private:
         m.reflect = float(std::clamp(f.reflection, 0.0, 1.0));
         if (f.emission > 0 && p.kind == PovPigment::Kind::color)
             m.emission = rgb(p.color) * float(f.emission);
-        m.transmit = float(std::clamp(transmitted(p), 0.0, 1.0));
-        // What a pigment lets through it does not reflect diffusely: POV-Ray scales the ambient
-        // and diffuse terms by its opacity (the highlights it leaves).
-        m.ka *= 1 - m.transmit;
-        m.kd *= 1 - m.transmit;
+        if (layers.size() == 1) {
+            m.color = texture_of(p, frame);
+            m.transmit = float(std::clamp(transmitted(p), 0.0, 1.0));
+            // What a pigment lets through it does not reflect diffusely: POV-Ray scales the
+            // ambient and diffuse terms by its opacity (the highlights it leaves).
+            m.ka *= 1 - m.transmit;
+            m.kd *= 1 - m.transmit;
+        } else {
+            auto layered = std::make_shared<LayeredTexture>();
+            const std::optional<double> version = parser_.scene_version();
+            layered->legacy_opacity = !version || *version < 3.7;
+            double passed = 1;  // what every layer lets through, where the least gets through
+            // Without a coefficient of its own on top, the layers' are the weights themselves.
+            if (!(m.ka > 0)) m.ka = 1;
+            if (!(m.kd > 0)) m.kd = 1;
+            for (const PovTexture* layer : layers) {
+                layered->layers.push_back({texture_of(layer->pigment, frame),
+                                           texture_of(filter_and_transmit(layer->pigment), frame),
+                                           float(layer->finish.diffuse) / m.kd,
+                                           float(layer->finish.ambient) / m.ka});
+                passed *= transmitted(layer->pigment);
+            }
+            m.color = LayeredTexturePtr(std::move(layered));
+            m.transmit = float(std::clamp(passed, 0.0, 1.0));
+        }
         if (interior) m.ior = float(interior->ior);
         if (interior && interior->dispersion != 1) disperse(m, *interior);
         scene_.materials.push_back(std::move(m));
         const auto index = std::uint32_t(scene_.materials.size() - 1);
         materials_.emplace(key, index);
         return index;
+    }
+
+    // The pigment with each colour's filter and transmit in place of its red and green (and
+    // nothing else), for a layer's second colour source (LayeredTexture).
+    static PovPigment filter_and_transmit(const PovPigment& pigment) {
+        const auto swapped = [](const PovVector& c) { return PovVector{{c[3], c[4], 0, 0, 0}, 5}; };
+        PovPigment p = pigment;
+        if (p.kind == PovPigment::Kind::image) p.kind = PovPigment::Kind::color;
+        p.color = swapped(p.color);
+        for (PovColorStop& stop : p.map.stops) {
+            stop.color = swapped(stop.color);
+            if (stop.pigment)
+                stop.pigment =
+                    std::make_shared<const PovPigment>(filter_and_transmit(*stop.pigment));
+        }
+        return p;
     }
 
     // glint's colour source for a pigment lying in `frame` (its texture's space to the scene's).
@@ -621,13 +682,8 @@ private:
     };
 
     static Operand combined(Operand a, Operand b, CsgOperation operation) {
-        Csg csg;
-        csg.operation = operation;
-        csg.a = std::make_shared<const Shape>(std::move(a.shape));
-        csg.b = std::make_shared<const Shape>(std::move(b.shape));
-        csg.material_a = a.material;
-        csg.material_b = b.material;
-        return {csg};
+        return {glint::csg_of(std::move(a.shape), std::move(b.shape), operation, a.material,
+                              b.material)};
     }
 
     // The operands [begin, end) joined by `op` (associative) two halves at a time.

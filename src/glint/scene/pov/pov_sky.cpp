@@ -12,17 +12,38 @@ namespace glint {
 
 namespace {
 
-PovVector pigment_color(const PovPigment& pigment, Point3 pattern_p);
+// A pigment with the transforms into its pigment_map entries' spaces inverted once, not at
+// every pixel.
+struct Prepared {
+    const PovPigment* pigment = nullptr;
+    // Per stop of its map: into the stop's pigment's space, and that pigment prepared (unset
+    // for a colour).
+    std::vector<Transform> to_stop;
+    std::vector<Prepared> stops;
+};
 
-// A colour map's stop at a point of the map's pattern space: its colour, or its pigment's.
-PovVector stop_color(const PovColorStop& stop, Point3 pattern_p) {
+Prepared prepared(const PovPigment& pigment) {
+    Prepared p{&pigment, {}, {}};
+    for (const PovColorStop& stop : pigment.map.stops) {
+        p.to_stop.push_back(stop.pigment ? stop.pigment->transform.inverse() : Transform{});
+        p.stops.push_back(stop.pigment ? prepared(*stop.pigment) : Prepared{});
+    }
+    return p;
+}
+
+PovVector pigment_color(const Prepared& prepared, Point3 pattern_p);
+
+// Stop i of a colour map at a point of the map's pattern space: its colour, or its pigment's.
+PovVector stop_color(const Prepared& map, std::size_t i, Point3 pattern_p) {
+    const PovColorStop& stop = map.pigment->map.stops[i];
     if (!stop.pigment) return stop.color;
-    return pigment_color(*stop.pigment, stop.pigment->transform.inverse()(pattern_p));
+    return pigment_color(map.stops[i], map.to_stop[i](pattern_p));
 }
 
 // The pigment's five components (r, g, b, filter, transmit) at a point of its pattern's space:
 // a colour, or its pattern through its colour or pigment map.
-PovVector pigment_color(const PovPigment& pigment, Point3 pattern_p) {
+PovVector pigment_color(const Prepared& prepared, Point3 pattern_p) {
+    const PovPigment& pigment = *prepared.pigment;
     if (pigment.kind == PovPigment::Kind::image) {
         // Seen from the sphere's centre, whatever the projection's name.
         const Color c = evaluate(*pigment.image, pattern_p);
@@ -35,17 +56,17 @@ PovVector pigment_color(const PovPigment& pigment, Point3 pattern_p) {
     PovVector c = PovVector::of(0, 5);
     if (pigment.average) {
         double weights = 0;
-        for (const PovColorStop& stop : stops) {
-            const PovVector s = stop_color(stop, pattern_p);
-            for (int i = 0; i < 5; ++i) c[i] += stop.at * s[i];
-            weights += stop.at;
+        for (std::size_t s = 0; s < stops.size(); ++s) {
+            const PovVector v = stop_color(prepared, s, pattern_p);
+            for (int i = 0; i < 5; ++i) c[i] += stops[s].at * v[i];
+            weights += stops[s].at;
         }
         for (int i = 0; i < 5; ++i) c[i] = weights != 0 ? c[i] / weights : 0;
         return c;
     }
     const MapSpan span = span_at(stops, pattern_value(pigment.spec, pattern_p));
-    const PovVector lower = stop_color(stops[span.lower], pattern_p);
-    const PovVector upper = span.weight == 0 ? lower : stop_color(stops[span.upper], pattern_p);
+    const PovVector lower = stop_color(prepared, span.lower, pattern_p);
+    const PovVector upper = span.weight == 0 ? lower : stop_color(prepared, span.upper, pattern_p);
     for (int i = 0; i < 5; ++i) c[i] = lower[i] * (1 - span.weight) + upper[i] * span.weight;
     return c;
 }
@@ -59,8 +80,11 @@ SkyImage bake_sky(const PovSkySphere& sky, Color background,
     const Transform to_sky = sky.transform.inverse();
     const Color emission{float(sky.emission[0]), float(sky.emission[1]), float(sky.emission[2])};
     std::vector<Transform> to_pigment;  // sky space to each pigment's pattern space
-    for (const PovPigment& pigment : sky.pigments)
+    std::vector<Prepared> pigments;
+    for (const PovPigment& pigment : sky.pigments) {
         to_pigment.push_back(pigment.transform.inverse());
+        pigments.push_back(prepared(pigment));
+    }
     for (int y = 0; y < height; ++y)
         for (int x = 0; x < width; ++x) {
             const Point2 uv{(float(x) + 0.5f) / float(width), (float(y) + 0.5f) / float(height)};
@@ -68,7 +92,7 @@ SkyImage bake_sky(const PovSkySphere& sky, Color background,
             const Point3 p = to_sky(Point3{d.x, d.y, d.z});
             Color c = background;
             for (std::size_t i = 0; i < sky.pigments.size(); ++i) {
-                const PovVector v = pigment_color(sky.pigments[i], to_pigment[i](p));
+                const PovVector v = pigment_color(pigments[i], to_pigment[i](p));
                 const Color rgb = decode(Color{float(v[0]), float(v[1]), float(v[2])});
                 const float filter = float(v[3]), transmit = float(v[4]);
                 c = rgb * std::max(0.0f, 1 - filter - transmit) +
