@@ -15,6 +15,21 @@ Scene showcase(int width, int height) {
     return scene;
 }
 
+// A film in a working space of gamma 2 or sRGB's: a background of 0.5 is 0.25, or 0.214 (sRGB's
+// 0.5 in linear light), in the image.
+TEST(Render, TheImageIsDecodedFromTheWorkingSpace) {
+    Scene scene;
+    scene.settings.width = 4;
+    scene.settings.height = 3;
+    scene.settings.background = Color::gray(0.5f);
+    scene.settings.working_space = {WorkingSpace::Transfer::gamma, 2};
+    const RenderResult gamma = render(World(scene), RenderOptions{});
+    EXPECT_FLOAT_EQ(gamma.image.pixels[5].g, 0.25f);
+    scene.settings.working_space = {WorkingSpace::Transfer::srgb, 1};
+    const RenderResult srgb = render(World(scene), RenderOptions{});
+    EXPECT_NEAR(srgb.image.pixels[5].g, 0.21404f, 1e-5f);
+}
+
 TEST(Render, ImageIsIdenticalForOneAndManyThreadsAndAnyTileSize) {
     const World world(showcase(96, 72));
     RenderOptions one_thread;

@@ -11,6 +11,7 @@ RenderState::RenderState(const RenderSettings& settings, int tile_size, int pass
     : width(settings.width),
       height(settings.height),
       pass_size(pass_size_),
+      working_space(settings.working_space),
       film(settings.width, settings.height, filter_of(settings),
            importance_samples_filter(settings)),
       aovs(aov_set, settings.width, settings.height, filter_of(settings),

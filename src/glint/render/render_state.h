@@ -35,6 +35,7 @@ struct RenderState {
 
     int width, height;
     int pass_size;
+    WorkingSpace working_space;  // what resolve_image() decodes the film's values from
     Film film;
     // The particles' film, for the integrators that trace particles from the lights.
     std::optional<SplatFilm> splats;

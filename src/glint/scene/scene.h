@@ -66,6 +66,14 @@ struct ShadowMapSettings {
 // in proportion to its power, or every light with one shadow ray each.
 enum class NextEventStrategy { one, all };
 
+// How the film's values become the image's linear light: as they are, glint's own; or decoded
+// by a gamma or by sRGB's curve, as POV-Ray's scenes ask, which do their arithmetic on colour
+// values as written (in the space of their assumed_gamma).
+struct WorkingSpace {
+    enum class Transfer { linear, gamma, srgb } transfer = Transfer::linear;
+    float gamma = 1;  // with Transfer::gamma: v^gamma, gamma > 0
+};
+
 struct RenderSettings {
     int width = 640;
     int height = 480;
@@ -88,6 +96,7 @@ struct RenderSettings {
     NextEventStrategy next_event = NextEventStrategy::one;
     ShadowMethod shadows = ShadowMethod::feelers;
     ShadowMapSettings shadow_map;  // with shadows: map
+    WorkingSpace working_space;
 };
 
 // The sampler and filter a render uses: the scene's, or its integrator's default (whitted: the

@@ -11,6 +11,7 @@
 #include <functional>
 #include <numbers>
 
+#include "glint/image/srgb.h"
 #include "glint/sampling/perlin_noise.h"
 #include "glint/scene/scene_error.h"
 
@@ -40,19 +41,19 @@ TEST(PovScene, TheDefaultCameraIsPovRaysAndLeftHanded) {
     EXPECT_EQ(s.camera.at, (Point3{0, 0, 1}));
     // up 1 over direction 1: 2 atan(1/2) vertically.
     EXPECT_NEAR(s.camera.fov, degrees(2 * std::atan(0.5)), 1e-4);
-    EXPECT_EQ(s.camera.aspect, 0);  // right 1.33: the image's own shape
+    EXPECT_FLOAT_EQ(s.camera.aspect, 1.33f);
     EXPECT_EQ(s.objects.size(), 1u);
 }
 
-// The right vector's length against up's is the view's shape, stretched over any image; within
-// 1% of image_width / image_height's, the image's own shape at any size.
+// The right vector's length against up's is the view's shape, stretched over any image;
+// image_width / image_height's is the image's own shape at any size.
 TEST(PovScene, RightAndUpGiveTheViewItsShape) {
     EXPECT_FLOAT_EQ(parse("camera { location -130*z direction 8*z right 0.8*x }").camera.aspect,
                     0.8f);
     EXPECT_FLOAT_EQ(parse("camera { up 2*y right 3*x look_at z }").camera.aspect, 1.5f);
     EXPECT_FLOAT_EQ(parse("camera { orthographic up 2*y right 1*x }").camera.aspect, 0.5f);
     EXPECT_EQ(parse("camera { right x*image_width/image_height look_at z }").camera.aspect, 0);
-    EXPECT_EQ(parse("camera { right -4/3*x up y }").camera.aspect, 0);
+    EXPECT_FLOAT_EQ(parse("camera { right -1.33*x up y }").camera.aspect, 1.33f);
 }
 
 TEST(PovScene, AngleIsHorizontalAndLookAtTurnsTheView) {
@@ -304,21 +305,26 @@ TEST(PovScene, EachObjectsOwnTextureIsItsOwnMaterial) {
                         float(i + 1) / 50);
 }
 
-// A scene's colours are decoded with its assumed_gamma; one older than POV-Ray 3.7 without one
-// is read as 2.2-encoded, a 3.7 one as linear.
-TEST(PovScene, ColoursAreDecodedWithTheAssumedGamma) {
-    const auto red = [](const std::string& text) {
+// Colours stay as written, and the image is decoded from the space of the assumed_gamma, as
+// POV-Ray takes its results; one older than POV-Ray 3.7 without one is not corrected at all (its
+// results are the file's values: sRGB's), a 3.7 one is linear.
+TEST(PovScene, TheAssumedGammaIsTheWorkingSpaceOfTheColours) {
+    using Transfer = WorkingSpace::Transfer;
+    const auto space = [](const std::string& text) {
         const Scene s = parse(text + " sphere { 0, 1 pigment { rgb <0.5, 0, 0> } }");
-        return std::get<Color>(s.materials[s.objects[0].material].color).r;
+        EXPECT_FLOAT_EQ(std::get<Color>(s.materials[s.objects[0].material].color).r, 0.5f);
+        return s.settings.working_space;
     };
-    EXPECT_FLOAT_EQ(red("#version 3.7;"), 0.5f);
-    EXPECT_FLOAT_EQ(red("#version 3.7; global_settings { assumed_gamma 2 }"), 0.25f);
-    EXPECT_FLOAT_EQ(red(""), std::pow(0.5f, 2.2f));
-    EXPECT_FLOAT_EQ(red("#version 3.6;"), std::pow(0.5f, 2.2f));
-    EXPECT_FLOAT_EQ(red("global_settings { assumed_gamma 1.0 }"), 0.5f);
+    EXPECT_EQ(space("#version 3.7;").transfer, Transfer::linear);
+    const WorkingSpace two = space("#version 3.7; global_settings { assumed_gamma 2 }");
+    EXPECT_EQ(two.transfer, Transfer::gamma);
+    EXPECT_FLOAT_EQ(two.gamma, 2);
+    EXPECT_EQ(space("").transfer, Transfer::srgb);
+    EXPECT_EQ(space("#version 3.6;").transfer, Transfer::srgb);
+    EXPECT_EQ(space("global_settings { assumed_gamma 1.0 }").transfer, Transfer::linear);
     const Scene lit = parse("light_source { 0 rgb 0.5 } background { rgb 0.5 }");
-    EXPECT_FLOAT_EQ(std::get<PointLight>(lit.lights[0]).color.g, std::pow(0.5f, 2.2f));
-    EXPECT_FLOAT_EQ(lit.settings.background.b, std::pow(0.5f, 2.2f));
+    EXPECT_FLOAT_EQ(std::get<PointLight>(lit.lights[0]).color.g, 0.5f);
+    EXPECT_FLOAT_EQ(lit.settings.background.b, 0.5f);
     EXPECT_EQ(error_of("global_settings { assumed_gamma 0 }"),
               "scene.pov:1:33: error: assumed_gamma must be in (0, 10]\n"
               "    1 | global_settings { assumed_gamma 0 }\n"
@@ -850,6 +856,28 @@ TEST(PovScene, ImageMapsProjectTheirImage) {
     const Material& on_uv = s.materials[s.objects[1].material];
     ASSERT_TRUE(std::holds_alternative<ImageTexture>(on_uv.color));
     EXPECT_EQ(std::get<ImageTexture>(on_uv.color).filter, TextureFilter::nearest);
+}
+
+// An image's texels, read as linear light, are encoded into the scene's working space, as
+// POV-Ray does: sRGB's for a scene older than 3.7 without assumed_gamma, 1 / 2 for gamma 2.
+TEST(PovScene, ImagesAreEncodedIntoTheWorkingSpace) {
+    const std::filesystem::path folder = std::filesystem::path(GLINT_SOURCE_DIR) / "tests/data/pov";
+    const ReadSandbox sandbox = make_read_sandbox(folder / "scene.pov");
+    const auto texels = [&](const std::string& settings) {
+        const Scene s = parse_pov_scene(
+            settings + " box { 0, 1 pigment { uv_mapping image_map { png \"grid.png\" } } }",
+            folder / "scene.pov", sandbox);
+        return std::get<ImageTexture>(s.materials[s.objects[0].material].color)
+            .image->base()
+            .pixels;
+    };
+    const std::vector<Color> linear = texels("#version 3.7;");
+    const std::vector<Color> old = texels("#version 3.6;");
+    const std::vector<Color> two = texels("#version 3.7; global_settings { assumed_gamma 2 }");
+    for (std::size_t i = 0; i < linear.size(); i += 37) {
+        EXPECT_NEAR(old[i].g, linear_to_srgb(linear[i].g), 1e-6f);
+        EXPECT_NEAR(two[i].g, std::sqrt(linear[i].g), 1e-6f);
+    }
 }
 
 // text is a union of prisms, a letter each, standing in the x-y plane from z = 0 to the

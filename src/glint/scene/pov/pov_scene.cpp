@@ -12,6 +12,7 @@
 #include <sstream>
 #include <tuple>
 
+#include "glint/image/srgb.h"
 #include "glint/scene/pov/pov_item_reader.h"
 #include "glint/scene/pov/pov_sky.h"
 #include "glint/scene/quote.h"
@@ -73,25 +74,53 @@ const PovPigment* unread_pigment(const PovPigment& p) {
     return nullptr;
 }
 
-// The texture with every colour in it decoded, through pigment maps and layers.
-Texture decoded(const Texture& texture, const std::function<Color(Color)>& decode) {
-    if (const auto* color = std::get_if<Color>(&texture)) return decode(*color);
-    if (const auto* pattern = std::get_if<PatternTexturePtr>(&texture)) {
-        auto d = std::make_shared<PatternTexture>(**pattern);
-        for (ColorStop& stop : d->colors) stop.color = decode(stop.color);
-        return d;
+// The image's texels encoded by `encode`, anew.
+std::shared_ptr<const MipMap> encoded(const MipMap& image,
+                                      const std::function<Color(Color)>& encode) {
+    Image base = image.base();
+    for (Color& texel : base.pixels) texel = encode(texel);
+    return std::make_shared<const MipMap>(std::move(base));
+}
+
+// The texture with the images in it, through pigment maps and layers, encoded by `encode`.
+Texture with_images_encoded(const Texture& texture, const std::function<Color(Color)>& encode) {
+    if (const auto* image = std::get_if<ImageTexture>(&texture)) {
+        ImageTexture e = *image;
+        e.image = encoded(*image->image, encode);
+        return e;
+    }
+    if (const auto* projected = std::get_if<ProjectedImagePtr>(&texture)) {
+        auto e = std::make_shared<ProjectedImage>(**projected);
+        e->image.image = encoded(*e->image.image, encode);
+        return e;
     }
     if (const auto* map = std::get_if<PigmentMapPtr>(&texture)) {
-        auto d = std::make_shared<PigmentMap>(**map);
-        for (PigmentMap::Entry& e : d->entries) e.texture = decoded(e.texture, decode);
-        return d;
+        auto e = std::make_shared<PigmentMap>(**map);
+        for (PigmentMap::Entry& entry : e->entries)
+            entry.texture = with_images_encoded(entry.texture, encode);
+        return e;
     }
     if (const auto* layered = std::get_if<LayeredTexturePtr>(&texture)) {
-        auto d = std::make_shared<LayeredTexture>(**layered);  // filters and transmits stay
-        for (LayeredTexture::Layer& layer : d->layers) layer.color = decoded(layer.color, decode);
-        return d;
+        auto e = std::make_shared<LayeredTexture>(**layered);
+        for (LayeredTexture::Layer& layer : e->layers)
+            layer.color = with_images_encoded(layer.color, encode);
+        return e;
     }
     return texture;
+}
+
+bool holds_image(const Texture& texture) {
+    if (std::holds_alternative<ImageTexture>(texture) ||
+        std::holds_alternative<ProjectedImagePtr>(texture))
+        return true;
+    if (const auto* map = std::get_if<PigmentMapPtr>(&texture))
+        return std::any_of((*map)->entries.begin(), (*map)->entries.end(),
+                           [](const PigmentMap::Entry& e) { return holds_image(e.texture); });
+    if (const auto* layered = std::get_if<LayeredTexturePtr>(&texture))
+        return std::any_of(
+            (*layered)->layers.begin(), (*layered)->layers.end(),
+            [](const LayeredTexture::Layer& layer) { return holds_image(layer.color); });
+    return false;
 }
 
 class Builder {
@@ -153,7 +182,7 @@ public:
         }
         for (const std::string& message : parser_.messages())
             scene_.warnings.push_back("#debug: " + message);
-        decode_colors_and_bake_sky();
+        choose_working_space_and_bake_sky();
         if (any_area_light_) scene_.settings.integrator = IntegratorKind::distributed;
         return std::move(scene_);
     }
@@ -180,6 +209,7 @@ private:
         c.up = {0, 1, 0};
         c.fov = float(2 * std::atan(0.5) * 180 / std::numbers::pi);
         c.left_handed = true;
+        c.aspect = 1.33f;
         return c;
     }
 
@@ -238,13 +268,14 @@ private:
         c.up = up_placed;
         c.left_handed = handed >= 0;
         // As POV-Ray: right's length against up's is the view's shape, whatever the image's.
-        // Within 1% of the shape image_width / image_height gives the reader, it is taken for
-        // the image's own, at whatever size the image is rendered.
+        // The shape image_width / image_height gives the reader is taken for the image's own,
+        // at whatever size the image is rendered.
         const double aspect = length(t(to_vector(right))) / length(up_placed);
         const PovLanguageOptions& o = parser_.options();
         const double image_aspect = double(o.image_width) / o.image_height;
-        if (std::isfinite(aspect) && aspect > 0 && std::abs(aspect / image_aspect - 1) > 0.01)
-            c.aspect = float(aspect);
+        const bool own =
+            std::isfinite(aspect) && aspect > 0 && std::abs(aspect / image_aspect - 1) > 1e-6;
+        c.aspect = own ? float(aspect) : 0;
         if (pov.orthographic) {
             c.projection = Projection::orthographic;
             c.height = length(up_placed);
@@ -738,33 +769,32 @@ private:
         scene_.objects.push_back(std::move(o));
     }
 
-    // POV-Ray reads a scene's colours as encoded with assumed_gamma, and a scene older than
-    // 3.7 that gives none is not gamma-corrected at all: its colour values are the image's.
-    // glint renders in linear light, so the colours are decoded first (2.2 for an old scene:
-    // exact for one light on one surface, whose product the encoding gives back). The sky is
-    // baked last, from decoded colours.
-    void decode_colors_and_bake_sky() {
+    // POV-Ray does its arithmetic on colours as written, and takes the result for encoded
+    // with assumed_gamma; a scene older than 3.7 that gives none is not gamma-corrected at all:
+    // its results are the image file's values. glint does likewise in its working space, which
+    // the image is decoded from (WorkingSpace). Images, which glint reads as linear light, are
+    // encoded into it, as POV-Ray does. The sky is baked last, in the same space.
+    void choose_working_space_and_bake_sky() {
+        using Transfer = WorkingSpace::Transfer;
         const std::optional<double> version = parser_.scene_version();
-        const float gamma = float(assumed_gamma_               ? *assumed_gamma_
-                                  : version && *version >= 3.7 ? 1
-                                                               : 2.2);
-        const auto decode = [gamma](Color c) {
-            if (gamma == 1) return c;
-            return Color{std::pow(std::max(c.r, 0.0f), gamma), std::pow(std::max(c.g, 0.0f), gamma),
-                         std::pow(std::max(c.b, 0.0f), gamma)};
+        WorkingSpace& space = scene_.settings.working_space;
+        if (assumed_gamma_ && *assumed_gamma_ != 1)
+            space = {Transfer::gamma, float(*assumed_gamma_)};
+        else if (!assumed_gamma_ && !(version && *version >= 3.7))
+            space = {Transfer::srgb, 1};
+        const float gamma = space.gamma;
+        const auto encode = [&space, gamma](Color c) {
+            const auto one = [&](float v) {
+                if (!(v > 0)) return 0.0f;
+                return space.transfer == Transfer::srgb ? linear_to_srgb(v)
+                                                        : std::pow(v, 1 / gamma);
+            };
+            return space.transfer == Transfer::linear ? c : Color{one(c.r), one(c.g), one(c.b)};
         };
-        if (gamma != 1) {
-            for (Material& m : scene_.materials) {
-                m.color = decoded(m.color, decode);
-                m.emission = decode(m.emission);
-            }
-            for (Light& light : scene_.lights)
-                std::visit([&](auto& l) { l.color = decode(l.color); }, light);
-            scene_.settings.background = decode(scene_.settings.background);
-            scene_.ambient = decode(scene_.ambient);
-            for (Fog& fog : scene_.fogs) fog.color = decode(fog.color);
-        }
-        if (sky_) scene_.sky = bake_sky(*sky_, scene_.settings.background, decode);
+        if (space.transfer != Transfer::linear)
+            for (Material& m : scene_.materials)
+                if (holds_image(m.color)) m.color = with_images_encoded(m.color, encode);
+        if (sky_) scene_.sky = bake_sky(*sky_, scene_.settings.background, encode);
     }
 
     // The lights inside a CSG's operands, at any depth.

@@ -31,22 +31,25 @@ Prepared prepared(const PovPigment& pigment) {
     return p;
 }
 
-PovVector pigment_color(const Prepared& prepared, Point3 pattern_p);
+PovVector pigment_color(const Prepared& prepared, Point3 pattern_p,
+                        const std::function<Color(Color)>& encode_image);
 
 // Stop i of a colour map at a point of the map's pattern space: its colour, or its pigment's.
-PovVector stop_color(const Prepared& map, std::size_t i, Point3 pattern_p) {
+PovVector stop_color(const Prepared& map, std::size_t i, Point3 pattern_p,
+                     const std::function<Color(Color)>& encode_image) {
     const PovColorStop& stop = map.pigment->map.stops[i];
     if (!stop.pigment) return stop.color;
-    return pigment_color(map.stops[i], map.to_stop[i](pattern_p));
+    return pigment_color(map.stops[i], map.to_stop[i](pattern_p), encode_image);
 }
 
 // The pigment's five components (r, g, b, filter, transmit) at a point of its pattern's space:
 // a colour, or its pattern through its colour or pigment map.
-PovVector pigment_color(const Prepared& prepared, Point3 pattern_p) {
+PovVector pigment_color(const Prepared& prepared, Point3 pattern_p,
+                        const std::function<Color(Color)>& encode_image) {
     const PovPigment& pigment = *prepared.pigment;
     if (pigment.kind == PovPigment::Kind::image) {
         // Seen from the sphere's centre, whatever the projection's name.
-        const Color c = evaluate(*pigment.image, pattern_p);
+        const Color c = encode_image(evaluate(*pigment.image, pattern_p));
         PovVector v = pigment.color;
         v[0] = c.r, v[1] = c.g, v[2] = c.b;
         return v;
@@ -57,7 +60,7 @@ PovVector pigment_color(const Prepared& prepared, Point3 pattern_p) {
     if (pigment.average) {
         double weights = 0;
         for (std::size_t s = 0; s < stops.size(); ++s) {
-            const PovVector v = stop_color(prepared, s, pattern_p);
+            const PovVector v = stop_color(prepared, s, pattern_p, encode_image);
             for (int i = 0; i < 5; ++i) c[i] += stops[s].at * v[i];
             weights += stops[s].at;
         }
@@ -65,8 +68,9 @@ PovVector pigment_color(const Prepared& prepared, Point3 pattern_p) {
         return c;
     }
     const MapSpan span = span_at(stops, pattern_value(pigment.spec, pattern_p));
-    const PovVector lower = stop_color(prepared, span.lower, pattern_p);
-    const PovVector upper = span.weight == 0 ? lower : stop_color(prepared, span.upper, pattern_p);
+    const PovVector lower = stop_color(prepared, span.lower, pattern_p, encode_image);
+    const PovVector upper =
+        span.weight == 0 ? lower : stop_color(prepared, span.upper, pattern_p, encode_image);
     for (int i = 0; i < 5; ++i) c[i] = lower[i] * (1 - span.weight) + upper[i] * span.weight;
     return c;
 }
@@ -74,7 +78,7 @@ PovVector pigment_color(const Prepared& prepared, Point3 pattern_p) {
 }  // namespace
 
 SkyImage bake_sky(const PovSkySphere& sky, Color background,
-                  const std::function<Color(Color)>& decode, int width) {
+                  const std::function<Color(Color)>& encode_image, int width) {
     const int height = width / 2;
     auto image = std::make_shared<Image>(width, height);
     const Transform to_sky = sky.transform.inverse();
@@ -92,8 +96,8 @@ SkyImage bake_sky(const PovSkySphere& sky, Color background,
             const Point3 p = to_sky(Point3{d.x, d.y, d.z});
             Color c = background;
             for (std::size_t i = 0; i < sky.pigments.size(); ++i) {
-                const PovVector v = pigment_color(pigments[i], to_pigment[i](p));
-                const Color rgb = decode(Color{float(v[0]), float(v[1]), float(v[2])});
+                const PovVector v = pigment_color(pigments[i], to_pigment[i](p), encode_image);
+                const Color rgb{float(v[0]), float(v[1]), float(v[2])};
                 const float filter = float(v[3]), transmit = float(v[4]);
                 c = rgb * std::max(0.0f, 1 - filter - transmit) +
                     c * (rgb * filter + Color::gray(transmit));

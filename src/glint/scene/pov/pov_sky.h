@@ -10,8 +10,9 @@ namespace glint {
 
 // The sky image of `sky`, `width` by width / 2 pixels. In each direction its pigments are
 // layered from the first up, each letting what lies below through by its filter and transmit,
-// with `background` below them all; `decode` turns each pigment colour into linear light.
+// with `background` below them all; `encode_image` turns an image pigment's linear light into
+// the scene's working space (RenderSettings::working_space), which the rest is in as written.
 SkyImage bake_sky(const PovSkySphere& sky, Color background,
-                  const std::function<Color(Color)>& decode, int width = 1024);
+                  const std::function<Color(Color)>& encode_image, int width = 1024);
 
 }  // namespace glint
