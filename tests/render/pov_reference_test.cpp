@@ -39,7 +39,7 @@ INSTANTIATE_TEST_SUITE_P(Scenes, PovReference,
                                          "inverse", "language", "lights", "mesh", "patterns",
                                          "polynomials", "prism", "refraction", "shapes", "sky",
                                          "text", "tiles", "lathe", "normals", "operands", "images",
-                                         "mesh2", "heightfields", "maps", "isosurfaces"));
+                                         "mesh2", "heightfields", "maps", "isosurfaces", "layers"));
 
 }  // namespace
 }  // namespace glint
