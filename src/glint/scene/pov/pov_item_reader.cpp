@@ -60,16 +60,6 @@ PovTexture without_hidden(PovTexture t) {
     return t;
 }
 
-// `layer`, with its own layers, laid over `below`, as POV-Ray lays every texture written after
-// another.
-PovTexture laid_over(PovTexture below, PovTexture layer) {
-    std::vector<PovTexture> upper = std::move(layer.above);
-    layer.above.clear();
-    below.above.push_back(std::move(layer));
-    for (PovTexture& l : upper) below.above.push_back(std::move(l));
-    return without_hidden(std::move(below));
-}
-
 bool is_csg(const std::string& keyword) {
     return keyword == "union" || keyword == "merge" || keyword == "intersection" ||
            keyword == "difference";
@@ -89,6 +79,19 @@ Vector3 to_vector(const PovVector& v) { return {float(v[0]), float(v[1]), float(
 
 PovItemReader::PovItemReader(PovParser& parser, std::vector<std::string>& warnings)
     : parser_(parser), warnings_(warnings) {}
+
+PovTexture PovItemReader::laid_over(PovTexture below, PovTexture layer, const PovToken& at) {
+    // Each layer costs every hit on the object: a texture laid over itself in a loop must not
+    // grow without end.
+    if (below.above.size() + layer.above.size() + 2 > kMaxTextureLayers)
+        throw parser_.error_at(
+            at, "a texture has more than " + std::to_string(kMaxTextureLayers) + " layers");
+    std::vector<PovTexture> upper = std::move(layer.above);
+    layer.above.clear();
+    below.above.push_back(std::move(layer));
+    for (PovTexture& l : upper) below.above.push_back(std::move(l));
+    return without_hidden(std::move(below));
+}
 
 bool PovItemReader::starts_object(const std::string& keyword) {
     return is_shape(keyword) || is_csg(keyword) || is_unread_object(keyword) ||
@@ -170,8 +173,8 @@ std::optional<PovItem> PovItemReader::read(const PovToken& keyword) {
         // Layers over it (`texture { } texture { }`). A lookahead past a complete value: a
         // directive after it must not run before the value is declared.
         while (parser_.peek().is_word("texture")) {
-            parser_.next();
-            layered = laid_over(std::move(layered), texture(*default_texture_));
+            const PovToken next = parser_.next();
+            layered = laid_over(std::move(layered), texture(*default_texture_), next);
         }
         return layered;
     }
@@ -638,7 +641,7 @@ void PovItemReader::modifiers(PovObject& object) {
         } else if (w == "texture") {
             // A texture written after another is a layer over it, as in POV-Ray.
             PovTexture t = texture(*default_texture_);
-            if (object.texture) t = laid_over(*object.texture, std::move(t));
+            if (object.texture) t = laid_over(*object.texture, std::move(t), token);
             object.texture = std::make_shared<const PovTexture>(std::move(t));
         } else if (w == "pigment") {
             PovTexture t = object.texture ? *object.texture : *default_texture_;
@@ -823,7 +826,7 @@ PovMaterial PovItemReader::material(const PovMaterial& base) {
         if (token.is_symbol("}")) return m;
         if (token.is_word("texture")) {
             PovTexture t = texture(*default_texture_);
-            if (m.texture) t = laid_over(*m.texture, std::move(t));
+            if (m.texture) t = laid_over(*m.texture, std::move(t), token);
             m.texture = std::make_shared<const PovTexture>(std::move(t));
         } else if (token.is_word("interior")) {
             m.interior = std::make_shared<const PovInterior>(

@@ -34,6 +34,10 @@ public:
 
     PovObject object(const PovToken& keyword);
     PovTexture texture(const PovTexture& base);
+    // `layer`, with its own layers, laid over `below`, as POV-Ray lays every texture written
+    // after another; at most kMaxTextureLayers in all.
+    static constexpr std::size_t kMaxTextureLayers = 64;
+    PovTexture laid_over(PovTexture below, PovTexture layer, const PovToken& at);
     // texture { checker texture { } texture { } }: the keyword read; onto a checker pigment.
     void checker_texture(const PovToken& keyword, PovTexture& t);
     PovPigment pigment(const PovPigment& base);
