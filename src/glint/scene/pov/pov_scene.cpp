@@ -74,40 +74,52 @@ const PovPigment* unread_pigment(const PovPigment& p) {
     return nullptr;
 }
 
-// The image's texels encoded by `encode`, anew.
-std::shared_ptr<const MipMap> encoded(const MipMap& image,
-                                      const std::function<Color(Color)>& encode) {
-    Image base = image.base();
-    for (Color& texel : base.pixels) texel = encode(texel);
-    return std::make_shared<const MipMap>(std::move(base));
-}
+// Images with their texels encoded by a function, each image once however many materials
+// show it.
+class ImageEncoder {
+public:
+    explicit ImageEncoder(std::function<Color(Color)> encode) : encode_(std::move(encode)) {}
 
-// The texture with the images in it, through pigment maps and layers, encoded by `encode`.
-Texture with_images_encoded(const Texture& texture, const std::function<Color(Color)>& encode) {
-    if (const auto* image = std::get_if<ImageTexture>(&texture)) {
-        ImageTexture e = *image;
-        e.image = encoded(*image->image, encode);
-        return e;
+    // The texture with the images in it, through pigment maps and layers, encoded.
+    Texture operator()(const Texture& texture) {
+        if (const auto* image = std::get_if<ImageTexture>(&texture)) {
+            ImageTexture e = *image;
+            e.image = encoded(image->image);
+            return e;
+        }
+        if (const auto* projected = std::get_if<ProjectedImagePtr>(&texture)) {
+            auto e = std::make_shared<ProjectedImage>(**projected);
+            e->image.image = encoded(e->image.image);
+            return e;
+        }
+        if (const auto* map = std::get_if<PigmentMapPtr>(&texture)) {
+            auto e = std::make_shared<PigmentMap>(**map);
+            for (PigmentMap::Entry& entry : e->entries) entry.texture = (*this)(entry.texture);
+            return e;
+        }
+        if (const auto* layered = std::get_if<LayeredTexturePtr>(&texture)) {
+            auto e = std::make_shared<LayeredTexture>(**layered);
+            for (LayeredTexture::Layer& layer : e->layers) layer.color = (*this)(layer.color);
+            return e;
+        }
+        return texture;
     }
-    if (const auto* projected = std::get_if<ProjectedImagePtr>(&texture)) {
-        auto e = std::make_shared<ProjectedImage>(**projected);
-        e->image.image = encoded(*e->image.image, encode);
-        return e;
+
+private:
+    std::shared_ptr<const MipMap> encoded(const std::shared_ptr<const MipMap>& image) {
+        std::shared_ptr<const MipMap>& done = done_[image];
+        if (!done) {
+            Image base = image->base();
+            for (Color& texel : base.pixels) texel = encode_(texel);
+            done = std::make_shared<const MipMap>(std::move(base));
+        }
+        return done;
     }
-    if (const auto* map = std::get_if<PigmentMapPtr>(&texture)) {
-        auto e = std::make_shared<PigmentMap>(**map);
-        for (PigmentMap::Entry& entry : e->entries)
-            entry.texture = with_images_encoded(entry.texture, encode);
-        return e;
-    }
-    if (const auto* layered = std::get_if<LayeredTexturePtr>(&texture)) {
-        auto e = std::make_shared<LayeredTexture>(**layered);
-        for (LayeredTexture::Layer& layer : e->layers)
-            layer.color = with_images_encoded(layer.color, encode);
-        return e;
-    }
-    return texture;
-}
+
+    std::function<Color(Color)> encode_;
+    // By the image itself, held so that a freed one's address is never taken for another's.
+    std::map<std::shared_ptr<const MipMap>, std::shared_ptr<const MipMap>> done_;
+};
 
 bool holds_image(const Texture& texture) {
     if (std::holds_alternative<ImageTexture>(texture) ||
@@ -791,9 +803,11 @@ private:
             };
             return space.transfer == Transfer::linear ? c : Color{one(c.r), one(c.g), one(c.b)};
         };
-        if (space.transfer != Transfer::linear)
+        if (space.transfer != Transfer::linear) {
+            ImageEncoder encode_images(encode);
             for (Material& m : scene_.materials)
-                if (holds_image(m.color)) m.color = with_images_encoded(m.color, encode);
+                if (holds_image(m.color)) m.color = encode_images(m.color);
+        }
         if (sky_) scene_.sky = bake_sky(*sky_, scene_.settings.background, encode);
     }
 
