@@ -41,6 +41,11 @@ TEST(Pattern, GeometricKindsGivePovRaysValues) {
     // checker rgb 1 rgb 0 printed 1 1 0 0 ...: the first colour (index 0) in even cells.
     expect_povray(spec_of(PatternKind::checker), {0, 0, 1, 1, 0, 0, 1, 1});
     expect_povray(spec_of(PatternKind::planar), std::vector<float>(8, 0.7f));
+    // A plane's points at y = 0 rounded to -1e-8 stay in the cells above it (checker_cell).
+    EXPECT_EQ(pattern_value(spec_of(PatternKind::checker), {0.5f, -1e-8f, 0.5f}), 0);
+    EXPECT_EQ(checker_cell(-1e-8), 0);
+    EXPECT_EQ(checker_cell(-2e-6), -1);
+    EXPECT_EQ(checker_cell(2.9999999), 3);
     expect_povray(spec_of(PatternKind::spherical), std::vector<float>(8, 0));
     expect_povray(spec_of(PatternKind::cylindrical), std::vector<float>(8, 0));
     expect_povray(spec_of(PatternKind::boxed),

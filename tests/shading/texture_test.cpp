@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 namespace glint {
 namespace {
 
@@ -23,6 +25,16 @@ TEST(Texture, SolidCheckerAlternatesAcrossEveryAxisAndAcrossZero) {
     EXPECT_EQ(evaluate(checker, at({0.6f, 0.6f, 0.1f})), kWhite);
     EXPECT_EQ(evaluate(checker, at({0.6f, 0.6f, 0.6f})), kBlack);
     EXPECT_EQ(evaluate(checker, at({-0.1f, 0.1f, 0.1f})), kBlack);  // floor(-0.2) = -1
+}
+
+TEST(Texture, AFaceOnACellBoundaryFallsIntoOneCell) {
+    // A box's side at x = 1 (two cells of 0.5) whose points float rounded either way: all in
+    // the cell above, 1e-6 of a cell being past the rounding.
+    const CheckerTexture checker{kWhite, kBlack, 0.5f, CheckerSpace::solid};
+    const float below = std::nextafter(1.0f, 0.0f), above = std::nextafter(1.0f, 2.0f);
+    EXPECT_EQ(evaluate(checker, at({below, 0.1f, 0.1f})), kWhite);
+    EXPECT_EQ(evaluate(checker, at({above, 0.1f, 0.1f})), kWhite);
+    EXPECT_EQ(evaluate(checker, at({0.999f, 0.1f, 0.1f})), kBlack);  // a point inside the cell
 }
 
 TEST(Texture, HugeCoordinatesOverTinySquaresStayDefined) {

@@ -143,8 +143,7 @@ float raw_value(const PatternSpec& spec, Point3 p) {
         case PatternKind::hexagon:
             return hexagon(p);
         case PatternKind::checker: {
-            const double sum =
-                std::floor(double(x)) + std::floor(double(y)) + std::floor(double(z));
+            const double sum = checker_cell(x) + checker_cell(y) + checker_cell(z);
             return std::abs(std::fmod(sum, 2.0)) == 1.0 ? 1.0f : 0.0f;
         }
         case PatternKind::crackle:
@@ -257,6 +256,11 @@ Point3 turbulent(const PatternSpec& spec, Point3 p) {
     }
     return p +
            Vector3{spec.turbulence.x * sum.x, spec.turbulence.y * sum.y, spec.turbulence.z * sum.z};
+}
+
+double checker_cell(double v) {
+    constexpr double kBoundaryTolerance = 1e-6;
+    return std::floor(v + kBoundaryTolerance);
 }
 
 float pattern_value(const PatternSpec& spec, Point3 p) {

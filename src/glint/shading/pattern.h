@@ -16,7 +16,7 @@ enum class PatternKind {
     bozo,         // smooth noise (POV-Ray's spotted is the same)
     boxed,        // 1 - max(|x|, |y|, |z|)
     brick,        // 0 in the mortar, 1 in a brick: rows of bricks laid in running bond
-    checker,      // 0 or 1 by the parity of floor(x) + floor(y) + floor(z): no wave, no frequency
+    checker,      // 0 or 1 by the parity of the cells' sum (checker_cell): no wave, no frequency
     crackle,      // cells round random points: the distance to the second nearest minus the nearest
     cylindrical,  // 1 - sqrt(x^2 + z^2)
     gradient,     // p . direction
@@ -87,5 +87,10 @@ Point3 turbulent(const PatternSpec& spec, Point3 p);
 
 // The pattern's value at p (in the pattern's own space), in [0, 1]; 0 at a non-finite point.
 float pattern_value(const PatternSpec& spec, Point3 p);
+
+// The index of the checker cell that v (in cells) lies in. A face lying on a cell boundary, a
+// box's side at x = 1, falls into one cell rather than into either by the rounding of its
+// points: every boundary sits 1e-6 of a cell low, past float's rounding of the point.
+double checker_cell(double v);
 
 }  // namespace glint

@@ -6,16 +6,18 @@
 #include <cmath>
 #include <cstdint>
 
+#include "glint/shading/pattern.h"
+
 namespace glint {
 
 namespace {
 
-// Parity of one coordinate's cell index; floor() keeps the pattern regular across zero. The
-// integer's low bit where it fits in 64 bits (a library call less at every hit); beyond,
-// fmod(floor(x), 2), exact for every double and defined where the cast would overflow (huge
-// coordinates over tiny squares). NaN counts as even.
+// Parity of one coordinate's cell index (checker_cell: regular across zero, firm on the cells'
+// boundaries). The integer's low bit where it fits in 64 bits (a library call less at every
+// hit); beyond, fmod(cell, 2), exact for every double and defined where the cast would overflow
+// (huge coordinates over tiny squares). NaN counts as even.
 bool odd_index(float x, float size) {
-    const double cell = std::floor(double(x) / size);
+    const double cell = checker_cell(double(x) / size);
     if (std::abs(cell) < 0x1p62) return (std::int64_t(cell) & 1) != 0;
     return std::abs(std::fmod(cell, 2.0)) == 1.0;
 }
