@@ -246,6 +246,38 @@ TEST(Polygon, InsideTestsAgreeOnSimplePolygonsAtRandomPoints) {
 // Polygons that tile [0,4]^2, in both orientations, with reflex vertices, a slanted shared edge and
 // vertices where three tiles meet. Every grid point on a quarter unit, on edges and vertices too,
 // must belong to exactly one tile, for both tests: no cracks and no double hits.
+// A 4 x 4 square with a 2 x 2 hole and, apart, a unit square: the ring and the island are
+// inside, the hole and the gap outside, with the hole wound either way for the even-odd test and
+// against its outline for the angle sum.
+TEST(Polygon, BridgedOutlinesHaveHolesAndIslands) {
+    const std::vector<Point3> outer = in_plane_z({{0, 0}, {4, 0}, {4, 4}, {0, 4}});
+    const std::vector<Point3> against = in_plane_z({{1, 1}, {1, 3}, {3, 3}, {3, 1}});
+    const std::vector<Point3> along = in_plane_z({{1, 1}, {3, 1}, {3, 3}, {1, 3}});
+    const std::vector<Point3> island = in_plane_z({{6, 0}, {7, 0}, {7, 1}, {6, 1}});
+    const auto check = [](const Polygon& polygon) {
+        EXPECT_TRUE(hit_from_above(polygon, 0.5f, 2));   // in the ring
+        EXPECT_TRUE(hit_from_above(polygon, 3.5f, 3.5f));
+        EXPECT_FALSE(hit_from_above(polygon, 2, 2));     // in the hole
+        EXPECT_FALSE(hit_from_above(polygon, 1.5f, 2.5f));
+        EXPECT_TRUE(hit_from_above(polygon, 6.5f, 0.5f));  // on the island
+        EXPECT_FALSE(hit_from_above(polygon, 5, 0.5f));    // between
+        // The bridges, from (0, 0) to (1, 1) and to (6, 0), are not edges that count.
+        EXPECT_TRUE(hit_from_above(polygon, 0.5f, 0.4f));
+        EXPECT_TRUE(hit_from_above(polygon, 3, 0.5f));
+    };
+    const std::vector<std::vector<Point3>> even_odd[] = {{outer, against, island},
+                                                          {outer, along, island}};
+    for (const auto& outlines : even_odd) {
+        const std::vector<Point3> joined = bridged_outline(outlines);
+        EXPECT_EQ(joined.size(), 4u + 6 + 6);
+        check(polygon_of(joined));
+    }
+    const std::vector<std::vector<Point3>> wound = {outer, against, island};
+    check(polygon_of(bridged_outline(wound), InsideTest::angle_sum));
+    // The vector area is the outline's less the hole's plus the island's: 16 - 4 + 1.
+    EXPECT_NEAR(length(newell_normal(bridged_outline(wound))), 2 * 13, 1e-4);
+}
+
 TEST(Polygon, PointsOnSharedEdgesAndVerticesBelongToExactlyOneTile) {
     const std::vector<std::vector<Point2>> tiles = {
         {{0, 0}, {2, 0}, {2, 1}, {1, 1}, {1, 2}, {0, 2}},  // an L, counter-clockwise

@@ -266,6 +266,19 @@ std::optional<PolygonProblem> polygon_problem(std::span<const Point3> vertices) 
                           culprit};
 }
 
+std::vector<Point3> bridged_outline(std::span<const std::vector<Point3>> outlines) {
+    std::vector<Point3> joined;
+    if (outlines.empty()) return joined;
+    joined = outlines[0];
+    for (std::size_t i = 1; i < outlines.size(); ++i) {
+        if (outlines[i].empty()) continue;
+        joined.push_back(outlines[0].front());  // closes the first outline, starts the bridge
+        joined.insert(joined.end(), outlines[i].begin(), outlines[i].end());
+        joined.push_back(outlines[i].front());  // closes this one; the next edge bridges back
+    }
+    return joined;
+}
+
 std::variant<Polygon, std::string> make_polygon(std::vector<Point3> vertices, InsideTest test) {
     if (auto problem = polygon_problem(vertices)) return std::move(problem->message);
     Polygon polygon;

@@ -111,6 +111,13 @@ std::optional<PolygonProblem> polygon_problem(std::span<const Point3> vertices);
 std::variant<Polygon, std::string> make_polygon(std::vector<Point3> vertices,
                                                 InsideTest test = InsideTest::even_odd);
 
+// Outlines with holes (or several outlines) as the one outline a Polygon has: the first outline,
+// then each other one, reached from the first's first vertex by a bridge and left back along it.
+// A bridge is an edge walked once each way, so it crosses a ray from any point twice or not at
+// all and winds zero round it: each inside test counts as over the separate outlines. Holes
+// need the even-odd test, or to wind against their outline for the angle-sum test.
+std::vector<Point3> bridged_outline(std::span<const std::vector<Point3>> outlines);
+
 // Newell's method (Sutherland, Sproull and Schumacker 1974; Tampieri, Graphics Gems III): the
 // sum over the edges of (y_i - y_j)(z_i + z_j), ... is twice the vector area, exact for any
 // planar outline and a robust average normal for a nearly planar one. Not normalised;

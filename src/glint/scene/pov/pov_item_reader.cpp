@@ -420,14 +420,21 @@ Shape PovItemReader::shape(const PovToken& keyword) {
             const PovVector p = parser_.finite_vector("as a polygon point", 2);
             points.push_back({float(p[0]), float(p[1]), float(p.size > 2 ? p[2] : 0)});
         }
-        // POV-Ray closes a polygon by repeating its first point; the first outline is taken.
-        for (std::size_t i = 1; i < points.size(); ++i)
-            if (points[i] == points[0]) {
-                if (i + 1 < points.size())
-                    warnings_.push_back("polygon: only its first outline is used");
-                points.resize(i);
-                break;
-            }
+        // POV-Ray closes each outline by repeating its first point, and the last one without
+        // it; points inside an odd number of outlines are inside (holes, islands).
+        std::vector<std::vector<Point3>> outlines;
+        for (std::size_t start = 0, i = 1; start < points.size(); ++i) {
+            if (i < points.size() && points[i] != points[start]) continue;
+            if (i - start < 3)
+                throw parser_.error_at(keyword, "polygon: outline " +
+                                                    std::to_string(outlines.size() + 1) +
+                                                    " has fewer than 3 points");
+            outlines.emplace_back(points.begin() + std::ptrdiff_t(start),
+                                  points.begin() + std::ptrdiff_t(i));
+            start = i + 1;
+            i = start;
+        }
+        points = bridged_outline(outlines);
         auto made = make_polygon(points);
         if (auto* error = std::get_if<std::string>(&made)) throw parser_.error_at(keyword, *error);
         return std::get<Polygon>(std::move(made));
