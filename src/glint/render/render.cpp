@@ -19,7 +19,6 @@
 #include <string>
 
 #include "glint/geometry/traversal_counters.h"
-#include "glint/image/srgb.h"
 #include "glint/render/eye_sample.h"
 #include "glint/render/film/aov_recorder.h"
 #include "glint/render/integrators/integrator_family.h"
@@ -258,18 +257,6 @@ bool render_work(const World& world, const RenderOptions& options, const std::ve
     return true;
 }
 
-// The film's values as linear light (WorkingSpace); negative ones, which no curve decodes, as 0.
-void decode_working_space(Image& image, const WorkingSpace& space) {
-    using Transfer = WorkingSpace::Transfer;
-    if (space.transfer == Transfer::linear) return;
-    const auto decode = [&](float v) {
-        if (!(v > 0)) return 0.0f;
-        if (space.transfer == Transfer::gamma) return std::pow(v, space.gamma);
-        return v > 1 ? std::pow((v + 0.055f) / 1.055f, 2.4f) : srgb_to_linear(v);  // HDR kept
-    };
-    for (Color& c : image.pixels) c = {decode(c.r), decode(c.g), decode(c.b)};
-}
-
 // The samples each pixel took, in every channel.
 Image samples_image(const RenderState& state) {
     Image image(state.width, state.height);
@@ -306,7 +293,8 @@ Image resolve_image(const RenderState& state) {
         for (std::size_t i = 0; i < image.pixels.size(); ++i)
             image.pixels[i] += particles.pixels[i];
     }
-    decode_working_space(image, state.working_space);
+    // The film holds the working space's values; the image is the linear light they stand for.
+    for (Color& c : image.pixels) c = decode(state.working_space, c);
     return image;
 }
 

@@ -18,6 +18,7 @@
 #include "glint/sampling/sampler.h"
 #include "glint/scene/integrators.h"
 #include "glint/scene/scene_limits.h"
+#include "glint/scene/working_space.h"
 #include "glint/shading/fog.h"
 #include "glint/shading/light.h"
 #include "glint/shading/material.h"
@@ -65,14 +66,6 @@ struct ShadowMapSettings {
 // Next-event estimation of the path and photon integrators: at each surface, one light picked
 // in proportion to its power, or every light with one shadow ray each.
 enum class NextEventStrategy { one, all };
-
-// How the film's values become the image's linear light: as they are, glint's own; or decoded
-// by a gamma or by sRGB's curve, as POV-Ray's scenes ask, which do their arithmetic on colour
-// values as written (in the space of their assumed_gamma).
-struct WorkingSpace {
-    enum class Transfer { linear, gamma, srgb } transfer = Transfer::linear;
-    float gamma = 1;  // with Transfer::gamma: v^gamma, gamma > 0
-};
 
 struct RenderSettings {
     int width = 640;

@@ -12,7 +12,6 @@
 #include <sstream>
 #include <tuple>
 
-#include "glint/image/srgb.h"
 #include "glint/scene/pov/pov_item_reader.h"
 #include "glint/scene/pov/pov_sky.h"
 #include "glint/scene/quote.h"
@@ -794,21 +793,13 @@ private:
             space = {Transfer::gamma, float(*assumed_gamma_)};
         else if (!assumed_gamma_ && !(version && *version >= 3.7))
             space = {Transfer::srgb, 1};
-        const float gamma = space.gamma;
-        const auto encode = [&space, gamma](Color c) {
-            const auto one = [&](float v) {
-                if (!(v > 0)) return 0.0f;
-                return space.transfer == Transfer::srgb ? linear_to_srgb(v)
-                                                        : std::pow(v, 1 / gamma);
-            };
-            return space.transfer == Transfer::linear ? c : Color{one(c.r), one(c.g), one(c.b)};
-        };
+        const auto into_space = [space](Color c) { return encode(space, c); };
         if (space.transfer != Transfer::linear) {
-            ImageEncoder encode_images(encode);
+            ImageEncoder encode_images(into_space);
             for (Material& m : scene_.materials)
                 if (holds_image(m.color)) m.color = encode_images(m.color);
         }
-        if (sky_) scene_.sky = bake_sky(*sky_, scene_.settings.background, encode);
+        if (sky_) scene_.sky = bake_sky(*sky_, scene_.settings.background, into_space);
     }
 
     // The lights inside a CSG's operands, at any depth.
