@@ -85,6 +85,76 @@ TEST(Camera, OrthographicRaysAreParallelAndSpanTheViewHeight) {
 namespace glint {
 namespace {
 
+// The wide projections on a 2:1 image of 200 x 100, looking down +z with y up and, being
+// left-handed, x to the right: film (100, 50) is the view's centre.
+CameraSpec wide(Projection projection, float fov) {
+    CameraSpec spec;
+    spec.from = {0, 0, 0}, spec.at = {0, 0, 1}, spec.up = {0, 1, 0};
+    spec.left_handed = true;
+    spec.projection = projection;
+    spec.fov = fov;
+    return spec;
+}
+
+constexpr float kHalfRoot2 = 0.70710678f;
+
+// Equidistant: 90 degrees off the axis at the rim of the circle the height spans (film x 150
+// is half the height right of the centre), 45 degrees half-way up; outside it, nothing.
+TEST(Camera, FisheyeAnglesGrowWithTheDistanceFromTheCentre) {
+    const Camera camera(wide(Projection::fisheye, 180), 200, 100);
+    expect_near(camera.generate_ray({100, 50}).direction, {0, 0, 1});
+    expect_near(camera.generate_ray({150, 50}).direction, {1, 0, 0});
+    expect_near(camera.generate_ray({100, 25}).direction, {0, kHalfRoot2, kHalfRoot2});
+    EXPECT_TRUE(camera.sees({150, 50}));
+    EXPECT_FALSE(camera.sees({0, 0}));
+    EXPECT_FALSE(camera.sees({151, 50}));
+    EXPECT_TRUE(Camera(wide(Projection::perspective, 60), 200, 100).sees({0, 0}));
+}
+
+// Across the width 180 degrees (a quarter of the width is 45), the same degrees a pixel up.
+TEST(Camera, UltraWideAngleTurnsBothWaysByAngles) {
+    const Camera camera(wide(Projection::ultra_wide_angle, 180), 200, 100);
+    expect_near(camera.generate_ray({150, 50}).direction, {kHalfRoot2, 0, kHalfRoot2});
+    expect_near(camera.generate_ray({100, 0}).direction, {0, kHalfRoot2, kHalfRoot2});
+}
+
+// Half a turn from left to right, with right as long as the view is wide (2); up the tangent.
+TEST(Camera, PanoramicSpansHalfATurnAcross) {
+    const Camera camera(wide(Projection::panoramic, 90), 200, 100);
+    expect_near(camera.generate_ray({0, 50}).direction, {-1, 0, 0}, 1e-5f);
+    // 45 degrees right of the axis: cos 45 * 2 along x, sin 45 along z.
+    expect_near(camera.generate_ray({150, 50}).direction, normalize(Vector3{2, 0, 1}));
+    expect_near(camera.generate_ray({100, 25}).direction, {0, kHalfRoot2, kHalfRoot2}, 1e-5f);
+}
+
+// Round the vertical axis by the angle across, up as a perspective camera with a view 1 high
+// at distance 1; parallel along it, from a point a quarter of the extent up; the axis across.
+TEST(Camera, CylindricalTurnsRoundItsAxisAndGoesStraightAlongIt) {
+    CameraSpec spec = wide(Projection::cylindrical, 180);
+    spec.height = 1;
+    expect_near(Camera(spec, 200, 100).generate_ray({150, 25}).direction,
+                normalize(Vector3{kHalfRoot2, 0.25f, kHalfRoot2}));
+    spec.cylinder_parallel = true;
+    const Ray parallel = Camera(spec, 200, 100).generate_ray({150, 25});
+    expect_near(parallel.direction, {kHalfRoot2, 0, kHalfRoot2});
+    expect_near(to_vector(parallel.origin), {0, 0.25f, 0});
+    spec.cylinder_parallel = false;
+    spec.cylinder_axis_across = true;
+    expect_near(Camera(spec, 200, 100).generate_ray({150, 25}).direction,
+                normalize(Vector3{0.25f, kHalfRoot2, kHalfRoot2}));
+}
+
+// Longitude across the width (a quarter of 360 degrees right is +x), latitude up.
+TEST(Camera, SphericalIsEquirectangular) {
+    CameraSpec spec = wide(Projection::spherical, 360);
+    spec.vertical_fov = 180;
+    const Camera camera(spec, 200, 100);
+    expect_near(camera.generate_ray({150, 50}).direction, {1, 0, 0}, 1e-6f);
+    expect_near(camera.generate_ray({175, 50}).direction, {kHalfRoot2, 0, -kHalfRoot2}, 1e-6f);
+    expect_near(camera.generate_ray({100, 25}).direction, {0, kHalfRoot2, kHalfRoot2}, 1e-6f);
+    expect_near(camera.generate_ray({0, 50}).direction, {0, 0, -1}, 1e-6f);
+}
+
 Point2 lens_u(int i, int n) {  // an n x n grid of lens numbers
     return {(float(i % n) + 0.5f) / float(n), (float(i / n) + 0.5f) / float(n)};
 }

@@ -39,7 +39,8 @@ INSTANTIATE_TEST_SUITE_P(Scenes, PovReference,
                                          "inverse", "language", "lights", "mesh", "patterns",
                                          "polynomials", "prism", "refraction", "shapes", "sky",
                                          "text", "tiles", "lathe", "normals", "operands", "images",
-                                         "mesh2", "heightfields", "maps", "isosurfaces", "layers"));
+                                         "mesh2", "heightfields", "maps", "isosurfaces", "layers",
+                                         "fisheye"));
 
 }  // namespace
 }  // namespace glint

@@ -205,6 +205,35 @@ TEST(YamlScene, OrthographicCameraAndNormalisedUp) {
     EXPECT_EQ(scene.camera.height, 4.5f);
 }
 
+// The wide projections with their own keys and defaults; a key of another projection, or an
+// angle past a full turn, is an error.
+TEST(YamlScene, WideCamerasTakeTheirOwnAngles) {
+    const std::string at = "from: [0, 0, 0], at: [0, 0, 1]";
+    EXPECT_EQ(parse("camera: {type: fisheye, " + at + "}\n").camera.fov, 180);
+    EXPECT_EQ(parse("camera: {type: fisheye, fov: 360, " + at + "}\n").camera.fov, 360);
+    EXPECT_EQ(parse("camera: {type: ultra_wide_angle, fov: 270, " + at + "}\n").camera.projection,
+              Projection::ultra_wide_angle);
+    EXPECT_EQ(parse("camera: {type: panoramic, " + at + "}\n").camera.projection,
+              Projection::panoramic);
+    const CameraSpec cylinder =
+        parse("camera: {type: cylindrical, fov: 120, height: 3, axis: horizontal, parallel: "
+              "true, " + at + "}\n")
+            .camera;
+    EXPECT_EQ(cylinder.projection, Projection::cylindrical);
+    EXPECT_EQ(cylinder.fov, 120);
+    EXPECT_EQ(cylinder.height, 3);
+    EXPECT_TRUE(cylinder.cylinder_axis_across);
+    EXPECT_TRUE(cylinder.cylinder_parallel);
+    const CameraSpec sphere = parse("camera: {type: spherical, vertical_fov: 90, " + at + "}\n").camera;
+    EXPECT_EQ(sphere.fov, 360);
+    EXPECT_EQ(sphere.vertical_fov, 90);
+    for (const std::string bad :
+         {"{type: fisheye, fov: 400, ", "{type: panoramic, fov: 20, ", "{type: spherical, height: 2, ",
+          "{type: spherical, vertical_fov: 200, ", "{type: cylindrical, axis: diagonal, ",
+          "{type: fisheye, f_number: 2, "})
+        EXPECT_THROW(parse("camera: " + bad + at + "}\n"), SceneError) << bad;
+}
+
 TEST(YamlScene, NamedInlineAndDefaultMaterialsAreShared) {
     const Scene scene = parse(std::string(kCamera) +
                               "objects:\n"

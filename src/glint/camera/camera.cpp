@@ -1,7 +1,8 @@
 // The view-reference frame (n towards the target, u right, v up), the eye ray through a film
-// position for both projections, the thin lens and the moving camera.
+// position for each projection, the thin lens and the moving camera.
 #include "glint/camera/camera.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include "glint/math/constants.h"
@@ -52,7 +53,13 @@ Camera::Camera(const CameraSpec& spec, int width, int height)
       blades_(spec.lens.blades),
       blade_rotation_(radians(spec.lens.blade_rotation)),
       shutter_open_(spec.shutter_open),
-      shutter_close_(spec.shutter_close) {
+      shutter_close_(spec.shutter_close),
+      aspect_(spec.aspect > 0 ? spec.aspect : width_ / height_),
+      angle_(radians(spec.fov)),
+      vertical_angle_(radians(spec.vertical_fov)),
+      extent_(spec.height),
+      cylinder_axis_across_(spec.cylinder_axis_across),
+      cylinder_parallel_(spec.cylinder_parallel) {
     const Frame f = view_frame(spec.from, spec.at, spec.up);
     u_ = f.u, v_ = f.v, n_ = f.n;
     if (!spec.motion.empty()) {
@@ -67,7 +74,74 @@ Camera::Camera(const CameraSpec& spec, int width, int height)
     if (spec.left_handed) u_ = -u_;
     half_height_ =
         projection_ == Projection::perspective ? std::tan(radians(spec.fov) / 2) : spec.height / 2;
-    half_width_ = half_height_ * (spec.aspect > 0 ? spec.aspect : width_ / height_);
+    half_width_ = half_height_ * aspect_;
+}
+
+namespace {
+
+// The fisheye's point for film position (a, b), each in [-1/2, 1/2]: on the circle of radius
+// 1 that the view's height spans at its rim.
+Point2 fisheye_point(float a, float b, float aspect) { return {2 * a * aspect, 2 * b}; }
+
+}  // namespace
+
+bool Camera::sees(Point2 film) const {
+    if (projection_ != Projection::fisheye) return true;
+    const Point2 p = fisheye_point(film.x / width_ - 0.5f, 0.5f - film.y / height_, aspect_);
+    return p.x * p.x + p.y * p.y <= 1;
+}
+
+// The wide projections' eye ray, from the eye (or beside it, looking parallel along a
+// cylinder's axis), with a unit direction; a and b in [-1/2, 1/2] from left to right and from
+// bottom to top. POV-Ray's camera types, as its documentation gives them.
+Ray Camera::wide_ray(float a, float b) const {
+    Point3 origin = eye_;
+    Vector3 d;
+    switch (projection_) {
+        case Projection::fisheye: {
+            // The angle from the axis is the distance from the centre times half the fov.
+            const Point2 p = fisheye_point(a, b, aspect_);
+            const float r = std::sqrt(p.x * p.x + p.y * p.y), theta = r * angle_ / 2;
+            const float s = r > 0 ? std::sin(theta) / r : 0;
+            d = s * p.x * u_ + s * p.y * v_ + std::cos(theta) * n_;
+            break;
+        }
+        case Projection::ultra_wide_angle: {
+            const float x = a * angle_, y = b * angle_ / aspect_;
+            d = std::sin(x) * u_ + std::sin(y) * v_ + std::cos(x) * std::cos(y) * n_;
+            break;
+        }
+        case Projection::panoramic: {
+            // Half a turn from the left (-u) to the right; up the tangent of b half turns.
+            const float x = (0.5f - a) * kPi;
+            const float y = std::clamp(b * kPi, -0.4999f * kPi, 0.4999f * kPi);
+            d = std::cos(x) * aspect_ * u_ + std::tan(y) * v_ + std::sin(x) * n_;
+            break;
+        }
+        case Projection::cylindrical: {
+            // Round the axis by the angle across; along it by the extent.
+            const float turn = (cylinder_axis_across_ ? b : a) * angle_;
+            const float along = (cylinder_axis_across_ ? a : b) * extent_;
+            const Vector3 round = cylinder_axis_across_ ? v_ : u_;
+            const Vector3 axis = cylinder_axis_across_ ? u_ : v_;
+            d = std::sin(turn) * round + std::cos(turn) * n_;
+            if (cylinder_parallel_)
+                origin = origin + along * axis;
+            else
+                d = d + along * axis;
+            break;
+        }
+        case Projection::spherical: {
+            const float longitude = a * angle_, latitude = b * vertical_angle_;
+            d = std::cos(latitude) * (std::sin(longitude) * u_ + std::cos(longitude) * n_) +
+                std::sin(latitude) * v_;
+            break;
+        }
+        case Projection::perspective:
+        case Projection::orthographic:
+            break;
+    }
+    return {origin, normalize(d)};
 }
 
 Point2 Camera::aperture_point(Point2 u) const {
@@ -79,10 +153,15 @@ Ray Camera::generate_ray(Point2 film, Point2 lens, float time) const {
     // Viewport to window: x from -1 (left) to 1 (right), y from 1 (top) to -1 (bottom).
     const float x = (2 * film.x / width_ - 1) * half_width_;
     const float y = (1 - 2 * film.y / height_) * half_height_;
-    // The pinhole ray, its direction 1 along n (u and v are perpendicular to n).
+    // The pinhole ray, its direction 1 along n (u and v are perpendicular to n); a wide
+    // projection's of unit length, so that its plane of focus is a sphere round the eye.
     const bool orthographic = projection_ == Projection::orthographic;
-    const Point3 origin = orthographic ? eye_ + x * u_ + y * v_ : eye_;
-    const Vector3 direction = orthographic ? n_ : n_ + x * u_ + y * v_;
+    const bool wide = projection_ != Projection::perspective && !orthographic;
+    const Ray pinhole = wide ? wide_ray(film.x / width_ - 0.5f, 0.5f - film.y / height_)
+                             : Ray{orthographic ? eye_ + x * u_ + y * v_ : eye_,
+                                   orthographic ? n_ : n_ + x * u_ + y * v_};
+    const Point3 origin = pinhole.origin;
+    const Vector3 direction = pinhole.direction;
     Ray ray;
     if (lens_radius_ > 0) {
         // From a point of the aperture to where the pinhole ray meets the plane of focus: at
@@ -92,7 +171,7 @@ Ray Camera::generate_ray(Point2 film, Point2 lens, float time) const {
         ray.origin = origin + (a.x * u_ + a.y * v_) * lens_radius_;
         ray.direction = normalize(focus - ray.origin);
     } else {
-        ray = {origin, orthographic ? direction : normalize(direction)};
+        ray = {origin, orthographic || wide ? direction : normalize(direction)};
     }
     ray.time = time;
     if (motion_) {

@@ -1,5 +1,5 @@
-// Primary rays from a CameraSpec and an image size: pinhole or thin-lens perspective, or
-// orthographic, standing still or moving.
+// Primary rays from a CameraSpec and an image size: pinhole or thin-lens perspective,
+// orthographic or one of the wide projections, standing still or moving.
 #pragma once
 
 #include <memory>
@@ -22,6 +22,9 @@ public:
     // aperture (ignored by a pinhole), `time` the moment (see shutter_time). The direction is
     // unit length.
     Ray generate_ray(Point2 film, Point2 lens = {0.5f, 0.5f}, float time = 0) const;
+    // Whether the film position sees anything: not outside a fisheye's circle, where samples
+    // are black.
+    bool sees(Point2 film) const;
 
     // Whether eye rays need lens numbers (an aperture) and time numbers (an open shutter).
     bool has_lens() const { return lens_radius_ > 0; }
@@ -69,6 +72,8 @@ public:
     bool is_connectable() const { return projection_ == Projection::perspective; }
 
 private:
+    Ray wide_ray(float a, float b) const;
+
     Projection projection_;
     Point3 eye_;
     // View reference frame (the notes' u, v, n): right, up, and forward (towards look-at). For
@@ -80,6 +85,10 @@ private:
     int blades_;
     float blade_rotation_;  // radians
     float shutter_open_, shutter_close_;
+    // The wide projections: the view's width over its height, the angles in radians and the
+    // cylinder's extent along its axis.
+    float aspect_, angle_, vertical_angle_, extent_;
+    bool cylinder_axis_across_, cylinder_parallel_;
     std::shared_ptr<const AnimatedTransform> motion_;  // world from camera; null: static
 };
 

@@ -8,7 +8,33 @@
 
 namespace glint {
 
-enum class Projection { perspective, orthographic };
+// How film positions become eye rays. Beside the pinhole's perspective and the orthographic
+// view, the wide projections of POV-Ray (Camera::generate_ray has their formulas): each turns
+// the film's axes into angles, so that a view can span up to a full turn.
+enum class Projection {
+    perspective,
+    orthographic,
+    fisheye,           // equidistant: the angle from the view axis grows with the distance from
+                       // the centre; nothing is seen outside the circle the view's height spans
+    ultra_wide_angle,  // the film's x and y both angles, as latitude and longitude of a kind
+    panoramic,         // half a turn across, the vertical as a perspective camera's tangent
+    cylindrical,       // an angle round an axis one way, straight (or parallel) along it
+    spherical,         // equirectangular: longitude across, latitude up
+};
+
+// The projection's name as scene files write it ("ultra_wide_angle").
+constexpr const char* projection_name(Projection p) {
+    switch (p) {
+        case Projection::perspective: return "perspective";
+        case Projection::orthographic: return "orthographic";
+        case Projection::fisheye: return "fisheye";
+        case Projection::ultra_wide_angle: return "ultra_wide_angle";
+        case Projection::panoramic: return "panoramic";
+        case Projection::cylindrical: return "cylindrical";
+        case Projection::spherical: return "spherical";
+    }
+    return "?";
+}
 
 // A thin lens (Potmesil and Chakravarty 1981, as Cook, Porter and Carpenter 1984 trace it): each
 // eye ray starts at a point of the aperture and passes through the point of the plane of focus
@@ -33,8 +59,17 @@ struct CameraSpec {
     Point3 from{0, 0, 0};  // the eye
     Point3 at{0, 0, 1};    // the point at the image centre; != from
     Vector3 up{0, 1, 0};   // need not be perpendicular to the view; not parallel to it
-    float fov = 45;        // perspective: full vertical field of view, degrees, in (0, 180)
-    float height = 2;      // orthographic: height of the view in scene units, > 0
+    // Degrees: for perspective the full vertical field of view, in (0, 180); in (0, 360] the
+    // fisheye's across the circle, ultra_wide_angle's and spherical's across the view's width,
+    // cylindrical's round its axis.
+    float fov = 45;
+    float vertical_fov = 180;  // spherical: degrees of latitude across the height, in (0, 180]
+    // orthographic: height of the view in scene units, > 0; cylindrical: the view's extent along
+    // the axis, at distance 1 (or in scene units when it looks parallel along it).
+    float height = 2;
+    // cylindrical: the axis lies along the view's width (else its height), and rays are parallel
+    // along it (else they spread as a perspective camera's).
+    bool cylinder_axis_across = false, cylinder_parallel = false;
     // The view's width over its height: 0 for the image's own (square pixels), or as POV-Ray's
     // right and up vectors give it, which stretch the view over the image whatever its size.
     float aspect = 0;

@@ -57,8 +57,8 @@ void check_beam_fits(const Scene& scene) {
         !camera.motion.empty())
         throw SceneError(file,
                          "the beam integrator needs a still pinhole camera: its beams are "
-                         "pyramids from one eye, and a lens, an orthographic view or a moving "
-                         "camera has many",
+                         "pyramids from one eye, and a lens, an orthographic or wide view or a "
+                         "moving camera has many",
                          {"render it with the whitted or distributed integrator"});
     for (std::size_t i = 0; i < scene.objects.size(); ++i) {
         const auto unfit = beam_unfit_part(scene.objects[i].shape);
@@ -110,10 +110,13 @@ void check_integrator_fits(const Scene& scene) {
     const std::string name(integrator.name);
     if (scene.camera.projection != Projection::perspective)
         throw SceneError({scene.sources.file, 0, 0},
-                         "the " + name +
-                             " integrator cannot see through an orthographic camera: it joins "
-                             "the surfaces particles reach to the eye through its lens, and an "
-                             "orthographic camera sees each point along one direction only",
+                         "the " + name + " integrator cannot see through " +
+                             (scene.camera.projection == Projection::orthographic
+                                  ? std::string("an orthographic camera")
+                                  : "a " + std::string(projection_name(scene.camera.projection)) +
+                                        " camera") +
+                             ": it joins the surfaces particles reach to the eye, and only a "
+                             "perspective camera tells where on its film a point is seen",
                          {"render it with the path integrator, or a perspective camera"});
     for (std::size_t i = 0; i < scene.lights.size(); ++i) {
         const Light& light = scene.lights[i];

@@ -171,6 +171,7 @@ void unused_material(const Scene& scene, Warnings& out) {
 // The view's frame and window: a box is out of view when all its corners lie beyond one side of
 // the view's pyramid (perspective) or slab (orthographic), or behind the eye. A box that crosses
 // a corner of the pyramid may be out of view without being found: the rule never warns wrongly.
+// A wide projection's view may span a full turn: it is taken to see everything.
 class View {
 public:
     View(const CameraSpec& c, const RenderSettings& s)
@@ -179,12 +180,14 @@ public:
           right_(normalize(cross(forward_, c.up))),
           up_(cross(right_, forward_)),
           perspective_(c.projection == Projection::perspective),
+          wide_(!perspective_ && c.projection != Projection::orthographic),
           lens_(c.lens.radius) {
         half_height_ = perspective_ ? std::tan(radians(c.fov) / 2) : c.height / 2;
         half_width_ = half_height_ * (c.aspect > 0 ? c.aspect : float(s.width) / float(s.height));
     }
 
     bool sees(const Bounds3& box) const {
+        if (wide_) return true;
         // The aperture's rays start up to its radius from the eye: grown boxes stay conservative.
         const Vector3 grow{lens_, lens_, lens_};
         const Bounds3 b{box.min - grow, box.max + grow};
@@ -209,7 +212,7 @@ public:
 private:
     Point3 eye_;
     Vector3 forward_, right_, up_;
-    bool perspective_;
+    bool perspective_, wide_;
     float lens_;
     float half_width_ = 1, half_height_ = 1;
 };

@@ -549,6 +549,41 @@ TEST(PovScene, OrthographicViewsAreSizedAsPovRaySizesThem) {
         12, 1e-4);
 }
 
+// POV-Ray's wide cameras onto glint's projections: the angle is the field of view (90 unless
+// given); a cylinder's kind picks its axis and whether it looks parallel along it, the extent
+// along the axis being up's length (kinds 1, 3) or right's (2, 4).
+TEST(PovScene, WideCamerasTakeTheirAngleAndACylindersKind) {
+    const CameraSpec fisheye = parse("camera { fisheye location 0 look_at z angle 200 }").camera;
+    EXPECT_EQ(fisheye.projection, Projection::fisheye);
+    EXPECT_FLOAT_EQ(fisheye.fov, 200);
+    EXPECT_FLOAT_EQ(parse("camera { ultra_wide_angle look_at z }").camera.fov, 90);
+    EXPECT_EQ(parse("camera { panoramic look_at z }").camera.projection, Projection::panoramic);
+    const CameraSpec three =
+        parse("camera { cylinder 3 location 0 up 20 * y look_at z angle 200 }").camera;
+    EXPECT_EQ(three.projection, Projection::cylindrical);
+    EXPECT_TRUE(three.cylinder_parallel);
+    EXPECT_FALSE(three.cylinder_axis_across);
+    EXPECT_FLOAT_EQ(three.height, 20);
+    const CameraSpec two = parse("camera { cylinder 2 right 2 * x look_at z }").camera;
+    EXPECT_TRUE(two.cylinder_axis_across);
+    EXPECT_FALSE(two.cylinder_parallel);
+    EXPECT_FLOAT_EQ(two.height, 2);
+    const CameraSpec spherical = parse("camera { spherical angle 180, 120 look_at z }").camera;
+    EXPECT_FLOAT_EQ(spherical.fov, 180);
+    EXPECT_FLOAT_EQ(spherical.vertical_fov, 120);
+    EXPECT_FLOAT_EQ(parse("camera { spherical look_at z }").camera.vertical_fov, 180);
+    // perspective after a wide type goes back to the pinhole.
+    EXPECT_EQ(parse("camera { fisheye perspective look_at z }").camera.projection,
+              Projection::perspective);
+    EXPECT_NE(error_of("camera { fisheye angle 400 }")
+                  .find("error: camera angle must be in (0, 360] for a fisheye camera"),
+              std::string::npos);
+    EXPECT_NE(error_of("camera { cylinder 5 }").find("error:"), std::string::npos);
+    EXPECT_NE(error_of("camera { spherical angle 360, 200 }")
+                  .find("vertical angle must be in (0, 180]"),
+              std::string::npos);
+}
+
 // isosurface: the function less the threshold as glint's implicit surface, within its
 // container: intersected with it when closed, clipped by it (or bounded, a box) when open.
 // Functions are written out: built-ins, declared floats, declared functions with their own

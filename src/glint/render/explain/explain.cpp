@@ -50,6 +50,12 @@ RayTree explain(const World& world, const PixelSample& which) {
     // the render carry it too.
     const EyeSample eye = eye_sample(camera, stream, which.x, which.y, filter ? &*filter : nullptr,
                                      eye_pencil_scale(settings.samples_per_pixel));
+    if (!camera.sees(eye.film))
+        throw SettingsError("pixel", "pixel (" + std::to_string(which.x) + ", " +
+                                         std::to_string(which.y) + ") sample " +
+                                         std::to_string(which.sample) +
+                                         " lies outside the fisheye's circle: the camera sees "
+                                         "nothing there, and the sample is black");
 
     RayTree tree;
     tree.x = which.x;

@@ -1,10 +1,26 @@
 // Reads POV-Ray's camera, light_source and sky_sphere blocks as written; pov_scene.cpp aims the
 // camera and maps the lights onto glint's, pov_sky.cpp bakes the sky.
 #include <memory>
+#include <optional>
+#include <string_view>
 
 #include "glint/scene/pov/pov_item_reader.h"
 
 namespace glint {
+
+namespace {
+
+// POV-Ray's wide camera types (cylinder takes its kind after it).
+std::optional<Projection> wide_projection(std::string_view w) {
+    if (w == "fisheye") return Projection::fisheye;
+    if (w == "ultra_wide_angle") return Projection::ultra_wide_angle;
+    if (w == "panoramic") return Projection::panoramic;
+    if (w == "cylinder") return Projection::cylindrical;
+    if (w == "spherical") return Projection::spherical;
+    return std::nullopt;
+}
+
+}  // namespace
 
 PovCamera PovItemReader::camera(const PovToken& keyword) {
     parser_.expect("{", "after camera");
@@ -15,10 +31,15 @@ PovCamera PovItemReader::camera(const PovToken& keyword) {
     c.at = keyword.at;
     for (PovToken t = parser_.next(); !t.is_symbol("}"); t = parser_.next()) {
         const std::string& w = t.text;
-        if (w == "perspective")
+        if (w == "perspective" || w == "orthographic") {
+            c.orthographic = w == "orthographic";
+            c.wide.reset();
+        } else if (const auto wide = wide_projection(w)) {
             c.orthographic = false;
-        else if (w == "orthographic")
-            c.orthographic = true;
+            c.wide = *wide;
+            if (*wide == Projection::cylindrical)
+                c.cylinder_kind = parser_.whole_number("after cylinder", 1, 4);
+        }
         else if (w == "location")
             c.location = parser_.finite_vector("after location");
         else if (w == "look_at")
@@ -30,12 +51,15 @@ PovCamera PovItemReader::camera(const PovToken& keyword) {
             c.sized = true;
         } else if (w == "sky")
             c.sky = parser_.finite_vector("after sky");
-        else if (w == "angle")
+        else if (w == "angle") {
             // An orthographic camera's angle may come without a number: the view of a
             // perspective camera's default angle.
             c.angle = c.orthographic && !number_next() ? std::optional<double>(0)
                                                        : parser_.finite_float("after angle");
-        else if (w == "focal_point")
+            // A spherical camera's vertical angle may follow its horizontal one.
+            if (c.wide == Projection::spherical && (parser_.accept(",") || number_next()))
+                c.vertical_angle = parser_.finite_float("as the spherical camera's vertical angle");
+        } else if (w == "focal_point")
             c.focal_point = parser_.finite_vector("after focal_point");
         else if (w == "aperture")
             c.aperture = parser_.finite_float("after aperture");

@@ -9,6 +9,7 @@
 #include <variant>
 #include <vector>
 
+#include "glint/camera/camera_spec.h"
 #include "glint/geometry/shape.h"
 #include "glint/math/transform.h"
 #include "glint/scene/pov/pov_files.h"
@@ -127,6 +128,11 @@ struct PovMaterial {
 struct PovCamera {
     PovPosition at;  // the camera keyword, for errors found when it is placed
     bool orthographic = false;
+    // fisheye, ultra_wide_angle, panoramic, cylinder (of kind 1 to 4) or spherical; nothing
+    // for perspective and orthographic.
+    std::optional<Projection> wide;
+    int cylinder_kind = 1;
+    std::optional<double> vertical_angle;  // spherical: the second number after angle
     PovVector location{};
     PovVector direction{{0, 0, 1}}, up{{0, 1, 0}}, sky{{0, 1, 0}}, right{{1.33, 0, 0}};
     std::optional<PovVector> look_at, focal_point;

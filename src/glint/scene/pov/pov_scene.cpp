@@ -228,8 +228,9 @@ private:
     // says otherwise).
     void camera(const PovCamera& pov) {
         PovVector direction = pov.direction, up = pov.up, right = pov.right;
-        // As POV-Ray: the angle sets the direction's length against right's.
-        if (pov.angle && !(pov.orthographic && *pov.angle == 0)) {
+        // As POV-Ray: the angle sets the direction's length against right's; a wide camera's
+        // is its field of view (wide_camera).
+        if (pov.angle && !pov.wide && !(pov.orthographic && *pov.angle == 0)) {
             if (!(*pov.angle > 0 && *pov.angle < 180))
                 throw files_.error_at(pov.at, "camera angle must be in (0, 180)");
             direction = scaled(direction, 0.5 * norm(right) /
@@ -287,7 +288,9 @@ private:
         const bool own =
             std::isfinite(aspect) && aspect > 0 && std::abs(aspect / image_aspect - 1) > 1e-6;
         c.aspect = own ? float(aspect) : 0;
-        if (pov.orthographic) {
+        if (pov.wide) {
+            wide_camera(pov, length(t(to_vector(right))), length(up_placed));
+        } else if (pov.orthographic) {
             c.projection = Projection::orthographic;
             c.height = length(up_placed);
         } else {
@@ -303,6 +306,32 @@ private:
                 c.lens.focus_distance = dot(to_focus, view) / length(view);
             }
             scene_.settings.integrator = IntegratorKind::distributed;
+        }
+    }
+
+    // POV-Ray's wide cameras: their angle (90 degrees unless given) is the field of view; a
+    // cylinder's kind picks its axis (1 and 3 up, 2 and 4 right) and whether it looks parallel
+    // along it (3 and 4), its extent along the axis that vector's length.
+    void wide_camera(const PovCamera& pov, double right_length, double up_length) {
+        CameraSpec& c = scene_.camera;
+        c.projection = *pov.wide;
+        const double angle = pov.angle.value_or(c.projection == Projection::spherical ? 360 : 90);
+        if (!(angle > 0 && angle <= 360))
+            throw files_.error_at(pov.at, "camera angle must be in (0, 360] for a " +
+                                              std::string(projection_name(c.projection)) +
+                                              " camera");
+        c.fov = float(angle);
+        if (c.projection == Projection::spherical) {
+            const double vertical = pov.vertical_angle.value_or(std::min(angle / 2, 180.0));
+            if (!(vertical > 0 && vertical <= 180))
+                throw files_.error_at(pov.at, "a spherical camera's vertical angle must be in "
+                                              "(0, 180]");
+            c.vertical_fov = float(vertical);
+        }
+        if (c.projection == Projection::cylindrical) {
+            c.cylinder_axis_across = pov.cylinder_kind == 2 || pov.cylinder_kind == 4;
+            c.cylinder_parallel = pov.cylinder_kind >= 3;
+            c.height = float(c.cylinder_axis_across ? right_length : up_length);
         }
     }
 

@@ -12,7 +12,10 @@
 namespace glint {
 
 namespace {
-constexpr std::string_view kCameraTypes[] = {"orthographic", "perspective"};
+constexpr std::string_view kCameraTypes[] = {"cylindrical", "fisheye",     "orthographic",
+                                             "panoramic",   "perspective", "spherical",
+                                             "ultra_wide_angle"};
+constexpr std::string_view kCylinderAxes[] = {"horizontal", "vertical"};
 
 // `filter: gaussian`, or a map with the type and its parameters.
 FilterSpec read_filter(const YamlSource& source, const YAML::Node& node, const Field& field) {
@@ -189,7 +192,11 @@ void read_lens(const MapReader& map, CameraSpec& camera, std::vector<std::string
     if (map.has("f_number")) {
         if (camera.projection != Projection::perspective) {
             throw source.error_at(map.require("f_number").key_node,
-                                  "an orthographic camera has no focal length for f_number",
+                                  "a" + std::string(camera.projection == Projection::orthographic
+                                                        ? "n "
+                                                        : " ") +
+                                      projection_name(camera.projection) +
+                                      " camera has no focal length for f_number",
                                   {"give its aperture radius with \"aperture\""});
         }
         const float n = map.number("f_number", kPositive);
@@ -217,6 +224,35 @@ void read_lens(const MapReader& map, CameraSpec& camera, std::vector<std::string
                 entry->key_node, "camera " + std::string(key) +
                                      " does nothing without an aperture: a pinhole camera has no "
                                      "lens (give aperture or f_number for depth of field)"));
+}
+
+// The projection's own parameters: perspective's vertical fov, the wide projections' angles
+// (up to a full turn), the view's height or a cylinder's extent along its axis.
+void read_projection(const MapReader& map, CameraSpec& camera) {
+    constexpr Range kTurn{0, 360, true, false};
+    switch (camera.projection) {
+        case Projection::perspective:
+            camera.fov = map.number("fov", {0, 180, true, true}, camera.fov);
+            break;
+        case Projection::orthographic:
+            camera.height = map.number("height", kPositive, camera.height);
+            break;
+        case Projection::fisheye:
+        case Projection::ultra_wide_angle: camera.fov = map.number("fov", kTurn, 180); break;
+        case Projection::panoramic: break;
+        case Projection::cylindrical:
+            camera.fov = map.number("fov", kTurn, 180);
+            camera.height = map.number("height", kPositive, 1);
+            camera.cylinder_axis_across =
+                map.choice("axis", kCylinderAxes, "cylinder axis", "cylinder axes", "vertical") ==
+                "horizontal";
+            camera.cylinder_parallel = map.boolean("parallel", false);
+            break;
+        case Projection::spherical:
+            camera.fov = map.number("fov", kTurn, 360);
+            camera.vertical_fov = map.number("vertical_fov", {0, 180, true, false}, 180);
+            break;
+    }
 }
 
 // The shutter interval and the camera's keyframes, each a map of time, from, at and up.
@@ -272,16 +308,29 @@ CameraSpec read_camera(const YamlSource& source, const YAML::Node& node, const F
     auto entries = read_map(source, node, field);
     const std::string type =
         read_type(source, node, entries, "camera", kCameraTypes, "perspective");
-    const bool perspective = type == "perspective";
-    // Each projection takes only its own parameter, so a fov on an orthographic camera is
+    // Each projection takes only its own parameters, so a fov on an orthographic camera is
     // reported rather than silently ignored.
-    const MapReader map(
-        source, node, std::move(entries), type + " camera",
-        {"type", "from", "at", "up", perspective ? "fov" : "height", "aperture", "f_number",
-         "focus_distance", "aperture_blades", "aperture_rotation", "shutter", "motion"},
-        TypeKey::listed);
+    std::vector<std::string_view> keys = {"type",           "from",           "at",
+                                          "up",             "aperture",       "f_number",
+                                          "focus_distance", "aperture_blades", "aperture_rotation",
+                                          "shutter",        "motion"};
     CameraSpec camera;
-    camera.projection = perspective ? Projection::perspective : Projection::orthographic;
+    for (const Projection p :
+         {Projection::perspective, Projection::orthographic, Projection::fisheye,
+          Projection::ultra_wide_angle, Projection::panoramic, Projection::cylindrical,
+          Projection::spherical})
+        if (type == projection_name(p)) camera.projection = p;
+    switch (camera.projection) {
+        case Projection::perspective:
+        case Projection::fisheye:
+        case Projection::ultra_wide_angle: keys.push_back("fov"); break;
+        case Projection::orthographic: keys.push_back("height"); break;
+        case Projection::panoramic: break;
+        case Projection::cylindrical: keys.insert(keys.end(), {"fov", "height", "axis", "parallel"}); break;
+        case Projection::spherical: keys.insert(keys.end(), {"fov", "vertical_fov"}); break;
+    }
+    const MapReader map(source, node, std::move(entries), type + " camera", keys,
+                        TypeKey::listed);
     camera.from = map.point("from");
     camera.at = map.point("at");
     const auto view = unit_vector(camera.at - camera.from);
@@ -298,11 +347,7 @@ CameraSpec read_camera(const YamlSource& source, const YAML::Node& node, const F
                               {"the image's vertical follows up; give one that is not along the "
                                "line of sight"});
     }
-    if (perspective) {
-        camera.fov = map.number("fov", {0, 180, true, true}, camera.fov);
-    } else {
-        camera.height = map.number("height", kPositive, camera.height);
-    }
+    read_projection(map, camera);
     read_lens(map, camera, warnings);
     read_shutter(map, camera);
     return camera;
