@@ -38,6 +38,24 @@ TEST(NormalPattern, SlopeOfARampIsTwoFifteenthsOfTheAmountDownhill) {
     expect_near(normal_offset(np, {0.5f, 0.2f, -0.3f}), {-0.4f, 0, 0}, 3e-4f);
 }
 
+// POV-Ray's pigment_pattern: a ramp from black to red, green or white along x has the grey
+// 0.297 x, 0.589 x or x, and its slope is that much of the pattern's own.
+TEST(NormalPattern, SlopeOfAPigmentsGreyWeighsItsChannels) {
+    for (const auto& [top, grey] : {std::pair{Color{1, 0, 0}, 0.297f},
+                                     std::pair{Color{0, 1, 0}, 0.589f},
+                                     std::pair{Color{1, 1, 1}, 1.0f}}) {
+        auto ramp = std::make_shared<PatternTexture>();
+        ramp->spec.kind = PatternKind::gradient;
+        ramp->spec.direction = {1, 0, 0};
+        ramp->colors = {{0, Color{0, 0, 0}}, {1, top}};
+        NormalPattern np;
+        np.kind = NormalPatternKind::slope;
+        np.pigment = std::make_shared<const Texture>(PatternTexturePtr(ramp));
+        np.amount = 1;
+        expect_near(normal_offset(np, {0.5f, 0.2f, -0.3f}), {-2.0f / 15 * grey, 0, 0}, 1e-5f);
+    }
+}
+
 // (0, 1, 0) + (-2/15, 0, 0), normalised: (-0.132164, 0.991228, 0).
 TEST(NormalPattern, TiltIsTheNormalPlusTheOffsetNormalised) {
     const Normal3 n = perturbed(gradient_x(1), {0, 1, 0}, {0.5f, 0, 0});

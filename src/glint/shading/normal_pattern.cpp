@@ -48,9 +48,15 @@ constexpr Vector3 kTetrahedron[4] = {{0.942809042f, -1.0f / 3, 0},
 Vector3 normal_offset(const NormalPattern& np, Point3 q) {
     if (np.kind == NormalPatternKind::slope) {
         // POV-Ray's -5 amount (0.02 / h) times the differences: -(2/15) amount grad f.
+        const auto height = [&np](Point3 at) {
+            if (!np.pigment) return pattern_value(np.pattern, at);
+            SurfacePoint sp;
+            sp.p = at;
+            const Color c = evaluate(*np.pigment, sp);
+            return 0.297f * c.r + 0.589f * c.g + 0.114f * c.b;
+        };
         Vector3 sum;
-        for (const Vector3& v : kTetrahedron)
-            sum += v * pattern_value(np.pattern, q + v * np.accuracy);
+        for (const Vector3& v : kTetrahedron) sum += v * height(q + v * np.accuracy);
         return sum * (-5 * np.amount * 0.02f / np.accuracy);
     }
     q = turbulent(np.pattern, q);

@@ -4,9 +4,12 @@
 // its slope, which is Blinn's bump mapping with the pattern as the height field.
 #pragma once
 
+#include <memory>
+
 #include "glint/math/transform.h"
 #include "glint/math/vector.h"
 #include "glint/shading/pattern.h"
+#include "glint/shading/texture.h"
 
 namespace glint {
 
@@ -16,7 +19,8 @@ enum class NormalPatternKind {
     wrinkles,  // amount * sum over 10 octaves of |vector noise(2^i p)| / 2^i, per component
     ripples,   // rings of sin(2 pi (d frequency + phase)) round 10 points on the unit sphere
     waves,     // ripples with each source's own frequency, and amplitudes falling with it
-    slope,     // down the slope of `pattern`: -(2/15) amount grad(pattern), by differences
+    slope,     // down the slope of `pattern` (or of `pigment`'s grey): -(2/15) amount grad, by
+               // differences
 };
 
 struct NormalPattern {
@@ -24,6 +28,9 @@ struct NormalPattern {
     // slope: the pattern; every kind: its turbulence; ripples and waves: its frequency and
     // phase.
     PatternSpec pattern;
+    // slope: a colour source whose grey (0.297 r + 0.589 g + 0.114 b, POV-Ray's) is the height,
+    // in place of `pattern`: POV-Ray's pigment_pattern. Lies in the pattern's space.
+    std::shared_ptr<const Texture> pigment;
     float amount = 0.5f;     // POV-Ray's bump_size
     float accuracy = 0.02f;  // slope: the step of the differences, > 0
     Transform to_pattern;    // scene space to the pattern's

@@ -1,6 +1,7 @@
 // glint's own POV-Ray test scene for normal patterns: the slope of gradient, onion, radial,
-// leopard and marble patterns (with bump_size, frequency and accuracy), a declared normal in a
-// texture, shallow bumps and waves, all placed by their objects' transforms. Its reference,
+// leopard and marble patterns (with bump_size, frequency and accuracy), of a pigment's grey
+// (pigment_pattern, bricks), a declared normal in a texture, shallow bumps and waves, all placed
+// by their objects' transforms. Its reference,
 // normals-povray.png, is POV-Ray 3.7.0.10's render at 160x120 without antialiasing:
 // povray +Inormals.pov +W160 +H120 -A
 #version 3.7;
@@ -19,3 +20,4 @@ union {
 }
 sphere { <-1.2, 0.5, -2>, 0.5 pigment { color rgb <0.9, 0.9, 0.5> } normal { marble 0.8 scale 0.2 rotate y*40 } finish { specular 0.5 roughness 0.02 } }
 sphere { <1.2, 0.5, -2>, 0.5 pigment { color rgb <0.6, 0.9, 0.6> } normal { bumps 0.15 scale 0.5 } scale <1.2, 1, 1> }
+box { <-0.6, 0, -0.1> <0.6, 0.8, 0.1> pigment { color rgb 0.85 } normal { pigment_pattern { brick color rgb 1 color rgb 0.2 scale 0.05 } 0.6 } finish { phong 0.5 } rotate y * -20 translate <0, 0, -3> }

@@ -259,6 +259,28 @@ TEST(PovScene, NormalsTiltByTheirPatternPlacedWithTheObject) {
               std::string::npos);
 }
 
+// pigment_pattern: the slope of a pigment's grey, the pigment placed in the normal's space; one
+// glint does not read stops the scene.
+TEST(PovScene, PigmentPatternNormalsTiltByThePigmentsGrey) {
+    const Scene s = parse(
+        "sphere { 0, 1 normal { pigment_pattern { gradient x color_map { [0 rgb 0] [1 rgb 1] } "
+        "scale 2 }, 0.6 } }");
+    ASSERT_EQ(s.objects.size(), 1u);
+    const Material& m = s.materials[s.objects[0].material];
+    ASSERT_TRUE(m.maps && m.maps->normal_pattern);
+    const NormalPattern& np = *m.maps->normal_pattern;
+    EXPECT_EQ(np.kind, NormalPatternKind::slope);
+    EXPECT_FLOAT_EQ(np.amount, 0.6f);
+    ASSERT_TRUE(np.pigment);
+    SurfacePoint sp;
+    sp.p = {1, 0, 0};  // half way up the ramp scaled by 2
+    EXPECT_NEAR(evaluate(*np.pigment, sp).g, 0.5f, 1e-5f);
+    EXPECT_TRUE(s.warnings.empty());
+    EXPECT_NE(error_of("sphere { 0, 1 normal { pigment_pattern { julia <0, 1> 9 } } }")
+                  .find("pigment pattern \"julia\" is not supported yet"),
+              std::string::npos);
+}
+
 // A normal for each part of a list pattern is not read yet: the surface stays smooth, and says so.
 TEST(PovScene, ListPatternsOfNormalsLeaveTheSurfaceSmooth) {
     const Scene s =

@@ -88,6 +88,9 @@ struct PovFog {
 // smooth.
 struct PovNormal {
     NormalPattern pattern;  // its to_pattern is set when the object is placed
+    // pigment_pattern: the pigment whose grey is the slope's height (pattern.pigment is made
+    // from it when the object is placed).
+    std::shared_ptr<const PovPigment> pigment;
     Transform transform;
     std::string unsupported;
 };

@@ -1,6 +1,6 @@
 // POV-Ray's normal { }: its own patterns (bumps, dents, wrinkles, ripples, waves) and the slope of
-// any pigment pattern, with its amount, modifiers and transforms, read onto glint's normal
-// patterns (shading/normal_pattern.h).
+// any pigment pattern or of a pigment's grey (pigment_pattern), with its amount, modifiers and
+// transforms, read onto glint's normal patterns (shading/normal_pattern.h).
 #include <string_view>
 
 #include "glint/scene/pov/pov_item_reader.h"
@@ -23,8 +23,8 @@ bool unread_normal_pattern(std::string_view w) {
     static constexpr std::string_view kUnread[] = {
         "aoi",          "average", "bump_map", "cells",           "cubic",
         "density_file", "facets",  "function", "image_pattern",   "julia",
-        "magnet",       "object",  "pavement", "pigment_pattern", "quilted",
-        "slope",        "square",  "tiling",   "triangular"};
+        "magnet",       "object",  "pavement", "quilted",   "slope",
+        "square",       "tiling",  "triangular"};
     for (const std::string_view u : kUnread)
         if (u == w) return true;
     return false;
@@ -46,6 +46,13 @@ PovNormal PovItemReader::normal(const std::optional<PovNormal>& base) {
             parser_.next();
             n = PovNormal{};
             n.pattern.kind = *kind;
+            pattern_of = PovPigment{};
+        } else if (first.is_word("pigment_pattern")) {
+            // The slope of a pigment's grey.
+            parser_.next();
+            n = PovNormal{};
+            n.pattern.kind = NormalPatternKind::slope;
+            n.pigment = std::make_shared<const PovPigment>(pigment({}));
             pattern_of = PovPigment{};
         } else if (is_pigment_pattern(first.text)) {
             const PovToken name = parser_.next();

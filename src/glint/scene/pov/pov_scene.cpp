@@ -510,6 +510,11 @@ private:
             MaterialMaps maps;
             maps.normal_pattern = normal->pattern;
             maps.normal_pattern->to_pattern = (frame * normal->transform).inverse();
+            if (normal->pigment) {
+                refuse_unread(*normal->pigment);
+                maps.normal_pattern->pigment =
+                    std::make_shared<const Texture>(texture_of(*normal->pigment, Transform{}));
+            }
             m.maps = std::make_shared<const MaterialMaps>(std::move(maps));
         }
         const PovFinish& f = t.finish;
