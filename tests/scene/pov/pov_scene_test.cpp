@@ -64,6 +64,10 @@ TEST(PovScene, AngleIsHorizontalAndLookAtTurnsTheView) {
     EXPECT_NEAR(s.camera.at.z, -10 + 0.665, 1e-5);
     // A right-handed right vector makes a right-handed camera.
     EXPECT_FALSE(parse("camera { right -1.33*x look_at z }").camera.left_handed);
+    // So does up along the direction (right . up x direction = 0), as in POV-Ray's prism3
+    // scenes: up z with the default direction z.
+    EXPECT_FALSE(
+        parse("camera { location <-10, 10, -10> up z look_at 0 }").camera.left_handed);
 }
 
 // shadowless: the light casts no shadows, whatever its kind.

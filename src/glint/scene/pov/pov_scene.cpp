@@ -237,7 +237,9 @@ private:
                                               std::tan(*pov.angle * std::numbers::pi / 360) /
                                               norm(direction));
         }
-        const double handed = dot3(right, cross3(up, direction));
+        // As POV-Ray: left-handed when right . (up x direction) > 0; not when it is 0 (up along
+        // the direction, as `up z` leaves the default direction).
+        const bool left_handed = dot3(right, cross3(up, direction)) > 0;
         if (pov.look_at) {
             PovVector d = *pov.look_at;
             for (int i = 0; i < 3; ++i) d[i] -= pov.location[i];
@@ -257,9 +259,9 @@ private:
                                           "is kept as given");
             }
             right = scaled(r, length_r / norm(r));
-            if (handed < 0) right = scaled(right, -1);
+            if (!left_handed) right = scaled(right, -1);
             PovVector u = cross3(direction, right);
-            if (handed < 0) u = scaled(u, -1);
+            if (!left_handed) u = scaled(u, -1);
             up = scaled(u, length_u / norm(u));
         }
         if (pov.orthographic && (!pov.sized || pov.angle)) {
@@ -278,7 +280,7 @@ private:
         c.from = t(to_point(pov.location));
         c.at = c.from + view;
         c.up = up_placed;
-        c.left_handed = handed >= 0;
+        c.left_handed = left_handed;
         // As POV-Ray: right's length against up's is the view's shape, whatever the image's.
         // The shape image_width / image_height gives the reader is taken for the image's own,
         // at whatever size the image is rendered.
