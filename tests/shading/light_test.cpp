@@ -51,6 +51,24 @@ TEST(Light, SpotLightIsFullInsideDarkOutsideAndSmoothBetween) {
     EXPECT_NEAR(t, 0.5469, 1e-3);
 }
 
+// POV-Ray's tightness 10: cos^10 of the angle from the axis on top of the rim; 0.98481^10 =
+// 0.85805 at 10 degrees; at 25, (cos 25)^10 = 0.3739 times the rim's smoothstep of t = 0.5469,
+// 0.5702; dark beyond.
+TEST(Light, SpotLightTightnessGathersTheLightTowardsItsAxis) {
+    SpotLight spot;
+    spot.direction = {0, -1, 0};
+    spot.cos_cone = std::cos(radians(30));
+    spot.cos_falloff = std::cos(radians(20));
+    spot.tightness = 10;
+    EXPECT_FLOAT_EQ(spot_factor(spot, 1), 1);
+    EXPECT_NEAR(spot_factor(spot, std::cos(radians(10))), 0.85805f, 1e-4f);
+    EXPECT_NEAR(spot_factor(spot, std::cos(radians(25))), 0.3739f * 0.5702f, 2e-4f);
+    EXPECT_EQ(spot_factor(spot, std::cos(radians(31))), 0);
+    // Through sample_light as through the emission of particles alike.
+    const float a = radians(10);
+    EXPECT_NEAR(sample_light(spot, {std::sin(a), -std::cos(a), 0}).intensity.g, 0.85805f, 1e-4f);
+}
+
 TEST(Light, AreaLightSeenByWhittedIsAPointLightAtItsCentre) {
     const AreaLight light = *rectangle_light({0, 4, 3}, {2, 0, 0}, {0, 0, 2});
     const LightSample s = sample_light(light, {0, 0, 0});

@@ -14,15 +14,6 @@ namespace {
 // pi colour / quadratic: the intensity of a light falling off as 1 / (quadratic d^2).
 Color intensity(Color color, const Attenuation& a) { return color * (kPi / a.quadratic); }
 
-// The cone-shaped falloff of a spot light (as in light.cpp).
-float spot_factor(const SpotLight& light, Vector3 direction) {
-    const float c = dot(direction, light.direction);
-    if (c >= light.cos_falloff) return 1;
-    if (c <= light.cos_cone) return 0;
-    const float t = (c - light.cos_cone) / (light.cos_falloff - light.cos_cone);
-    return t * t * (3 - 2 * t);
-}
-
 // A point of the disk of the scene's radius across `direction`, on the side it comes from.
 Point3 entry_point(Vector3 direction, Point2 u, const SceneSphere& scene) {
     Vector3 s, t;
@@ -49,7 +40,7 @@ EmittedParticle emit_particle(const Light& light, Point2 u_position, Point2 u_di
             from_frame(sample_uniform_cone(u_direction, spot->cos_cone), spot->direction);
         const float pdf = uniform_cone_pdf(spot->cos_cone);
         return {spot->position, w,
-                intensity(spot->color, spot->attenuation) * (spot_factor(*spot, w) / pdf)};
+                intensity(spot->color, spot->attenuation) * (spot_factor(*spot, dot(w, spot->direction)) / pdf)};
     }
     const Vector3 w = sample_uniform_sphere(u_direction);
     if (const auto* point = std::get_if<PointLight>(&light))

@@ -11,16 +11,19 @@
 
 namespace glint {
 
+float spot_factor(const SpotLight& light, float c) {
+    if (c <= light.cos_cone) return 0;
+    // pbrt-v4's smoothstep of cos(angle) between the cone's edge and the falloff's start.
+    float rim = 1;
+    if (c < light.cos_falloff) {
+        const float t = (c - light.cos_cone) / (light.cos_falloff - light.cos_cone);
+        rim = t * t * (3 - 2 * t);
+    }
+    return light.tightness > 0 && c > 0 ? rim * std::pow(c, light.tightness) : rim;
+}
+
 namespace {
 
-// pbrt-v4's smoothstep of cos(angle) between the cone's edge and the falloff's start.
-float spot_factor(const SpotLight& light, Vector3 to_light) {
-    const float c = -dot(to_light, light.direction);
-    if (c >= light.cos_falloff) return 1;
-    if (c <= light.cos_cone) return 0;
-    const float t = (c - light.cos_cone) / (light.cos_falloff - light.cos_cone);
-    return t * t * (3 - 2 * t);
-}
 
 struct AtCenter {
     Point3 p;
@@ -30,7 +33,7 @@ struct AtCenter {
     }
     LightSample operator()(const SpotLight& light) const {
         LightSample s = light_from_point(p, light.position, light.color, light.attenuation);
-        s.intensity *= spot_factor(light, s.to_light);
+        s.intensity *= spot_factor(light, -dot(s.to_light, light.direction));
         return s;
     }
     LightSample operator()(const DirectionalLight& light) const {

@@ -31,17 +31,25 @@ struct PointLight {
 };
 
 // A point light that shines into a cone: full intensity within the falloff's start, none beyond
-// the cone, and a smoothstep in cos(angle) between (as pbrt-v4's spot light).
+// the cone, and a smoothstep in cos(angle) between (as pbrt-v4's spot light); tightened towards
+// its axis as POV-Ray's.
 struct SpotLight {
     Point3 position;
     Vector3 direction{0, -1, 0};  // unit; the cone's axis, the way the light shines
     float cos_cone = 0.866025f;   // cosine of the cone's half-angle: dark beyond
     float cos_falloff =
         0.866025f;  // cosine of the half-angle where the falloff starts; >= cos_cone
+    // POV-Ray's tightness: the intensity falls as cos(angle)^tightness from the axis, across
+    // the cone; 0 leaves it even. >= 0.
+    float tightness = 0;
     Color color{1, 1, 1};
     Attenuation attenuation;
     bool casts_shadows = true;
 };
+
+// The share of a spot light's intensity that leaves it at cos_angle from its axis: the rim's
+// smoothstep times cos^tightness.
+float spot_factor(const SpotLight& light, float cos_angle);
 
 struct DirectionalLight {
     Vector3 direction{0, -1, 0};  // unit; the way the light travels

@@ -165,9 +165,11 @@ PovLight PovItemReader::light_source(const PovToken& keyword) {
             light.radius = parser_.finite_float("after radius");
         else if (w == "falloff")
             light.falloff = parser_.finite_float("after falloff");
-        else if (w == "tightness")
-            parser_.finite_float("after tightness");
-        else if (w == "area_light") {
+        else if (w == "tightness") {
+            const PovToken at = parser_.peek();
+            light.tightness = parser_.finite_float("after tightness");
+            if (!(light.tightness >= 0)) throw parser_.error_at(at, "tightness must be >= 0");
+        } else if (w == "area_light") {
             light.area_u = parser_.finite_vector("as the area light's first axis");
             parser_.accept(",");
             light.area_v = parser_.finite_vector("as the area light's second axis");

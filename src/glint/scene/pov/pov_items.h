@@ -154,7 +154,7 @@ struct PovLight {
     PovVector color{};
     enum class Kind { point, spot, parallel } kind = Kind::point;
     PovVector point_at{};
-    double radius = 30, falloff = 45;
+    double radius = 30, falloff = 45, tightness = 0;
     std::optional<PovVector> area_u, area_v;  // area_light's axes
     int n1 = 1, n2 = 1;                       // and its counts
     bool circular = false;

@@ -369,6 +369,7 @@ private:
             const double cone = std::max(pov.falloff, pov.radius);
             s.cos_cone = float(std::cos(cone * std::numbers::pi / 180));
             s.cos_falloff = float(std::cos(std::min(pov.radius, cone) * std::numbers::pi / 180));
+            s.tightness = float(pov.tightness);
             s.color = c;
             s.attenuation = attenuation;
             s.casts_shadows = shadows;

@@ -78,6 +78,10 @@ std::vector<EntitySchema> light_schemas() {
               "width of the soft rim inside the cone, degrees: full intensity within `cone_angle − "
               "falloff`, a smoothstep in cos(angle) across the rim",
               "[0, `cone_angle`]", Range{0, 90}},
+             {"tightness", "number", "0",
+              "how the intensity gathers towards the axis: cos(angle)^tightness across the cone "
+              "(POV-Ray's); 0 is even",
+              ">= 0", kNonNegative},
              kColor,
              kIntensity,
              kAttenuation,

@@ -84,6 +84,7 @@ LightEntry parse_spot(const MapReader& map) {
     }
     light.cos_cone = std::cos(radians(cone));
     light.cos_falloff = std::cos(radians(cone - falloff));
+    light.tightness = map.number_or("tightness", 0);
     light.color = read_emitted(map);
     light.attenuation = read_attenuation(map);
     light.casts_shadows = map.boolean("shadows", true);
