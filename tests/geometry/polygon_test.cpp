@@ -255,9 +255,9 @@ TEST(Polygon, BridgedOutlinesHaveHolesAndIslands) {
     const std::vector<Point3> along = in_plane_z({{1, 1}, {3, 1}, {3, 3}, {1, 3}});
     const std::vector<Point3> island = in_plane_z({{6, 0}, {7, 0}, {7, 1}, {6, 1}});
     const auto check = [](const Polygon& polygon) {
-        EXPECT_TRUE(hit_from_above(polygon, 0.5f, 2));   // in the ring
+        EXPECT_TRUE(hit_from_above(polygon, 0.5f, 2));  // in the ring
         EXPECT_TRUE(hit_from_above(polygon, 3.5f, 3.5f));
-        EXPECT_FALSE(hit_from_above(polygon, 2, 2));     // in the hole
+        EXPECT_FALSE(hit_from_above(polygon, 2, 2));  // in the hole
         EXPECT_FALSE(hit_from_above(polygon, 1.5f, 2.5f));
         EXPECT_TRUE(hit_from_above(polygon, 6.5f, 0.5f));  // on the island
         EXPECT_FALSE(hit_from_above(polygon, 5, 0.5f));    // between
@@ -266,7 +266,7 @@ TEST(Polygon, BridgedOutlinesHaveHolesAndIslands) {
         EXPECT_TRUE(hit_from_above(polygon, 3, 0.5f));
     };
     const std::vector<std::vector<Point3>> even_odd[] = {{outer, against, island},
-                                                          {outer, along, island}};
+                                                         {outer, along, island}};
     for (const auto& outlines : even_odd) {
         const std::vector<Point3> joined = bridged_outline(outlines);
         EXPECT_EQ(joined.size(), 4u + 6 + 6);

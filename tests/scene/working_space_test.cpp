@@ -35,9 +35,9 @@ TEST(WorkingSpace, SrgbWorkedNumbersAndItsPowerLawPastWhite) {
 }
 
 TEST(WorkingSpace, EncodeInvertsDecodeAndNonPositiveValuesGiveZero) {
-    for (const WorkingSpace space : {WorkingSpace{Transfer::gamma, 2.2f},
-                                     WorkingSpace{Transfer::gamma, 0.45f},
-                                     WorkingSpace{Transfer::srgb, 1}}) {
+    for (const WorkingSpace space :
+         {WorkingSpace{Transfer::gamma, 2.2f}, WorkingSpace{Transfer::gamma, 0.45f},
+          WorkingSpace{Transfer::srgb, 1}}) {
         for (const float v : {0.001f, 0.04f, 0.3f, 0.9f, 1.0f, 3.0f}) {
             EXPECT_NEAR(encode(space, decode(space, Color::gray(v))).r, v, 2e-4f * (1 + v));
         }

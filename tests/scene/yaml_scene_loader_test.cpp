@@ -216,21 +216,24 @@ TEST(YamlScene, WideCamerasTakeTheirOwnAngles) {
     EXPECT_EQ(parse("camera: {type: panoramic, " + at + "}\n").camera.projection,
               Projection::panoramic);
     const CameraSpec cylinder =
-        parse("camera: {type: cylindrical, fov: 120, height: 3, axis: horizontal, parallel: "
-              "true, " + at + "}\n")
+        parse(
+            "camera: {type: cylindrical, fov: 120, height: 3, axis: horizontal, parallel: "
+            "true, " +
+            at + "}\n")
             .camera;
     EXPECT_EQ(cylinder.projection, Projection::cylindrical);
     EXPECT_EQ(cylinder.fov, 120);
     EXPECT_EQ(cylinder.height, 3);
     EXPECT_TRUE(cylinder.cylinder_axis_across);
     EXPECT_TRUE(cylinder.cylinder_parallel);
-    const CameraSpec sphere = parse("camera: {type: spherical, vertical_fov: 90, " + at + "}\n").camera;
+    const CameraSpec sphere =
+        parse("camera: {type: spherical, vertical_fov: 90, " + at + "}\n").camera;
     EXPECT_EQ(sphere.fov, 360);
     EXPECT_EQ(sphere.vertical_fov, 90);
     for (const std::string bad :
-         {"{type: fisheye, fov: 400, ", "{type: panoramic, fov: 20, ", "{type: spherical, height: 2, ",
-          "{type: spherical, vertical_fov: 200, ", "{type: cylindrical, axis: diagonal, ",
-          "{type: fisheye, f_number: 2, "})
+         {"{type: fisheye, fov: 400, ", "{type: panoramic, fov: 20, ",
+          "{type: spherical, height: 2, ", "{type: spherical, vertical_fov: 200, ",
+          "{type: cylindrical, axis: diagonal, ", "{type: fisheye, f_number: 2, "})
         EXPECT_THROW(parse("camera: " + bad + at + "}\n"), SceneError) << bad;
 }
 

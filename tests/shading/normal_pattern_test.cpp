@@ -41,9 +41,9 @@ TEST(NormalPattern, SlopeOfARampIsTwoFifteenthsOfTheAmountDownhill) {
 // POV-Ray's pigment_pattern: a ramp from black to red, green or white along x has the grey
 // 0.297 x, 0.589 x or x, and its slope is that much of the pattern's own.
 TEST(NormalPattern, SlopeOfAPigmentsGreyWeighsItsChannels) {
-    for (const auto& [top, grey] : {std::pair{Color{1, 0, 0}, 0.297f},
-                                     std::pair{Color{0, 1, 0}, 0.589f},
-                                     std::pair{Color{1, 1, 1}, 1.0f}}) {
+    for (const auto& [top, grey] :
+         {std::pair{Color{1, 0, 0}, 0.297f}, std::pair{Color{0, 1, 0}, 0.589f},
+          std::pair{Color{1, 1, 1}, 1.0f}}) {
         auto ramp = std::make_shared<PatternTexture>();
         ramp->spec.kind = PatternKind::gradient;
         ramp->spec.direction = {1, 0, 0};

@@ -2,6 +2,8 @@
 // a projection, a thin lens and a shutter.
 #pragma once
 
+#include <string>
+#include <string_view>
 #include <vector>
 
 #include "glint/math/vector.h"
@@ -22,18 +24,37 @@ enum class Projection {
     spherical,         // equirectangular: longitude across, latitude up
 };
 
+inline constexpr Projection kProjections[] = {Projection::perspective, Projection::orthographic,
+                                              Projection::fisheye,     Projection::ultra_wide_angle,
+                                              Projection::panoramic,   Projection::cylindrical,
+                                              Projection::spherical};
+
 // The projection's name as scene files write it ("ultra_wide_angle").
 constexpr const char* projection_name(Projection p) {
     switch (p) {
-        case Projection::perspective: return "perspective";
-        case Projection::orthographic: return "orthographic";
-        case Projection::fisheye: return "fisheye";
-        case Projection::ultra_wide_angle: return "ultra_wide_angle";
-        case Projection::panoramic: return "panoramic";
-        case Projection::cylindrical: return "cylindrical";
-        case Projection::spherical: return "spherical";
+        case Projection::perspective:
+            return "perspective";
+        case Projection::orthographic:
+            return "orthographic";
+        case Projection::fisheye:
+            return "fisheye";
+        case Projection::ultra_wide_angle:
+            return "ultra_wide_angle";
+        case Projection::panoramic:
+            return "panoramic";
+        case Projection::cylindrical:
+            return "cylindrical";
+        case Projection::spherical:
+            return "spherical";
     }
     return "?";
+}
+
+// The camera named in a sentence: "an orthographic camera", "a fisheye camera".
+inline std::string camera_named(Projection p) {
+    const std::string name = projection_name(p);
+    const bool vowel = std::string_view("aeiou").find(name[0]) != std::string_view::npos;
+    return (vowel ? "an " : "a ") + name + " camera";
 }
 
 // A thin lens (Potmesil and Chakravarty 1981, as Cook, Porter and Carpenter 1984 trace it): each

@@ -110,10 +110,10 @@ void render_tile(const Tile& tile, Pass pass, const RenderInputs<Integrator>& in
                     recorder.start();
                     before = traversal_counters;
                 }
-                const Color c = camera.sees(eye.film) ? integrator.trace_eye_ray(
-                                                            eye.ray, eye.pencil_or_null(),
-                                                            stream, totals.rays)
-                                                      : Color{0, 0, 0};
+                const Color c = camera.sees(eye.film)
+                                    ? integrator.trace_eye_ray(eye.ray, eye.pencil_or_null(),
+                                                               stream, totals.rays)
+                                    : Color{0, 0, 0};
                 if (is_valid_sample(c)) {
                     if (filter)
                         film_tile.add_to_pixel(x, y, eye.weight, c);

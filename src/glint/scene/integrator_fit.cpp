@@ -111,10 +111,7 @@ void check_integrator_fits(const Scene& scene) {
     if (scene.camera.projection != Projection::perspective)
         throw SceneError({scene.sources.file, 0, 0},
                          "the " + name + " integrator cannot see through " +
-                             (scene.camera.projection == Projection::orthographic
-                                  ? std::string("an orthographic camera")
-                                  : "a " + std::string(projection_name(scene.camera.projection)) +
-                                        " camera") +
+                             camera_named(scene.camera.projection) +
                              ": it joins the surfaces particles reach to the eye, and only a "
                              "perspective camera tells where on its film a point is seen",
                          {"render it with the path integrator, or a perspective camera"});

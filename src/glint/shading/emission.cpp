@@ -40,7 +40,8 @@ EmittedParticle emit_particle(const Light& light, Point2 u_position, Point2 u_di
             from_frame(sample_uniform_cone(u_direction, spot->cos_cone), spot->direction);
         const float pdf = uniform_cone_pdf(spot->cos_cone);
         return {spot->position, w,
-                intensity(spot->color, spot->attenuation) * (spot_factor(*spot, dot(w, spot->direction)) / pdf)};
+                intensity(spot->color, spot->attenuation) *
+                    (spot_factor(*spot, dot(w, spot->direction)) / pdf)};
     }
     const Vector3 w = sample_uniform_sphere(u_direction);
     if (const auto* point = std::get_if<PointLight>(&light))

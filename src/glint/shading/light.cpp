@@ -24,7 +24,6 @@ float spot_factor(const SpotLight& light, float c) {
 
 namespace {
 
-
 struct AtCenter {
     Point3 p;
 

@@ -66,8 +66,7 @@ TEST(PovScene, AngleIsHorizontalAndLookAtTurnsTheView) {
     EXPECT_FALSE(parse("camera { right -1.33*x look_at z }").camera.left_handed);
     // So does up along the direction (right . up x direction = 0), as in POV-Ray's prism3
     // scenes: up z with the default direction z.
-    EXPECT_FALSE(
-        parse("camera { location <-10, 10, -10> up z look_at 0 }").camera.left_handed);
+    EXPECT_FALSE(parse("camera { location <-10, 10, -10> up z look_at 0 }").camera.left_handed);
 }
 
 // shadowless: the light casts no shadows, whatever its kind.
@@ -605,9 +604,9 @@ TEST(PovScene, WideCamerasTakeTheirAngleAndACylindersKind) {
                   .find("error: camera angle must be in (0, 360] for a fisheye camera"),
               std::string::npos);
     EXPECT_NE(error_of("camera { cylinder 5 }").find("error:"), std::string::npos);
-    EXPECT_NE(error_of("camera { spherical angle 360, 200 }")
-                  .find("vertical angle must be in (0, 180]"),
-              std::string::npos);
+    EXPECT_NE(
+        error_of("camera { spherical angle 360, 200 }").find("vertical angle must be in (0, 180]"),
+        std::string::npos);
 }
 
 // isosurface: the function less the threshold as glint's implicit surface, within its

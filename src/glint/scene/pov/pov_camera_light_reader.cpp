@@ -39,8 +39,7 @@ PovCamera PovItemReader::camera(const PovToken& keyword) {
             c.wide = *wide;
             if (*wide == Projection::cylindrical)
                 c.cylinder_kind = parser_.whole_number("after cylinder", 1, 4);
-        }
-        else if (w == "location")
+        } else if (w == "location")
             c.location = parser_.finite_vector("after location");
         else if (w == "look_at")
             c.look_at = parser_.finite_vector("after look_at");

@@ -21,10 +21,9 @@ std::optional<NormalPatternKind> normal_kind(std::string_view w) {
 // POV-Ray's other patterns, which glint does not tilt normals by yet.
 bool unread_normal_pattern(std::string_view w) {
     static constexpr std::string_view kUnread[] = {
-        "aoi",          "average", "bump_map", "cells",           "cubic",
-        "density_file", "facets",  "function", "image_pattern",   "julia",
-        "magnet",       "object",  "pavement", "quilted",   "slope",
-        "square",       "tiling",  "triangular"};
+        "aoi",      "average",  "bump_map",      "cells",  "cubic",  "density_file",
+        "facets",   "function", "image_pattern", "julia",  "magnet", "object",
+        "pavement", "quilted",  "slope",         "square", "tiling", "triangular"};
     for (const std::string_view u : kUnread)
         if (u == w) return true;
     return false;

@@ -326,8 +326,9 @@ private:
         if (c.projection == Projection::spherical) {
             const double vertical = pov.vertical_angle.value_or(std::min(angle / 2, 180.0));
             if (!(vertical > 0 && vertical <= 180))
-                throw files_.error_at(pov.at, "a spherical camera's vertical angle must be in "
-                                              "(0, 180]");
+                throw files_.error_at(pov.at,
+                                      "a spherical camera's vertical angle must be in "
+                                      "(0, 180]");
             c.vertical_fov = float(vertical);
         }
         if (c.projection == Projection::cylindrical) {

@@ -12,8 +12,8 @@
 namespace glint {
 
 namespace {
-constexpr std::string_view kCameraTypes[] = {"cylindrical", "fisheye",     "orthographic",
-                                             "panoramic",   "perspective", "spherical",
+constexpr std::string_view kCameraTypes[] = {"cylindrical",     "fisheye",     "orthographic",
+                                             "panoramic",       "perspective", "spherical",
                                              "ultra_wide_angle"};
 constexpr std::string_view kCylinderAxes[] = {"horizontal", "vertical"};
 
@@ -191,13 +191,10 @@ void read_lens(const MapReader& map, CameraSpec& camera, std::vector<std::string
     if (map.has("aperture")) camera.lens.radius = map.number("aperture", kNonNegative);
     if (map.has("f_number")) {
         if (camera.projection != Projection::perspective) {
-            throw source.error_at(map.require("f_number").key_node,
-                                  "a" + std::string(camera.projection == Projection::orthographic
-                                                        ? "n "
-                                                        : " ") +
-                                      projection_name(camera.projection) +
-                                      " camera has no focal length for f_number",
-                                  {"give its aperture radius with \"aperture\""});
+            throw source.error_at(
+                map.require("f_number").key_node,
+                camera_named(camera.projection) + " has no focal length for f_number",
+                {"give its aperture radius with \"aperture\""});
         }
         const float n = map.number("f_number", kPositive);
         const float focal_length = kSensorHeight / 2 / std::tan(radians(camera.fov) / 2);
@@ -238,14 +235,16 @@ void read_projection(const MapReader& map, CameraSpec& camera) {
             camera.height = map.number("height", kPositive, camera.height);
             break;
         case Projection::fisheye:
-        case Projection::ultra_wide_angle: camera.fov = map.number("fov", kTurn, 180); break;
-        case Projection::panoramic: break;
+        case Projection::ultra_wide_angle:
+            camera.fov = map.number("fov", kTurn, 180);
+            break;
+        case Projection::panoramic:
+            break;
         case Projection::cylindrical:
             camera.fov = map.number("fov", kTurn, 180);
             camera.height = map.number("height", kPositive, 1);
-            camera.cylinder_axis_across =
-                map.choice("axis", kCylinderAxes, "cylinder axis", "cylinder axes", "vertical") ==
-                "horizontal";
+            camera.cylinder_axis_across = map.choice("axis", kCylinderAxes, "cylinder axis",
+                                                     "cylinder axes", "vertical") == "horizontal";
             camera.cylinder_parallel = map.boolean("parallel", false);
             break;
         case Projection::spherical:
@@ -310,27 +309,31 @@ CameraSpec read_camera(const YamlSource& source, const YAML::Node& node, const F
         read_type(source, node, entries, "camera", kCameraTypes, "perspective");
     // Each projection takes only its own parameters, so a fov on an orthographic camera is
     // reported rather than silently ignored.
-    std::vector<std::string_view> keys = {"type",           "from",           "at",
-                                          "up",             "aperture",       "f_number",
-                                          "focus_distance", "aperture_blades", "aperture_rotation",
-                                          "shutter",        "motion"};
+    std::vector<std::string_view> keys{"type", "from", "at", "up", "aperture", "f_number"};
+    keys.insert(keys.end(),
+                {"focus_distance", "aperture_blades", "aperture_rotation", "shutter", "motion"});
     CameraSpec camera;
-    for (const Projection p :
-         {Projection::perspective, Projection::orthographic, Projection::fisheye,
-          Projection::ultra_wide_angle, Projection::panoramic, Projection::cylindrical,
-          Projection::spherical})
+    for (const Projection p : kProjections)
         if (type == projection_name(p)) camera.projection = p;
     switch (camera.projection) {
         case Projection::perspective:
         case Projection::fisheye:
-        case Projection::ultra_wide_angle: keys.push_back("fov"); break;
-        case Projection::orthographic: keys.push_back("height"); break;
-        case Projection::panoramic: break;
-        case Projection::cylindrical: keys.insert(keys.end(), {"fov", "height", "axis", "parallel"}); break;
-        case Projection::spherical: keys.insert(keys.end(), {"fov", "vertical_fov"}); break;
+        case Projection::ultra_wide_angle:
+            keys.push_back("fov");
+            break;
+        case Projection::orthographic:
+            keys.push_back("height");
+            break;
+        case Projection::panoramic:
+            break;
+        case Projection::cylindrical:
+            keys.insert(keys.end(), {"fov", "height", "axis", "parallel"});
+            break;
+        case Projection::spherical:
+            keys.insert(keys.end(), {"fov", "vertical_fov"});
+            break;
     }
-    const MapReader map(source, node, std::move(entries), type + " camera", keys,
-                        TypeKey::listed);
+    const MapReader map(source, node, std::move(entries), type + " camera", keys, TypeKey::listed);
     camera.from = map.point("from");
     camera.at = map.point("at");
     const auto view = unit_vector(camera.at - camera.from);
