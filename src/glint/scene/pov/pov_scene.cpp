@@ -319,9 +319,8 @@ private:
         c.projection = *pov.wide;
         const double angle = pov.angle.value_or(c.projection == Projection::spherical ? 360 : 90);
         if (!(angle > 0 && angle <= 360))
-            throw files_.error_at(pov.at, "camera angle must be in (0, 360] for a " +
-                                              std::string(projection_name(c.projection)) +
-                                              " camera");
+            throw files_.error_at(
+                pov.at, "camera angle must be in (0, 360] for " + camera_named(c.projection));
         c.fov = float(angle);
         if (c.projection == Projection::spherical) {
             const double vertical = pov.vertical_angle.value_or(std::min(angle / 2, 180.0));
