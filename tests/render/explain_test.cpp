@@ -166,7 +166,7 @@ TEST(Explain, TheNotesWorkedRaySphereExampleAppearsInTheTree) {
     ASSERT_EQ(eye.lights.size(), 1u);
     const LightSampleRecord& light = eye.lights[0].samples[0];
     EXPECT_NEAR(light.n_dot_l, -dot(eye.ray.direction, eye.geometric_normal), 1e-5);
-    EXPECT_EQ(light.shadow, 1);
+    EXPECT_EQ(light.shadow, (Color{1, 1, 1}));
     const std::string text = ray_tree_text(tree);
     // Unrounded: h = 30 / sqrt(21) = 6.5465, s = sqrt(9 - 44 + h^2) = 2.8031, t = 3.7434.
     EXPECT_NE(text.find("at t = 3.743"), std::string::npos) << text;
@@ -345,6 +345,45 @@ TEST(Explain, EachRayShowsTheFogItCrossed) {
     EXPECT_TRUE(same_bits(evaluate(tree), tree.sample_value));
     EXPECT_NE(ray_tree_text(tree).find("through fog: lets "), std::string::npos);
     EXPECT_NE(ray_tree_json(tree).find("\"fog\": {\"transmittance\": ["), std::string::npos);
+}
+
+// Inside tinted glass that fades, the ray crossing it shows the fade as its fog, and its
+// refracted branch the tint; the tree still gives the pixel exactly, for every integrator that
+// records.
+TEST(Explain, ARayInsideFadingGlassShowsItsFade) {
+    for (const IntegratorKind kind :
+         {IntegratorKind::whitted, IntegratorKind::distributed, IntegratorKind::path}) {
+        Scene scene;
+        scene.settings.width = scene.settings.height = 9;
+        scene.settings.integrator = kind;
+        scene.settings.samples_per_pixel = 1;
+        scene.settings.background = {0.2f, 0.4f, 0.6f};
+        scene.camera.from = {0, 0, -5};
+        scene.camera.at = {0, 0, 0};
+        Material glass;
+        glass.ka = glass.kd = 0;
+        glass.transmit = 0.8f;
+        glass.ior = 1.5f;
+        glass.tint = 1;
+        glass.color = Color{1, 0.5f, 0.25f};
+        glass.fade = {2, InteriorFade::kExponential, {0.5f, 1, 0}};
+        scene.materials.push_back(glass);
+        scene.objects.push_back({Sphere{{0, 0, 0}, 1}, 0});
+        const World world(scene);
+        const RayTree tree = explain(world, {4, 4, 0, 0});
+        SCOPED_TRACE(std::string(integrator_info(kind).name));
+        ASSERT_GE(tree.nodes.size(), 3u);
+        EXPECT_FALSE(tree.nodes[0].fog.has_value());
+        const RayNode& inside = tree.nodes[1];
+        ASSERT_TRUE(inside.fog.has_value());
+        EXPECT_TRUE(inside.fog_inside);
+        EXPECT_LT(inside.fog->transmittance.b, inside.fog->transmittance.r);
+        expect_every_node_evaluates_to_its_value(tree);
+        EXPECT_TRUE(same_bits(evaluate(tree), tree.sample_value));
+        EXPECT_NE(ray_tree_text(tree).find("through the object's inside: its fade lets "),
+                  std::string::npos);
+        EXPECT_NE(ray_tree_json(tree).find("\"inside\": true"), std::string::npos);
+    }
 }
 
 }  // namespace

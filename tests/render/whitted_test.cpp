@@ -169,6 +169,28 @@ TEST(Whitted, TransparentShadowsMultiplyTheTransmitOfEachSurfaceCrossed) {
     EXPECT_EQ(stats[RayKind::shadow], 3u);  // to the sphere, through it, and on to the light
 }
 
+TEST(Whitted, TransparentShadowsTakeTheTintAndTheFadeOfTheGlassCrossed) {
+    // The occluder (radius 0.1) filters by its colour (1, 0.5, 0.25) on the way in and out, and
+    // fades over its diameter 0.2 with distance 0.2 towards (0.5, 1, 0): exp(-(1 - c)).
+    Scene scene = shadow_scene(true);
+    scene.settings.transparent_shadows = true;
+    Material glass;
+    glass.transmit = 0.5f;
+    glass.tint = 1;
+    glass.color = Color{1, 0.5f, 0.25f};
+    glass.fade = {0.2f, InteriorFade::kExponential, {0.5f, 1, 0}};
+    scene.materials.push_back(glass);
+    scene.objects[1].material = 1;
+    const World world(scene);
+    RayStats stats;
+    const Ray down{{0, 0.05f, 0}, {0, -1, 0}};
+    // 0.1 ambient + 0.5 direct x (0.5 C)^2 x fade.
+    const Color crossed =
+        Color{0.25f, 0.0625f, 0.015625f} * Color{std::exp(-0.5f), 1, std::exp(-1.0f)};
+    expect_near(WhittedIntegrator(world).trace(down, 2, 1, stats),
+                Color::gray(0.1f) + 0.5f * crossed, 1e-4f);
+}
+
 TEST(Whitted, MirrorAddsKrTimesTheReflectedColour) {
     // A mirror plane facing the eye; the reflected ray goes back past the eye into the sky.
     Scene scene = base_scene();
@@ -223,6 +245,42 @@ TEST(Whitted, NormalIncidenceThroughAGlassSphereReachesTheBackground) {
     expect_near(WhittedIntegrator(world).trace_eye_ray(kEyeRay, stats),
                 0.64f * Color{0.2f, 0.4f, 0.6f});
     EXPECT_EQ(stats, (counts(1, 1, 0, 0, 2)));
+}
+
+TEST(Whitted, TintedGlassFiltersTheRefractedRayByItsColour) {
+    // As above, each crossing also multiplied by the colour C = (1, 0.5, 0.25): 0.64 C^2 bg.
+    Scene scene = base_scene();
+    Material& m = scene.materials[0];
+    m.ka = 0, m.kd = 0, m.transmit = 0.8f, m.ior = 1.5f, m.tint = 1;
+    m.color = Color{1, 0.5f, 0.25f};
+    scene.objects.push_back({Sphere{{0, 0, 0}, 1}, 0});
+    const World world(scene);
+    RayStats stats;
+    expect_near(WhittedIntegrator(world).trace_eye_ray(kEyeRay, stats),
+                0.64f * Color{1, 0.25f, 0.0625f} * Color{0.2f, 0.4f, 0.6f});
+    // Half tinted: each crossing weighs kt (0.5 + 0.5 C).
+    m.tint = 0.5f;
+    const World half(scene);
+    expect_near(WhittedIntegrator(half).trace_eye_ray(kEyeRay, stats),
+                0.64f * Color{1, 0.5625f, 0.390625f} * Color{0.2f, 0.4f, 0.6f});
+}
+
+TEST(Whitted, TheInsideOfFadingGlassFadesWhatCrossesIt) {
+    // Through the centre the ray crosses 2 of the sphere's inside. Exponential fade, distance
+    // 2 towards (0.5, 1, 0): (exp(-0.5), 1, exp(-1)); with power 2 at the fade distance, half
+    // of 1 - c: (0.75, 1, 0.5).
+    Scene scene = base_scene();
+    Material& m = scene.materials[0];
+    m.ka = 0, m.kd = 0, m.transmit = 0.8f, m.ior = 1.5f;
+    m.fade = {2, InteriorFade::kExponential, {0.5f, 1, 0}};
+    scene.objects.push_back({Sphere{{0, 0, 0}, 1}, 0});
+    RayStats stats;
+    const Color through = 0.64f * Color{0.2f, 0.4f, 0.6f};
+    expect_near(WhittedIntegrator(World(scene)).trace_eye_ray(kEyeRay, stats),
+                through * Color{std::exp(-0.5f), 1, std::exp(-1.0f)});
+    m.fade.power = 2;
+    expect_near(WhittedIntegrator(World(scene)).trace_eye_ray(kEyeRay, stats),
+                through * Color{0.75f, 1, 0.5f});
 }
 
 TEST(Whitted, TotalInternalReflectionSendsTheTransmittedEnergyToTheReflectedRay) {

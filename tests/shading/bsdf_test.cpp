@@ -107,6 +107,37 @@ TEST(Bsdf, ClearGlassRefractsBySnellAndCompressesRadiance) {
     EXPECT_NEAR(importance->weight.r, 1, 1e-6f);
 }
 
+TEST(Bsdf, TheTransmitFilterColoursWhatRefractsAndNothingElse) {
+    // Clear and frosted glass with filter (1, 0.5, 0.25), index 1 on both sides: the delta
+    // sample weighs the filter, the frosted lobe's f is the filter times the clear one's, and
+    // the albedo's transmitted share is kt F_t.
+    BsdfInputs in = inputs();
+    in.transmit = 0.8f;
+    in.reflect = 0.2f;
+    in.transmit_filter = {1, 0.5f, 0.25f};
+    const Bsdf clear(in);
+    const auto s = clear.sample(0.9f, {0.5f, 0.5f});
+    ASSERT_TRUE(s && s->transmitted);
+    EXPECT_NEAR(s->weight.g / s->weight.r, 0.5f, 1e-6f);
+    EXPECT_NEAR(s->weight.b / s->weight.r, 0.25f, 1e-6f);
+    const auto mirror = clear.sample(0.1f, {0.5f, 0.5f});
+    ASSERT_TRUE(mirror && !mirror->transmitted);
+    EXPECT_EQ(mirror->weight.r, mirror->weight.b);
+    const Color albedo = clear.albedo();
+    EXPECT_NEAR(albedo.r, 1, 1e-6f);
+    EXPECT_NEAR(albedo.g, 0.2f + 0.8f * 0.5f, 1e-6f);
+    EXPECT_NEAR(albedo.b, 0.2f + 0.8f * 0.25f, 1e-6f);
+    in.transmit_roughness = 0.3f;
+    const Vector3 below = normalize(Vector3{-0.5f, 0.1f, -1});
+    const Color tinted = Bsdf(in).eval(below);
+    in.transmit_filter = {1, 1, 1};
+    const Color white = Bsdf(in).eval(below);
+    ASSERT_GT(white.r, 0);
+    EXPECT_NEAR(tinted.r, white.r, 1e-6f * white.r);
+    EXPECT_NEAR(tinted.g, 0.5f * white.g, 1e-6f * white.g);
+    EXPECT_NEAR(tinted.b, 0.25f * white.b, 1e-6f * white.b);
+}
+
 TEST(Bsdf, FresnelSplitsTransmissionAndTotalInternalReflectionReflectsIt) {
     BsdfInputs in = inputs();
     in.transmit = 1;

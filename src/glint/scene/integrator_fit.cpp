@@ -73,12 +73,15 @@ void check_beam_fits(const Scene& scene) {
     }
     for (std::size_t i = 0; i < scene.materials.size(); ++i) {
         const Material& m = scene.materials[i];
-        const bool varies = m.fresnel || (m.maps && m.maps->reflect);
-        if (!varies) continue;
+        const char* varying = m.fresnel                   ? "has fresnel: true"
+                              : m.maps && m.maps->reflect ? "has a textured reflect"
+                              : m.tint > 0                ? "has a tint"
+                              : m.fade.fades()            ? "has a fade"
+                                                          : nullptr;
+        if (!varying) continue;
         const SourceLocation where = place_of(scene, scene.sources.materials, i);
         throw SceneError(where,
-                         "material '" + m.name + "' " +
-                             (m.fresnel ? "has fresnel: true" : "has a textured reflect") +
+                         "material '" + m.name + "' " + varying +
                              ": the beam integrator weighs a polygon's reflected and refracted "
                              "beams by one kr and kt across the whole polygon",
                          {"give it constant reflect and transmit, or render with the whitted "

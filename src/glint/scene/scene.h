@@ -78,7 +78,7 @@ struct RenderSettings {
     int max_depth = 5;          // eye rays are depth 1; rays deeper than this are not traced
     float min_weight = 0.001f;  // rays whose product of weights falls below this are not traced
     Color background;           // what rays that hit nothing see
-    // Shadow feelers pass through transparent objects, attenuated by their transmit weight,
+    // Shadow feelers pass through transparent objects, attenuated by their transmit, tint and fade,
     // instead of stopping at them.
     bool transparent_shadows = false;
     // Shadow rays each sample sends to each area light and emitting object (distributed).

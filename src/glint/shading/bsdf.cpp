@@ -52,7 +52,9 @@ bool Bsdf::has_smooth_part() const {
            (pick_[int(BsdfLobe::transmit)] > 0 && !transmit_delta_);
 }
 
-Color Bsdf::albedo() const { return diffuse_ + Color::gray(highlight_ + reflect_ + transmit_); }
+Color Bsdf::albedo() const {
+    return diffuse_ + Color::gray(highlight_ + reflect_) + transmit_ * in_.transmit_filter;
+}
 
 Color Bsdf::diffuse_f(Vector3 wi) const {
     if (!reflects(wi)) return {};
@@ -97,8 +99,8 @@ Color Bsdf::eval(Vector3 wi) const {
         return f * adjoint_factor(wi);
     }
     if (transmit_delta_) return {};
-    return Color::gray(glossy_f(wi, refracted_, transmit_exponent_, transmit_) * compression_ *
-                       adjoint_factor(wi));
+    return in_.transmit_filter * (glossy_f(wi, refracted_, transmit_exponent_, transmit_) *
+                                  compression_ * adjoint_factor(wi));
 }
 
 float Bsdf::lobe_pdf(BsdfLobe lobe, Vector3 wi) const {
@@ -159,6 +161,7 @@ std::optional<BsdfSample> Bsdf::sample(float u_lobe, Point2 u) const {
         s.pdf = pick_[l];
         const float w = s.transmitted ? transmit_ * compression_ : reflect_;
         s.weight = Color::gray(w / pick_[l] * adjoint_factor(s.wi));
+        if (s.transmitted) s.weight *= in_.transmit_filter;
         return s;
     }
     s.f = eval(s.wi);

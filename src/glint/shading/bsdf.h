@@ -7,7 +7,8 @@
 //   reflect    kr: a mirror, or with roughness r the glossy lobe of the distributed
 //              integrator, (m+1)/(2 pi) cos^m(alpha) / |N.wi| with m = 2/r^2 - 2, whose
 //              samples each weigh kr as Cook's glossy rays do
-//   transmit   kt: Snell's refracted direction, or the lobe of transmit_roughness around it;
+//   transmit   kt F_t: Snell's refracted direction, or the lobe of transmit_roughness around it,
+//              coloured by the filter F_t;
 //              with fresnel, kt F of it reflects (Fresnel's equations for a dielectric), and
 //              on total internal reflection all of it does
 // When kd + ks + kr + kt exceeds 1 all four are scaled down to sum to 1. Radiance refracted into
@@ -41,7 +42,8 @@ struct BsdfInputs {
     float ks = 0, shininess = 0;
     float reflect = 0, roughness = 0;
     float transmit = 0, transmit_roughness = 0;
-    float n1 = 1, n2 = 1;  // indices on wo's side and beyond (Snell's eta = n1 / n2)
+    Color transmit_filter{1, 1, 1};  // the transmitted part's colour (coloured glass)
+    float n1 = 1, n2 = 1;            // indices on wo's side and beyond (Snell's eta = n1 / n2)
     bool fresnel = false;
 };
 
@@ -70,7 +72,7 @@ public:
 
     // Whether any part is not delta: next-event estimation can reach it.
     bool has_smooth_part() const;
-    // The fraction of light the BSDF scatters in all, kd C + ks + kr + kt scaled: at most 1.
+    // The fraction of light the BSDF scatters in all, kd C + ks + kr + kt F_t scaled.
     Color albedo() const;
     // The probability each part is picked with, by the share of light it scatters.
     float lobe_probability(BsdfLobe lobe) const { return pick_[int(lobe)]; }

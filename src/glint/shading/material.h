@@ -7,6 +7,7 @@
 #include <string>
 
 #include "glint/math/color.h"
+#include "glint/shading/interior_fade.h"
 #include "glint/shading/normal_pattern.h"
 #include "glint/shading/spectrum.h"
 #include "glint/shading/texture.h"
@@ -40,6 +41,11 @@ struct Material {
     Highlight highlight = Highlight::blinn;
     float reflect = 0;   // kr, weight of the mirror-reflected ray
     float transmit = 0;  // kt, weight of the refracted ray
+    // How much of the transmitted light takes the surface colour C, as coloured glass filters
+    // it: the refracted ray weighs kt ((1 - tint) + tint C). POV-Ray's filter.
+    float tint = 0;
+    // How light fades on its way through the object's inside (interior_fade.h).
+    InteriorFade fade;
     // Whether kt splits by Fresnel's equations into reflected (kt F) and refracted (kt (1 - F)).
     bool fresnel = false;
     float ior = 1;  // index of refraction inside (outside: the enclosing object's, or 1)

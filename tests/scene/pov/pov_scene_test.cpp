@@ -1060,6 +1060,31 @@ TEST(PovScene, DispersionIsCauchysFormulaThroughTheSpectrumsEnds) {
               std::string::npos);
 }
 
+// A pigment's filter tints what it lets through by its colour, its transmit does not: the
+// material's tint is filter's share of filter + transmit. interior { fade_distance fade_power
+// fade_color } is glint's fade, POV-Ray's power 0 unless given.
+TEST(PovScene, FilterIsTheTintAndTheInteriorsFadeIsGlintsFade) {
+    const Scene s = parse(R"(
+        sphere { 0, 1 pigment { rgbft <1, 0.5, 0, 0.6, 0.2> }
+                 interior { fade_distance 2 fade_power 1001 fade_color <0.5, 1, 0> } }
+        sphere { 0, 1 pigment { rgbt <1, 0, 0, 0.5> } interior { fade_distance 3 } })");
+    ASSERT_EQ(s.materials.size(), 2u);
+    const Material& filtered = s.materials[s.objects[0].material];
+    EXPECT_FLOAT_EQ(filtered.transmit, 0.8f);
+    EXPECT_FLOAT_EQ(filtered.tint, 0.75f);
+    EXPECT_FLOAT_EQ(filtered.fade.distance, 2);
+    EXPECT_FLOAT_EQ(filtered.fade.power, 1001);
+    EXPECT_EQ(filtered.fade.color, (Color{0.5f, 1, 0}));
+    const Material& clear = s.materials[s.objects[1].material];
+    EXPECT_EQ(clear.tint, 0);
+    EXPECT_FLOAT_EQ(clear.fade.distance, 3);
+    EXPECT_EQ(clear.fade.power, 0);
+    EXPECT_EQ(clear.fade.color, (Color{0, 0, 0}));
+    EXPECT_NE(error_of("sphere { 0, 1 interior { fade_color <2, 0, 0> } }")
+                  .find("scene.pov:1:37: error: fade colour's channels must be in [0, 1]"),
+              std::string::npos);
+}
+
 TEST(PovScene, MaterialsGiveTextureAndInterior) {
     const Scene s = parse(R"(
         #declare Glass = material { texture { pigment { rgbf <1, 0, 0, 0.5> } } interior { ior 1.5 } }

@@ -48,7 +48,7 @@ struct LightSampleRecord {
     Color intensity;           // I_L arriving, attenuated
     float n_dot_l = 0;         // N.L with the shading normal
     bool faces_light = false;  // N.L > 0 and the light sends something: a feeler was traced
-    float shadow = 1;          // the feeler's transmittance: 1 lit, 0 shadowed
+    Color shadow{1, 1, 1};     // the feeler's transmittance per channel: 1 lit, 0 shadowed
     bool shadow_map = false;   // the shadow was looked up in the light's map (shadows: map)
     std::optional<std::uint32_t> occluder;  // the first object in the way, when shadowed
     bool blinn = true;                      // the highlight is Blinn's (H.N), else Phong's (R.V)
@@ -85,18 +85,18 @@ struct BranchRecord {
 // it, the one light it sampled (next-event estimation), and the direction it scattered in.
 // One light's sample by next-event estimation.
 struct NextEventRecord {
-    std::string light;    // its name, as LightRecord's
-    float pick = 0;       // the probability the light was picked with, by power (1: every light)
-    Vector3 to_light;     // L
-    float distance = 0;   // to the point on the light (infinite for a directional one)
-    Color irradiance;     // pi I_L: what a surface facing the light receives from it
-    Color f;              // the BSDF for L
-    float cosine = 0;     // |N.L|
-    float light_pdf = 0;  // per steradian, 0 for lights no scattered ray can hit
-    float bsdf_pdf = 0;   // the BSDF's density for L
-    float mis = 1;        // the power heuristic's weight of the light sample
-    float shadow = 1;     // the feeler: 1 unblocked, 0 blocked
-    Color term;           // f |N.L| pi I_L shadow mis / pick: exactly what it added
+    std::string light;      // its name, as LightRecord's
+    float pick = 0;         // the probability the light was picked with, by power (1: every light)
+    Vector3 to_light;       // L
+    float distance = 0;     // to the point on the light (infinite for a directional one)
+    Color irradiance;       // pi I_L: what a surface facing the light receives from it
+    Color f;                // the BSDF for L
+    float cosine = 0;       // |N.L|
+    float light_pdf = 0;    // per steradian, 0 for lights no scattered ray can hit
+    float bsdf_pdf = 0;     // the BSDF's density for L
+    float mis = 1;          // the power heuristic's weight of the light sample
+    Color shadow{1, 1, 1};  // the feeler: 1 unblocked, 0 blocked
+    Color term;             // f |N.L| pi I_L shadow mis / pick: exactly what it added
 };
 
 struct PathVertexRecord {
@@ -157,7 +157,8 @@ struct RayNode {
     // The fog between the ray's origin and its end: the ray brings back T x (its terms and
     // branches) + the fog's own light.
     std::optional<FogEffect> fog;
-    Color value;  // exactly what the ray brought back
+    bool fog_inside = false;  // the fog is the interior fade of the object the ray is inside
+    Color value;              // exactly what the ray brought back
 };
 
 // A particle of the light integrator that landed on the explained pixel.

@@ -128,7 +128,10 @@ private:
                          ", weight " + read(n.weight));
         const int in = indent + 1;
         const auto fog_line = [&] {
-            if (n.fog)
+            if (n.fog && n.fog_inside)
+                line(in, "through the object's inside: its fade lets " +
+                             read(n.fog->transmittance) + " through (brings T x what lies behind)");
+            else if (n.fog)
                 line(in, "through fog: lets " + read(n.fog->transmittance) + " through, adds " +
                              read(n.fog->added) + " (brings T x what lies behind + that)");
         };
@@ -240,7 +243,8 @@ private:
             if (e.f == Color{})
                 numbers += ": the BSDF sends nothing that way, no feeler";
             else
-                numbers += e.shadow == 0 ? ", shadow feeler blocked" : ", shadow feeler unblocked";
+                numbers +=
+                    is_black(e.shadow) ? ", shadow feeler blocked" : ", shadow feeler unblocked";
             line(indent + 1, numbers + "; adds " + read(e.term));
         }
         if (v.photons >= 0)
@@ -280,24 +284,27 @@ private:
             return;
         }
         if (s.shadow_map) {
-            text += s.shadow == 0  ? ", in shadow by the shadow map"
-                    : s.shadow < 1 ? ", " + read(s.shadow) + " of it lit by the shadow map's filter"
-                                   : ", lit by the shadow map";
-            if (s.shadow == 0 && s.occluder)
+            // A map's answer is grey.
+            const float lit = s.shadow.r;
+            text += lit == 0  ? ", in shadow by the shadow map"
+                    : lit < 1 ? ", " + read(lit) + " of it lit by the shadow map's filter"
+                              : ", lit by the shadow map";
+            if (lit == 0 && s.occluder)
                 text += " (object " + std::to_string(*s.occluder) + " on the feeler's line)";
-            if (s.shadow == 0) {
+            if (lit == 0) {
                 line(indent, text + ": adds nothing");
                 return;
             }
             line(indent, text + ", IL " + read(s.intensity));
-        } else if (s.shadow == 0) {
+        } else if (is_black(s.shadow)) {
             text += ", shadow feeler blocked";
             if (s.occluder) text += " by object " + std::to_string(*s.occluder);
             line(indent, text + ": adds nothing");
             return;
         } else {
-            text += s.shadow < 1 ? ", " + read(s.shadow) + " of it through transparent objects"
-                                 : ", shadow feeler unblocked";
+            text += s.shadow != Color{1, 1, 1}
+                        ? ", " + read(s.shadow) + " of it through transparent objects"
+                        : ", shadow feeler unblocked";
             line(indent, text + ", IL " + read(s.intensity));
         }
         const std::string spec = s.blinn ? "(H.N)^n" : "(R.V)^n";
@@ -434,6 +441,7 @@ std::string node_json(const RayTree& tree, int index) {
     if (n.fog) {
         Fields fog;
         fog.add("transmittance", exact(n.fog->transmittance)).add("added", exact(n.fog->added));
+        fog.add("inside", n.fog_inside ? "true" : "false");
         f.add("fog", fog.object());
     } else {
         f.add("fog", "null");
@@ -561,7 +569,8 @@ std::string ray_tree_dot(const RayTree& tree) {
         for (std::size_t l = 0; l < n.lights.size(); ++l) {
             const LightRecord& light = n.lights[l];
             int lit = 0;
-            for (const LightSampleRecord& s : light.samples) lit += s.faces_light && s.shadow > 0;
+            for (const LightSampleRecord& s : light.samples)
+                lit += s.faces_light && !is_black(s.shadow);
             out << "  ray" << i << "_light" << l << " [shape=ellipse, style=dashed, label="
                 << dot_label(light.name + "\n" + std::to_string(lit) + " of " +
                              std::to_string(light.samples.size()) + " lit, " + read(light.value))

@@ -66,7 +66,10 @@ void RayTreeRecorder::hit(const SurfaceContext& c, const Hit& hit) {
     n.ambient = ambient_term(m, c.ambient_color, world_.ambient());
 }
 
-void RayTreeRecorder::fog(const FogEffect& effect) { current().fog = effect; }
+void RayTreeRecorder::fog(const FogEffect& effect, bool inside) {
+    current().fog = effect;
+    current().fog_inside = inside;
+}
 
 void RayTreeRecorder::stop(StopReason reason) { current().stop = reason; }
 
@@ -107,7 +110,7 @@ LightSampleRecord RayTreeRecorder::sample_record(std::size_t light, const Surfac
     RayStats unused;
     r.shadow = feelers_.transmittance(light, c.sp, c.ng, ls.to_light, ls.distance, time, unused);
     r.shadow_map = unused.shadow_map_lookups > 0;
-    if (r.shadow < 1) {
+    if (r.shadow != Color{1, 1, 1}) {
         const Ray feeler = world_.spawn_ray(c.sp.p, c.ng, ls.to_light, c.sp.error, time);
         const float reach = ls.distance - distance(c.sp.p, feeler.origin);
         if (const auto blocker = world_.intersect(feeler, {0, reach}, kVisibleToShadowRays))
@@ -191,7 +194,7 @@ void RayTreeRecorder::branches(const SurfaceContext& c, const Branches& b, const
         return;
     }
     n.cos_refracted = -dot(b.refracted, to_vector(c.n));
-    n.branches.push_back({RayKind::refracted, b.kt, Color::gray(b.kt), {}, cut(b.kt)});
+    n.branches.push_back({RayKind::refracted, b.kt, b.kt * b.filter, {}, cut(b.kt)});
 }
 
 BranchRecord& RayTreeRecorder::branch_of(RayKind kind) {

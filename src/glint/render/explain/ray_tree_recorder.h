@@ -28,7 +28,7 @@ public:
     void end_ray(Color value) override;
     void missed(Color background) override;
     void hit(const SurfaceContext& c, const Hit& hit) override;
-    void fog(const FogEffect& effect) override;
+    void fog(const FogEffect& effect, bool inside) override;
     void stop(StopReason reason) override;
     void light(std::size_t light, const SurfaceContext& c, const LightSample& ls, float time,
                Color term) override;

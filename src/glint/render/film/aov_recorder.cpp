@@ -38,7 +38,7 @@ void AovRecorder::missed(Color background) {
     if (level_ == 2) child_emission_ = background;  // the sky, met by the scattered ray
 }
 
-void AovRecorder::fog(const FogEffect& effect) {
+void AovRecorder::fog(const FogEffect& effect, bool /*inside*/) {
     if (at_eye()) eye_fog_ = effect;
 }
 

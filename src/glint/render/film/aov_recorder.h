@@ -38,7 +38,7 @@ public:
     void hit(const SurfaceContext& c, const Hit& hit) override;
     // The eye ray's fog: once it returns, its parts are seen through it and the fog's own light
     // is a part of its own.
-    void fog(const FogEffect& effect) override;
+    void fog(const FogEffect& effect, bool inside) override;
     void light(std::size_t light, const SurfaceContext& c, const LightSample& ls, float time,
                Color term) override;
     void begin_light(std::size_t light, bool object_light) override;

@@ -7,6 +7,7 @@
 
 #include "glint/math/constants.h"
 #include "glint/render/integrators/local_lighting.h"
+#include "glint/render/integrators/ray_fog.h"
 #include "glint/render/integrators/surface_context.h"
 #include "glint/shading/roughness.h"
 
@@ -120,11 +121,15 @@ Color ConeIntegrator::trace(const RayCone& cone, const Ray& axis, std::uint32_t 
                               {start / along * (1 - 1e-4f), kInfinity});
         }
         if (!found) continue;  // the outline's estimate missed it by a hair: nothing to shade
-        color += share *
-                 shade(cone, ray, Hit{*found, hit.primitive}, depth, weight * share, stats, media);
+        // Inside an object that fades, what the cone brings back fades on its way.
+        color += share * through(interior_fade(media, found->t),
+                                 shade(cone, ray, Hit{*found, hit.primitive}, depth, weight * share,
+                                       stats, media));
         uncovered -= share;
     }
-    if (uncovered > 0) color += uncovered * world_.sky().radiance(cone.axis);
+    if (uncovered > 0)
+        color +=
+            uncovered * through(interior_fade(media, kInfinity), world_.sky().radiance(cone.axis));
     return color;
 }
 
@@ -194,9 +199,10 @@ Color ConeIntegrator::shade(const RayCone& cone, const Ray& ray, const Hit& hit,
         stats.count(RayKind::refracted);
         std::optional<RayDifferential> bent;
         if (at.bends_known) bent = refracted_pencil(ray, pencil, at, c.n, side, b.eta, b.refracted);
-        branches += b.kt * trace(leaving(b.refracted, bent, c.transmit_roughness),
-                                 spawn_from(world_, c, ray, b.refracted), hit.primitive, depth + 1,
-                                 weight * b.kt, stats, media_beyond(c, b, media));
+        branches += b.kt * b.filter *
+                    trace(leaving(b.refracted, bent, c.transmit_roughness),
+                          spawn_from(world_, c, ray, b.refracted), hit.primitive, depth + 1,
+                          weight * b.kt, stats, media_beyond(c, b, media));
     }
     return color + branches;
 }

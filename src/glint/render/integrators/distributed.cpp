@@ -75,7 +75,7 @@ Color DistributedIntegrator::shade(const Ray& ray, int depth, float weight, Samp
         const Color sky = world_.sky().radiance(ray.direction);
         if constexpr (kRecord) {
             recorder_->missed(sky);
-            if (fog) recorder_->fog(*fog);
+            if (fog) recorder_->fog(*fog, media.size() > 0);
         }
         return through(fog, sky);
     }
@@ -84,7 +84,7 @@ Color DistributedIntegrator::shade(const Ray& ray, int depth, float weight, Samp
     const SurfaceContext c = surface_context(world_, ray, *hit, pencil);
     if constexpr (kRecord) {
         recorder_->hit(c, *hit);
-        if (fog) recorder_->fog(*fog);
+        if (fog) recorder_->fog(*fog, media.size() > 0);
     }
     const Material& m = *c.material;
     Color color = c.emission + ambient_term(m, c.ambient_color, world_.ambient());
@@ -130,7 +130,7 @@ Color DistributedIntegrator::shade(const Ray& ray, int depth, float weight, Samp
         if (d != kBlockedByTheSurface) {
             stats.count(RayKind::refracted);
             const Ray t = spawn_from(world_, c, parent, d);
-            const Color factor = b.kt * spectral_weight;
+            const Color factor = b.kt * b.filter * spectral_weight;
             if constexpr (kRecord)
                 recorder_->branch(RayKind::refracted, factor, lobe_draw(c.transmit_roughness, u));
             const auto t_pencil = c.transmit_roughness < kMirrorRoughness

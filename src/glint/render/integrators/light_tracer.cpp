@@ -7,6 +7,7 @@
 
 #include "glint/render/film/film.h"
 #include "glint/render/integrators/path.h"
+#include "glint/render/integrators/ray_fog.h"
 #include "glint/render/integrators/roulette.h"
 #include "glint/render/integrators/surface_context.h"
 #include "glint/render/integrators/wavelength_split.h"
@@ -29,21 +30,28 @@ Color LightIntegrator::eye_ray(const Ray& ray, int depth, const MediumStack& med
     const RenderSettings& settings = world_.settings();
     if constexpr (kRecord) recorder_->begin_ray(ray, depth, 1);
     const auto hit = world_.intersect(ray, {0, kInfinity}, kVisibleToCameraRays);
+    // Inside an object that fades, all the ray brings back fades on its way.
+    const std::optional<FogEffect> fade = interior_fade(media, hit ? hit->shape_hit.t : kInfinity);
     if (!hit) {
         const Color sky = world_.sky().radiance(ray.direction);
         if constexpr (kRecord) {
             recorder_->missed(sky);
-            recorder_->end_ray(sky);
+            if (fade) recorder_->fog(*fade, true);
+            recorder_->end_ray(through(fade, sky));
         }
-        return sky;
+        return through(fade, sky);
     }
     if (depth == 1) ++stats.primary_hits;
     const SurfaceContext c = surface_context(world_, ray, *hit, pencil);
-    if constexpr (kRecord) recorder_->hit(c, *hit);
+    if constexpr (kRecord) {
+        recorder_->hit(c, *hit);
+        if (fade) recorder_->fog(*fade, true);
+    }
     PathVertexRecord record;
     record.le = c.emission;
     Color color = c.emission;
     const auto end = [&](StopReason reason) {
+        color = through(fade, color);
         if constexpr (kRecord) {
             recorder_->path_vertex(c, record);
             if (reason != StopReason::none) recorder_->stop(reason);
@@ -93,8 +101,8 @@ Color LightIntegrator::eye_ray(const Ray& ray, int depth, const MediumStack& med
     const auto next_pencil = s->transmitted
                                  ? refraction_pencil(c, ray, pencil, eta.n1 / eta.n2, s->wi)
                                  : mirror_pencil(c, ray, pencil);
-    color +=
-        factor * eye_ray<kRecord>(next, depth + 1, beyond, stream, or_null(next_pencil), stats);
+    color = through(fade, color + factor * eye_ray<kRecord>(next, depth + 1, beyond, stream,
+                                                            or_null(next_pencil), stats));
     if constexpr (kRecord) recorder_->end_ray(color);
     return color;
 }
@@ -121,6 +129,10 @@ void LightIntegrator::trace_particle(SampleStream& stream, SplatFilm& film, RayS
         const auto hit = world_.intersect(ray, {0, kInfinity}, kVisibleToCameraRays);
         stats.count(RayKind::particle);
         if (!hit) break;
+        if (const auto fade = interior_fade(media, hit->shape_hit.t)) {
+            beta *= fade->transmittance;
+            throughput *= fade->transmittance;
+        }
         const SurfaceContext c = surface_context(world_, ray, *hit);
         const Material& m = *c.material;
         const WavelengthSplit split =

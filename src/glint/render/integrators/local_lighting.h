@@ -22,9 +22,9 @@ inline Color light_sample_term(ShadowFeelers& feelers, std::size_t light, const 
     // apart in fewer instructions than is_black: channels are not negative.)
     if (dot(c.n, ls.to_light) <= 0 || ls.intensity.r + ls.intensity.g + ls.intensity.b <= 0)
         return {};
-    const float shadow =
+    const Color shadow =
         feelers.transmittance(light, c.sp, c.ng, ls.to_light, ls.distance, time, stats);
-    if (shadow == 0) return {};
+    if (is_black(shadow)) return {};
     return shadow * light_term(*c.material, c.color, c.n, ls.to_light, c.to_viewer, ls.intensity);
 }
 

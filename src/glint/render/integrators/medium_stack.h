@@ -60,6 +60,10 @@ public:
     float ior_after_leaving(std::uint32_t primitive, const Material* material) const;
 
     int size() const { return size_; }
+    // The material of the innermost medium; null in vacuum.
+    const Material* innermost_material() const {
+        return size_ > 0 ? entries_[size_ - 1].material : nullptr;
+    }
 
     static constexpr int kCapacity = 8;
 

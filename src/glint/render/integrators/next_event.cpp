@@ -110,14 +110,14 @@ Color NextEvent::estimate_light(std::size_t index, float pick, Point2 u, const S
     const float bsdf_pdf = sends ? bsdf.pdf(ls.to_light) : 0;
     const float mis = weigh && light_pdf > 0 ? power_heuristic(pick * light_pdf, bsdf_pdf) : 1;
     const float cosine = std::abs(dot(to_vector(c.n), ls.to_light));
-    float shadow = 0;
+    Color shadow;
     Color term;
     if (!is_black(f)) {
         // Light from behind reaches only what transmits: the feeler leaves by that side.
         const Normal3 side = dot(ls.to_light, c.ng) >= 0 ? c.ng : -c.ng;
         shadow =
             feelers_.transmittance(feeler_light, c.sp, side, ls.to_light, ls.distance, time, stats);
-        if (shadow > 0) term = f * ls.intensity * (kPi * cosine * shadow * mis / pick);
+        if (!is_black(shadow)) term = f * ls.intensity * shadow * (kPi * cosine * mis / pick);
     }
     if (record) {
         NextEventRecord& r = record->next_events.emplace_back();

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <vector>
 
+#include "glint/render/integrators/ray_fog.h"
 #include "glint/render/integrators/roulette.h"
 #include "glint/render/integrators/surface_context.h"
 #include "glint/render/integrators/wavelength_split.h"
@@ -62,6 +63,9 @@ Color PathIntegrator::radiance(const Ray& ray, PathState path, SampleStream& str
     const RenderSettings& settings = world_.settings();
     if constexpr (kRecord) recorder_->begin_ray(ray, path.depth, 1);
     const auto hit = world_.intersect(ray, {0, kInfinity}, kVisibleToCameraRays);
+    // Inside an object that fades, all the ray brings back fades on its way.
+    const std::optional<FogEffect> fade =
+        interior_fade(path.media, hit ? hit->shape_hit.t : kInfinity);
     if (!hit) {
         // The sky, weighed against the shadow rays that could have found it.
         const Color le = world_.sky().radiance(ray.direction);
@@ -71,13 +75,18 @@ Color PathIntegrator::radiance(const Ray& ray, PathState path, SampleStream& str
         const Color sky = le * weight;
         if constexpr (kRecord) {
             recorder_->missed(sky);
-            recorder_->end_ray(sky);
+            if (fade) recorder_->fog(*fade, true);
+            recorder_->end_ray(through(fade, sky));
         }
-        return sky;
+        return through(fade, sky);
     }
     if (path.depth == 1) ++stats.primary_hits;
     const SurfaceContext c = surface_context(world_, ray, *hit, or_null(path.pencil));
-    if constexpr (kRecord) recorder_->hit(c, *hit);
+    if constexpr (kRecord) {
+        recorder_->hit(c, *hit);
+        if (fade) recorder_->fog(*fade, true);
+    }
+    if (fade) path.throughput *= fade->transmittance;
     const Material& m = *c.material;
     PathVertexRecord record;
     Color color;
@@ -91,6 +100,7 @@ Color PathIntegrator::radiance(const Ray& ray, PathState path, SampleStream& str
     }
     // The end of the path: tells the recorder what the vertex did, and returns.
     const auto end = [&](StopReason reason) {
+        color = through(fade, color);
         if constexpr (kRecord) {
             recorder_->path_vertex(c, record);
             if (reason != StopReason::none) recorder_->stop(reason);
@@ -164,7 +174,7 @@ Color PathIntegrator::radiance(const Ray& ray, PathState path, SampleStream& str
         recorder_->path_vertex(c, record);
         recorder_->branch(kind, factor, s->delta ? std::nullopt : std::optional(u));
     }
-    color += factor * radiance<kRecord>(scattered, next, stream, stats);
+    color = through(fade, color + factor * radiance<kRecord>(scattered, next, stream, stats));
     if constexpr (kRecord) recorder_->end_ray(color);
     return color;
 }

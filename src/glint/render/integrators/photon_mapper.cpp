@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "glint/math/constants.h"
+#include "glint/render/integrators/ray_fog.h"
 #include "glint/render/integrators/roulette.h"
 #include "glint/render/integrators/surface_context.h"
 #include "glint/render/integrators/wavelength_split.h"
@@ -60,6 +61,10 @@ void trace_photon(const World& world, const Emitters& emitters, std::uint64_t in
         const auto hit = world.intersect(ray, {0, kInfinity}, kVisibleToCameraRays);
         stats.count(RayKind::particle);
         if (!hit) break;
+        if (const auto fade = interior_fade(media, hit->shape_hit.t)) {
+            beta *= fade->transmittance;
+            throughput *= fade->transmittance;
+        }
         const SurfaceContext c = surface_context(world, ray, *hit);
         const Material& m = *c.material;
         const WavelengthSplit split = split_wavelength(m, wavelength, [&] { return u.next(); });
@@ -164,22 +169,29 @@ Color PhotonIntegrator::eye_ray(const Ray& ray, int depth, const MediumStack& me
     const RenderSettings& settings = world_.settings();
     if constexpr (kRecord) recorder_->begin_ray(ray, depth, 1);
     const auto hit = world_.intersect(ray, {0, kInfinity}, kVisibleToCameraRays);
+    // Inside an object that fades, all the ray brings back fades on its way.
+    const std::optional<FogEffect> fade = interior_fade(media, hit ? hit->shape_hit.t : kInfinity);
     if (!hit) {
         const Color sky = world_.sky().radiance(ray.direction);
         if constexpr (kRecord) {
             recorder_->missed(sky);
-            recorder_->end_ray(sky);
+            if (fade) recorder_->fog(*fade, true);
+            recorder_->end_ray(through(fade, sky));
         }
-        return sky;
+        return through(fade, sky);
     }
     if (depth == 1) ++stats.primary_hits;
     const SurfaceContext c = surface_context(world_, ray, *hit, pencil);
-    if constexpr (kRecord) recorder_->hit(c, *hit);
+    if constexpr (kRecord) {
+        recorder_->hit(c, *hit);
+        if (fade) recorder_->fog(*fade, true);
+    }
     PathVertexRecord record;
     record.le = c.emission;
     // Seen by the eye or through delta surfaces: what it emits, as the light tracer's eye.
     Color color = c.emission;
     const auto end = [&](StopReason reason) {
+        color = through(fade, color);
         if constexpr (kRecord) {
             recorder_->path_vertex(c, record);
             if (reason != StopReason::none) recorder_->stop(reason);
@@ -237,8 +249,8 @@ Color PhotonIntegrator::eye_ray(const Ray& ray, int depth, const MediumStack& me
     const auto next_pencil = s->transmitted
                                  ? refraction_pencil(c, ray, pencil, eta.n1 / eta.n2, s->wi)
                                  : mirror_pencil(c, ray, pencil);
-    color +=
-        factor * eye_ray<kRecord>(next, depth + 1, beyond, stream, or_null(next_pencil), stats);
+    color = through(fade, color + factor * eye_ray<kRecord>(next, depth + 1, beyond, stream,
+                                                            or_null(next_pencil), stats));
     if constexpr (kRecord) recorder_->end_ray(color);
     return color;
 }

@@ -31,9 +31,10 @@ public:
 
     virtual void missed(Color background) = 0;
     virtual void hit(const SurfaceContext& c, const Hit& hit) = 0;
-    // The fog between the ray's origin and its end, which acts on all the ray brings back;
-    // after missed() or hit(), before the ray's terms.
-    virtual void fog(const FogEffect&) {}
+    // The fog between the ray's origin and its end, which acts on all the ray brings back, or
+    // inside an object (`inside`) its interior fade; after missed() or hit(), before the ray's
+    // terms.
+    virtual void fog(const FogEffect&, bool /*inside*/) {}
     virtual void stop(StopReason) {}  // max_depth: no branches
 
     // The local term, light by light: a light of one sample (a point light, or any light to

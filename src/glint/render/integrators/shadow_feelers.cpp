@@ -5,20 +5,21 @@
 
 namespace glint {
 
-float ShadowFeelers::transmittance(std::size_t light, const SurfacePoint& sp, Normal3 n,
+Color ShadowFeelers::transmittance(std::size_t light, const SurfacePoint& sp, Normal3 n,
                                    Vector3 to_light, float light_distance, float time,
                                    RayStats& stats) {
-    if (light != kNoLight && !casts_shadows(world_.lights()[light])) return 1;
+    constexpr Color kLit{1, 1, 1};
+    if (light != kNoLight && !casts_shadows(world_.lights()[light])) return kLit;
     if (light != kNoLight)
         if (const ShadowMap* map = world_.shadow_map(light)) {
             Lookup& last = last_lookup_[light];
             if (last.visibility >= 0 && last.p.x == sp.p.x && last.p.y == sp.p.y &&
                 last.p.z == sp.p.z)
-                return last.visibility;
+                return Color::gray(last.visibility);
             if (const std::optional<float> lit = map->visibility(sp.p, n)) {
                 ++stats.shadow_map_lookups;
                 last = {sp.p, *lit};
-                return *lit;
+                return Color::gray(*lit);
             }
         }
     Ray feeler = world_.spawn_ray(sp.p, n, to_light, sp.error, time);
@@ -37,26 +38,37 @@ float ShadowFeelers::transmittance(std::size_t light, const SurfacePoint& sp, No
     }
     if (!transparent_) {
         stats.count(RayKind::shadow);
+        bool blocked = false;
         if (light == kNoLight)
-            return world_.occluded(feeler, {0, remaining}, kVisibleToShadowRays) ? 0.0f : 1.0f;
-        return world_.occluded_towards(light, feeler, {0, remaining}, last_occluder_[light]) ? 0.0f
-                                                                                             : 1.0f;
+            blocked = world_.occluded(feeler, {0, remaining}, kVisibleToShadowRays);
+        else
+            blocked = world_.occluded_towards(light, feeler, {0, remaining}, last_occluder_[light]);
+        return blocked ? Color{} : kLit;
     }
-    float factor = 1;
+    Color factor = kLit;
     for (int crossing = 0; crossing < kMaxShadowCrossings; ++crossing) {
         stats.count(RayKind::shadow);
         const auto hit = world_.intersect(feeler, {0, remaining}, kVisibleToShadowRays);
         if (!hit) return factor;
-        factor *= world_.material_at(*hit).transmit;
-        if (factor == 0) return 0;
+        const Material& m = world_.material_at(*hit);
+        if (m.transmit == 0) return {};
+        const bool tints = m.tint > 0;
+        const SurfacePoint crossed =
+            world_.surface_at(feeler, *hit, tints ? uv_needed(m.color) : Uv::skip);
+        factor *= m.transmit;
+        if (tints) factor *= Color::gray(1 - m.tint) + m.tint * evaluate(m.color, crossed);
+        // Leaving an object by its back, the feeler has crossed its inside since the surface
+        // before (an approximation where objects nest or overlap).
+        if (m.fade.fades() && dot(crossed.normal, feeler.direction) > 0)
+            factor *= fade_over(m.fade, hit->shape_hit.t);
+        if (is_black(factor)) return {};
         // Continue from just beyond the surface crossed.
-        const SurfacePoint crossed = world_.surface_at(feeler, *hit, Uv::skip);
         const Ray next =
             world_.spawn_ray(crossed.p, crossed.normal, feeler.direction, crossed.error, time);
         remaining -= distance(feeler.origin, next.origin);
         feeler = next;
     }
-    return 0;
+    return {};
 }
 
 }  // namespace glint

@@ -1,6 +1,7 @@
 // Shadow feelers (the notes' Schattenfühler): how much of a light reaches a surface point along
-// a direction, 0 or 1, or with transparent shadows the product of the transmit weights of the
-// surfaces crossed. Every integrator asks it; it keeps each light's last occluder per thread.
+// a direction, 0 or 1, or with transparent shadows the product of what the surfaces crossed let
+// through (kt, coloured by their tint) and of their insides' fade. Every integrator asks it; it
+// keeps each light's last occluder per thread.
 #pragma once
 
 #include <cstddef>
@@ -8,6 +9,7 @@
 #include <vector>
 
 #include "glint/geometry/surface_point.h"
+#include "glint/math/color.h"
 #include "glint/math/ray.h"
 #include "glint/render/ray_stats.h"
 #include "glint/render/world.h"
@@ -32,9 +34,10 @@ public:
           last_lookup_(world.lights().size()) {}
 
     // The fraction of the light that reaches the surface point sp along the unit direction
-    // to_light over light_distance, from world.lights()[light] (or kNoLight). n is the geometric
-    // normal on the side of the light; time is the moment the shadow ray is traced at.
-    float transmittance(std::size_t light, const SurfacePoint& sp, Normal3 n, Vector3 to_light,
+    // to_light over light_distance, from world.lights()[light] (or kNoLight), per channel. n is
+    // the geometric normal on the side of the light; time is the moment the shadow ray is traced
+    // at.
+    Color transmittance(std::size_t light, const SurfacePoint& sp, Normal3 n, Vector3 to_light,
                         float light_distance, float time, RayStats& stats);
 
 private:

@@ -118,10 +118,20 @@ inline float ior_at(const Material& m, float wavelength) {
 
 struct Branches {
     float kr = 0, kt = 0;
-    Vector3 refracted;  // unit; when kt > 0
-    bool entering;      // the refracted ray enters the object (else it leaves it)
-    float eta = 1;      // n1 / n2 of the refraction, when kt > 0
+    Color filter{1, 1, 1};  // the refracted ray's colour besides kt (transmit_filter)
+    Vector3 refracted;      // unit; when kt > 0
+    bool entering;          // the refracted ray enters the object (else it leaves it)
+    float eta = 1;          // n1 / n2 of the refraction, when kt > 0
 };
+
+// What the light refracted at c is multiplied by besides kt: the surface colour's share
+// (Material::tint), as coloured glass filters it.
+inline Color transmit_filter(const SurfaceContext& c) {
+    const float tint = c.material->tint;
+    if (tint == 0) [[likely]]
+        return Color{1, 1, 1};
+    return Color::gray(1 - tint) + tint * c.color;
+}
 
 // Snell's law's indices at c: n1 on the ray's side, n2 beyond.
 struct SnellIndices {
@@ -137,12 +147,13 @@ inline SnellIndices snell_indices(const SurfaceContext& c, const MediumStack& me
 inline Branches branches_at(const SurfaceContext& c, Vector3 direction, const MediumStack& media,
                             float wavelength = 0) {
     const Material& m = *c.material;
-    Branches b{c.reflect, m.transmit, {}, c.entering};
+    Branches b{c.reflect, m.transmit, {1, 1, 1}, {}, c.entering};
     if (b.kt > 0) {
         const auto [n1, n2] = snell_indices(c, media, wavelength);
         if (const auto t = refract(direction, c.n, n1 / n2)) {
             b.refracted = normalize(*t);
             b.eta = n1 / n2;
+            b.filter = transmit_filter(c);
             if (m.fresnel) {  // kt F of it reflects
                 const float reflected =
                     b.kt * fresnel_dielectric(-dot(direction, to_vector(c.n)), n1 / n2);
@@ -179,6 +190,7 @@ inline BsdfInputs bsdf_inputs(const SurfaceContext& c, SnellIndices eta) {
     in.reflect = c.reflect;
     in.roughness = c.roughness;
     in.transmit = m.transmit;
+    in.transmit_filter = transmit_filter(c);
     in.transmit_roughness = c.transmit_roughness;
     in.n1 = eta.n1;
     in.n2 = eta.n2;

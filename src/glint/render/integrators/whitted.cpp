@@ -54,7 +54,7 @@ Color WhittedIntegrator::shade(const Ray& ray, int depth, float weight, RayStats
         const Color sky = world_.sky().radiance(ray.direction);
         if constexpr (kRecord) {
             recorder_->missed(sky);
-            if (fog) recorder_->fog(*fog);
+            if (fog) recorder_->fog(*fog, media.size() > 0);
         }
         return through(fog, sky);
     }
@@ -63,7 +63,7 @@ Color WhittedIntegrator::shade(const Ray& ray, int depth, float weight, RayStats
     const SurfaceContext c = surface_context(world_, ray, *hit, pencil);
     if constexpr (kRecord) {
         recorder_->hit(c, *hit);
-        if (fog) recorder_->fog(*fog);
+        if (fog) recorder_->fog(*fog, media.size() > 0);
     }
     const Material& m = *c.material;
     Color color = c.emission + ambient_term(m, c.ambient_color, world_.ambient());
@@ -91,8 +91,8 @@ Color WhittedIntegrator::shade(const Ray& ray, int depth, float weight, RayStats
     if (b.kt > 0 && weight * b.kt >= settings.min_weight) {
         stats.count(RayKind::refracted);
         const Ray t = spawn_from(world_, c, ray, b.refracted);
-        if constexpr (kRecord) recorder_->branch(RayKind::refracted, Color::gray(b.kt));
-        color += b.kt *
+        if constexpr (kRecord) recorder_->branch(RayKind::refracted, b.kt * b.filter);
+        color += b.kt * b.filter *
                  trace_ray<kRecord>(t, depth + 1, weight * b.kt, stats, media_beyond(c, b, media),
                                     or_null(refraction_pencil(c, ray, pencil, b.eta, b.refracted)));
     }

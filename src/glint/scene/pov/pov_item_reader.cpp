@@ -870,11 +870,20 @@ PovInterior PovItemReader::interior(const PovInterior& base) {
                     {"1 is none; POV-Ray suggests 1.01 to 1.1"});
         } else if (token.is_word("dispersion_samples"))
             in.dispersion_samples = parser_.whole_number("after dispersion_samples", 2, 1 << 10);
-        else if (token.is_word("fade_distance") || token.is_word("fade_power") ||
-                 token.is_word("caustics"))
-            parser_.finite_float("in an interior");  // read; the absorption is not rendered yet
-        else if (token.is_word("fade_color") || token.is_word("fade_colour"))
-            parser_.color_expression("in an interior");
+        else if (token.is_word("fade_distance") || token.is_word("fade_power")) {
+            const PovToken at = parser_.peek();
+            const auto value = float(parser_.finite_float("after " + token.text));
+            (token.text == "fade_distance" ? in.fade.distance : in.fade.power) = value;
+            if (const std::string problem = describe_problem(in.fade); !problem.empty())
+                throw parser_.error_at(at, problem);
+        } else if (token.is_word("fade_color") || token.is_word("fade_colour")) {
+            const PovToken at = parser_.peek();
+            const PovVector c = parser_.color_expression("after " + token.text);
+            in.fade.color = Color{float(c[0]), float(c[1]), float(c[2])};
+            if (const std::string problem = describe_problem(in.fade); !problem.empty())
+                throw parser_.error_at(at, problem);
+        } else if (token.is_word("caustics"))
+            parser_.finite_float("in an interior");  // read; faked caustics are not drawn
         else if (token.is_word("media"))
             parser_.skip_braced(token);
         else

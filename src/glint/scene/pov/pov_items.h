@@ -14,6 +14,7 @@
 #include "glint/math/transform.h"
 #include "glint/scene/pov/pov_files.h"
 #include "glint/scene/pov/pov_value.h"
+#include "glint/shading/interior_fade.h"
 #include "glint/shading/normal_pattern.h"
 #include "glint/shading/pattern.h"
 #include "glint/shading/projected_image.h"
@@ -119,6 +120,9 @@ struct PovInterior {
     double ior = 1;
     double dispersion = 1;  // the index's ratio from the red end of the spectrum to the violet
     int dispersion_samples = 7;
+    // fade_distance, fade_power and fade_color, as glint's fade (0 distance: none; POV-Ray's
+    // power 0 unless given).
+    InteriorFade fade{0, 0, {}};
 };
 
 // material { texture interior }: what it gives; null where it gives nothing.

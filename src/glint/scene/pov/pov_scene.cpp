@@ -64,6 +64,26 @@ double transmitted(const PovPigment& p) {
     return least;
 }
 
+// The share of what the pigment lets through that its filter lets through, coloured by the
+// pigment: the material's tint. From the entry that lets the least through, as transmitted().
+double filtered_share(const PovVector& c) {
+    const double through = c[3] + c[4];
+    return through > 0 ? std::clamp(c[3] / through, 0.0, 1.0) : 0.0;
+}
+double filtered_share(const PovPigment& p) {
+    if (p.kind != PovPigment::Kind::pattern) return filtered_share(p.color);
+    double least = 2, share = 0;
+    for (const PovColorStop& stop : p.map.stops) {
+        const double through =
+            stop.pigment ? transmitted(*stop.pigment) : stop.color[3] + stop.color[4];
+        if (through < least) {
+            least = through;
+            share = stop.pigment ? filtered_share(*stop.pigment) : filtered_share(stop.color);
+        }
+    }
+    return share;
+}
+
 // The first pigment glint does not read yet, at any depth of its pigment_maps.
 const PovPigment* unread_pigment(const PovPigment& p) {
     if (p.kind == PovPigment::Kind::unsupported) return &p;
@@ -542,6 +562,7 @@ private:
         if (layers.size() == 1) {
             m.color = texture_of(p, frame);
             m.transmit = float(std::clamp(transmitted(p), 0.0, 1.0));
+            m.tint = float(filtered_share(p));
             // What a pigment lets through it does not reflect diffusely: POV-Ray scales the
             // ambient and diffuse terms by its opacity (the highlights it leaves).
             m.ka *= 1 - m.transmit;
@@ -565,6 +586,8 @@ private:
             m.transmit = float(std::clamp(passed, 0.0, 1.0));
         }
         if (interior) m.ior = float(interior->ior);
+        // Powers from 1000 on are Beer-Lambert's law in glint as in POV-Ray.
+        if (interior) m.fade = interior->fade;
         if (interior && interior->dispersion != 1) disperse(m, *interior);
         scene_.materials.push_back(std::move(m));
         const auto index = std::uint32_t(scene_.materials.size() - 1);

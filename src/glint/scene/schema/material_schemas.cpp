@@ -62,6 +62,21 @@ std::vector<EntitySchema> material_schemas() {
               kUnitInterval},
              {"transmit", "number", "0", "kt, weight of the refracted ray", "[0, 1]",
               kUnitInterval},
+             {"tint", "number", "0",
+              "how much of the transmitted light takes the surface colour C, as coloured glass "
+              "filters it: the refracted ray (and a transparent shadow) weighs kt ((1 − tint) + "
+              "tint C); POV-Ray's filter",
+              "[0, 1]", kUnitInterval},
+             {"fade_distance", "number", "0 (none)",
+              "light travelling d through the object's inside fades ([interior "
+              "fade](#interior-fade)): to exp(−1), or with `fade_power` to half, at this distance",
+              ">= 0", kNonNegative},
+             {"fade_power", "number", "exponential",
+              "p of the fade c + (1 − c) / (1 + (d / fade_distance)^p); unless given, or from 1000 "
+              "on, Beer–Lambert's exp(−(1 − c) d / fade_distance)",
+              ">= 0", kNonNegative},
+             {"fade_color", "color", "0 (black)",
+              "c, the colour that passes unfaded: its complement fades", "channels in [0, 1]"},
              {"ior", "number", "1",
               "index of refraction inside the object; outside it is that of the object around it "
               "([nested media](#nested-media)), or 1 (vacuum)",

@@ -271,6 +271,14 @@ Material read_material(const YamlSource& source, const ReadSandbox& sandbox, con
     MaterialMaps maps;
     maps.reflect = read_scalar_map(map, "reflect", m.reflect);
     m.transmit = map.number_or("transmit", m.transmit);
+    m.tint = map.number_or("tint", m.tint);
+    m.fade.distance = map.number_or("fade_distance", m.fade.distance);
+    m.fade.power = map.number_or("fade_power", m.fade.power);
+    m.fade.color = map.color("fade_color", m.fade.color);
+    // The keys' ranges hold the distance and power; the colour's channels are checked here.
+    if (const std::string problem = describe_problem(m.fade); !problem.empty())
+        throw source.error_at(map.has("fade_color") ? map.require("fade_color").value : node,
+                              problem);
     m.ior = map.number_or("ior", m.ior);
     m.fresnel = map.boolean("fresnel", m.fresnel);
     read_dispersion(map, m);
