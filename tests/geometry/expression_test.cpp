@@ -106,10 +106,10 @@ TEST(Expression, UnknownFunctionSuggestsTheNearestName) {
     EXPECT_EQ(e.message, "unknown function \"son\"");
     ASSERT_EQ(e.notes.size(), 1u);
     EXPECT_EQ(e.notes[0],
-              "functions are: abs, atan2, cos, exp, log, max, min, noise, sin, sqrt (did you mean "
-              "\"sin\"?)");
+              "functions are: abs, atan2, cos, exp, floor, log, max, min, noise, sin, sqrt, trunc "
+              "(did you mean \"sin\"?)");
     EXPECT_EQ(error_of("frobnicate(x)").notes[0],
-              "functions are: abs, atan2, cos, exp, log, max, min, noise, sin, sqrt");
+              "functions are: abs, atan2, cos, exp, floor, log, max, min, noise, sin, sqrt, trunc");
 }
 
 TEST(Expression, UnknownNameListsCoordinatesAndConstants) {
@@ -245,6 +245,33 @@ TEST(Expression, Atan2IsTheAngleOfAPoint) {
         EXPECT_TRUE(before.value.contains(f.along_ray(up, t).value));
         EXPECT_TRUE(before.slope.contains(f.along_ray(up, t).slope));
     }
+}
+
+// floor and trunc: the whole numbers below and towards 0, flat between their steps, whose
+// enclosures hold every value and whose segments are continuous only between steps.
+TEST(Expression, FloorAndTruncAreStepsThatBreakContinuity) {
+    EXPECT_EQ(eval("floor(x)", 2.5), 2);
+    EXPECT_EQ(eval("floor(x)", -2.5), -3);
+    EXPECT_EQ(eval("trunc(x)", -2.5), -2);
+    EXPECT_EQ(eval("trunc(x)", 2.5), 2);
+    // C's fmod by trunc, as POV-Ray's mod: -7.5 mod 2 is -1.5.
+    EXPECT_DOUBLE_EQ(eval("x - 2*trunc(x/2)", -7.5), -1.5);
+    EXPECT_EQ(eval("floor(2.7) + trunc(-2.7)"), 0);  // folded
+    const Expression f = compile("floor(x) + y");
+    const Expression::Gradient g = f.gradient(1.5, 2, 0);
+    EXPECT_EQ(g.dx, 0);
+    EXPECT_EQ(g.dy, 1);
+    // Widened outwards by the sum's rounding.
+    const RealInterval r = f.range({0.2, 2.5}, {0, 0}, {0, 0});
+    EXPECT_NEAR(r.lo, 0, 1e-300);
+    EXPECT_NEAR(r.hi, 2, 1e-15);
+    EXPECT_EQ(compile("trunc(x)").range({-1.5, 0.5}, {0, 0}, {0, 0}), (RealInterval{-1, 0}));
+    const Ray ray{{-1, 0.5f, 0.5f}, {1, 0, 0}};  // x = t - 1
+    EXPECT_TRUE(f.along_ray(ray, RealInterval{1.1, 1.9}).continuous);
+    EXPECT_FALSE(f.along_ray(ray, RealInterval{0.5, 1.5}).continuous);
+    const Expression::RaySegment flat = compile("trunc(x)").along_ray(ray, RealInterval{0.5, 1.5});
+    EXPECT_TRUE(flat.continuous);  // trunc is 0 all across (-0.5, 0.5)
+    EXPECT_EQ(flat.slope, (RealInterval{0, 0}));
 }
 
 // noise(a, b, c) is Perlin's noise at (a, b, c): its value and exact gradient, folded when

@@ -101,6 +101,12 @@ typename A::Value run(std::span<const ExpressionInstruction> program, A& a,
             case ExpressionOp::kAbs:
                 last = a.abs(last);
                 break;
+            case ExpressionOp::kFloor:
+                last = a.floor(last);
+                break;
+            case ExpressionOp::kTrunc:
+                last = a.trunc(last);
+                break;
             case ExpressionOp::kNoise:
                 top -= 2;
                 stack[top - 1] = a.noise(stack[top - 1], stack[top], stack[top + 1]);
@@ -161,6 +167,8 @@ struct Real {
     static double log(double a) { return std::log(a); }
     static double sqrt(double a) { return std::sqrt(a); }
     static double abs(double a) { return std::abs(a); }
+    static double floor(double a) { return std::floor(a); }
+    static double trunc(double a) { return std::trunc(a); }
     static double min(double a, double b) { return std::min(a, b); }
     static double max(double a, double b) { return std::max(a, b); }
     static double atan2(double a, double b) { return std::atan2(a, b); }
@@ -223,6 +231,9 @@ struct Dual {
         return scaled(a, s, 0.5 / s);
     }
     static Value abs(const Value& a) { return a.v < 0 ? negate(a) : a; }
+    // Steps: flat between them (the derivative at a step, which does not exist, taken as 0).
+    static Value floor(const Value& a) { return {std::floor(a.v)}; }
+    static Value trunc(const Value& a) { return {std::trunc(a.v)}; }
     static Value min(const Value& a, const Value& b) { return b.v < a.v ? b : a; }
     static Value max(const Value& a, const Value& b) { return b.v > a.v ? b : a; }
     static Value atan2(const Value& a, const Value& b) {  // d = (b a' - a b') / (a^2 + b^2)
@@ -258,6 +269,8 @@ struct Intervals {
     static Value log(Value a) { return glint::log(a); }
     static Value sqrt(Value a) { return glint::sqrt(a); }
     static Value abs(Value a) { return glint::abs(a); }
+    static Value floor(Value a) { return glint::floor(a); }
+    static Value trunc(Value a) { return glint::trunc(a); }
     static Value min(Value a, Value b) { return glint::min(a, b); }
     static Value max(Value a, Value b) { return glint::max(a, b); }
     static Value atan2(Value a, Value b) { return glint::atan2(a, b); }
@@ -323,6 +336,17 @@ struct IntervalSlopes {
         if (a.v.lo >= 0) return a;
         if (a.v.hi <= 0) return negate(a);
         return {glint::abs(a.v), hull(a.d, -a.d)};
+    }
+    // Flat between steps; a step inside the interval breaks continuity.
+    Value floor(const Value& a) {
+        const RealInterval f = glint::floor(a.v);
+        if (f.lo != f.hi) continuous = false;
+        return {f, {0, 0}};
+    }
+    Value trunc(const Value& a) {
+        const RealInterval f = glint::trunc(a.v);
+        if (f.lo != f.hi) continuous = false;
+        return {f, {0, 0}};
     }
     static Value min(const Value& a, const Value& b) {
         if (a.v.hi <= b.v.lo) return a;

@@ -55,6 +55,8 @@ enum class ExpressionOp : std::uint8_t {
     kMax,
     kAtan2,  // atan2(a, b): the angle of the point (b, a)
     kNoise,  // noise(a, b, c): Perlin's noise (sampling/perlin_noise.h) at the point (a, b, c)
+    kFloor,  // the whole number at or below a
+    kTrunc,  // a's whole part, towards 0
 };
 
 struct ExpressionInstruction {
@@ -128,8 +130,8 @@ private:
 std::variant<Expression, ExpressionError> compile_expression(
     std::string_view source, const ExpressionConstants& constants = {});
 
-// The function names of the language, sorted: abs, atan2, cos, exp, log, max, min, noise, sin,
-// sqrt.
+// The function names of the language, sorted: abs, atan2, cos, exp, floor, log, max, min,
+// noise, sin, sqrt, trunc.
 std::span<const std::string_view> expression_functions();
 
 }  // namespace glint

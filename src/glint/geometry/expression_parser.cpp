@@ -23,14 +23,15 @@ struct Function {
 
 // Sorted by name: the error notes list them in this order.
 constexpr std::array kFunctions{
-    Function{"abs", ExpressionOp::kAbs, 1}, Function{"atan2", ExpressionOp::kAtan2, 2},
-    Function{"cos", ExpressionOp::kCos, 1}, Function{"exp", ExpressionOp::kExp, 1},
-    Function{"log", ExpressionOp::kLog, 1}, Function{"max", ExpressionOp::kMax, 2},
-    Function{"min", ExpressionOp::kMin, 2}, Function{"noise", ExpressionOp::kNoise, 3},
-    Function{"sin", ExpressionOp::kSin, 1}, Function{"sqrt", ExpressionOp::kSqrt, 1},
+    Function{"abs", ExpressionOp::kAbs, 1},     Function{"atan2", ExpressionOp::kAtan2, 2},
+    Function{"cos", ExpressionOp::kCos, 1},     Function{"exp", ExpressionOp::kExp, 1},
+    Function{"floor", ExpressionOp::kFloor, 1}, Function{"log", ExpressionOp::kLog, 1},
+    Function{"max", ExpressionOp::kMax, 2},     Function{"min", ExpressionOp::kMin, 2},
+    Function{"noise", ExpressionOp::kNoise, 3}, Function{"sin", ExpressionOp::kSin, 1},
+    Function{"sqrt", ExpressionOp::kSqrt, 1},   Function{"trunc", ExpressionOp::kTrunc, 1},
 };
 constexpr std::array<std::string_view, kFunctions.size()> kFunctionNames{
-    "abs", "atan2", "cos", "exp", "log", "max", "min", "noise", "sin", "sqrt"};
+    "abs", "atan2", "cos", "exp", "floor", "log", "max", "min", "noise", "sin", "sqrt", "trunc"};
 
 const Function* find_function(std::string_view name) {
     for (const Function& f : kFunctions)
@@ -507,6 +508,10 @@ private:
                 return std::sqrt(a);
             case ExpressionOp::kAbs:
                 return std::abs(a);
+            case ExpressionOp::kFloor:
+                return std::floor(a);
+            case ExpressionOp::kTrunc:
+                return std::trunc(a);
             case ExpressionOp::kMin:
                 return std::min(a, b);
             case ExpressionOp::kMax:

@@ -205,6 +205,16 @@ RealInterval abs(RealInterval a) {
     return {0, a.magnitude()};
 }
 
+RealInterval floor(RealInterval a) {
+    if (a.is_empty()) return a;
+    return {std::floor(a.lo), std::floor(a.hi)};
+}
+
+RealInterval trunc(RealInterval a) {
+    if (a.is_empty()) return a;
+    return {std::trunc(a.lo), std::trunc(a.hi)};
+}
+
 RealInterval min(RealInterval a, RealInterval b) {
     if (a.is_empty() || b.is_empty()) return RealInterval::empty();
     return {std::min(a.lo, b.lo), std::min(a.hi, b.hi)};

@@ -64,6 +64,10 @@ RealInterval log(RealInterval a);  // on a > 0; log(0) is -inf, so [0, b] gives 
 RealInterval sin(RealInterval a);
 RealInterval cos(RealInterval a);
 RealInterval abs(RealInterval a);
+// The whole numbers below (floor) or towards 0 (trunc) of the interval's points: steps, so
+// continuous only where the interval holds no step (floor(lo) = floor(hi)).
+RealInterval floor(RealInterval a);
+RealInterval trunc(RealInterval a);
 RealInterval min(RealInterval a, RealInterval b);
 RealInterval max(RealInterval a, RealInterval b);
 // The angle of the points (x, y), in [-pi, pi] with the cut along the negative x axis: from the

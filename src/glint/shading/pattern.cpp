@@ -7,6 +7,7 @@
 #include <cmath>
 #include <cstdint>
 
+#include "glint/geometry/expression.h"
 #include "glint/math/constants.h"
 #include "glint/math/interval.h"
 #include "glint/sampling/random.h"
@@ -182,6 +183,8 @@ float raw_value(const PatternSpec& spec, Point3 p) {
             const float s = z + rad + spec.arms * turn_round_z(x, y, rad);
             return spec.kind == PatternKind::spiral1 ? s : triangle_wave(rad) + triangle_wave(s);
         }
+        case PatternKind::function:
+            return float(spec.function->value(p));
         case PatternKind::wrinkles: {
             // Noise in [0, 1], as POV-Ray's.
             float sum = 0, weight = 1, scale = 1;

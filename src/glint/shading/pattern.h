@@ -5,11 +5,14 @@
 // detail from POV-Ray's.
 #pragma once
 
+#include <memory>
 #include <span>
 
 #include "glint/math/vector.h"
 
 namespace glint {
+
+class Expression;  // geometry/expression.h
 
 enum class PatternKind {
     agate,        // bands along z bent by turbulence
@@ -18,6 +21,7 @@ enum class PatternKind {
     brick,        // 0 in the mortar, 1 in a brick: rows of bricks laid in running bond
     checker,      // 0 or 1 by the parity of the cells' sum (checker_cell): no wave, no frequency
     crackle,      // cells round random points: the distance to the second nearest minus the nearest
+    function,     // f(x, y, z) of an expression (POV-Ray's function pattern), wrapped into [0, 1]
     cylindrical,  // 1 - sqrt(x^2 + z^2)
     gradient,     // p . direction
     granite,      // turbulent noise (noise.h)
@@ -62,8 +66,9 @@ struct PatternSpec {
     // mortar's width, both with their mortar; POV-Ray's defaults.
     Vector3 brick_size{8, 3, 4.5f};
     float mortar = 0.5f;
-    int iterations = 1;  // mandel: the most iterations, >= 1
-    float arms = 1;      // spiral1, spiral2
+    int iterations = 1;                          // mandel: the most iterations, >= 1
+    float arms = 1;                              // spiral1, spiral2
+    std::shared_ptr<const Expression> function;  // function: f, not null
 };
 
 // The centres of POV-Ray's waves and ripples: ten points spread evenly over the unit sphere (a

@@ -1,6 +1,7 @@
 // glint's own POV-Ray test scene for patterns: a checker turned and scaled, gradient, onion
 // (old-style map entries) and radial (frequency, inside a turned union) through colour maps,
-// leopard and wood (turned), all placed by their objects' transforms. Its reference,
+// leopard and wood (turned), and a function pattern (mod, floor) all placed by their objects'
+// transforms. Its reference,
 // patterns-povray.png, is POV-Ray 3.7.0.10's render at 160x120 without antialiasing:
 // povray +Ipatterns.pov +W160 +H120 -A
 #version 3.7;
@@ -18,3 +19,4 @@ union {
 }
 sphere { <-1.2, 0.5, -2>, 0.5 pigment { leopard color_map { [0 rgb 1] [1 rgb <0.8,0,0>] } scale 0.1 } }
 sphere { <1.2, 0.5, -2>, 0.5 pigment { wood color_map { [0 rgb <0.6,0.35,0.1>] [1 rgb <0.9,0.7,0.4>] } scale 0.1 rotate x*70 } }
+sphere { <0, 0.4, -2.6>, 0.4 pigment { function { mod(abs(x*3 + y*2), 1) * 0.7 + floor(z*4) * 0.1 } color_map { [0 rgb <0.1,0.1,0.5>] [1 rgb <1,0.8,0.6>] } } }

@@ -609,6 +609,34 @@ TEST(PovScene, WideCamerasTakeTheirAngleAndACylindersKind) {
         std::string::npos);
 }
 
+// function { } as a pigment pattern: its value at the pattern's point, wrapped into [0, 1] as
+// other patterns' values are; POV-Ray's floor, ceil, int, mod and div and the render's floats
+// (image_width) written out. A function glint cannot compute stops only a scene that uses it.
+TEST(PovScene, FunctionPatternsAreTheirFunctionsValue) {
+    const Scene s = parse(R"(
+        #declare F = function(a) { mod(a, 2) + ceil(a) - floor(a) + int(-a) + div(a, 2) }
+        sphere { 0, 1 pigment { function { F(x) / image_width } color_map { [0 rgb 0] [1 rgb 1] } } }
+        #declare Unused = pigment { function { select(x, 0, 1) } }
+        sphere { 0, 1 pigment { function { x * 3 } } })");
+    ASSERT_EQ(s.objects.size(), 2u);
+    const PatternTexture& f =
+        *std::get<PatternTexturePtr>(s.materials[s.objects[0].material].color);
+    EXPECT_EQ(f.spec.kind, PatternKind::function);
+    // At x = -3.5: mod -1.5, ceil -3, floor -4, int 3, div -1: 1.5; over the image's 320.
+    EXPECT_NEAR(f.spec.function->value(-3.5, 0, 0), 1.5 / 320, 1e-12);
+    EXPECT_NEAR(pattern_value(f.spec, {-3.5f, 0, 0}), 1.5 / 320, 1e-6);
+    // 3x at x = 0.25 is 0.75; at 0.5, 1.5 wraps round to 0.5, and at -0.1, -0.3 to 0.7.
+    const PatternTexture& triple =
+        *std::get<PatternTexturePtr>(s.materials[s.objects[1].material].color);
+    EXPECT_NEAR(pattern_value(triple.spec, {0.25f, 0, 0}), 0.75, 1e-6);
+    EXPECT_NEAR(pattern_value(triple.spec, {0.5f, 0, 0}), 0.5, 1e-6);
+    EXPECT_NEAR(pattern_value(triple.spec, {-0.1f, 0, 0}), 0.7, 1e-6);
+    EXPECT_NE(error_of("sphere { 0, 1 pigment { function { select(x, 0, 1) } } }")
+                  .find("scene.pov:1:25: error: the pigment's function uses select, which glint "
+                        "does not compute yet"),
+              std::string::npos);
+}
+
 // isosurface: the function less the threshold as glint's implicit surface, within its
 // container: intersected with it when closed, clipped by it (or bounded, a box) when open.
 // Functions are written out: built-ins, declared floats, declared functions with their own
@@ -651,8 +679,8 @@ TEST(PovScene, IsosurfacesAreImplicitSurfacesInTheirContainers) {
                   .find("scene.pov:2:14: error: the isosurface's function uses internal(80), "
                         "which glint does not compute yet"),
               std::string::npos);
-    EXPECT_NE(error_of("isosurface { function { floor(x) } }")
-                  .find("uses floor, which glint does not compute yet"),
+    EXPECT_NE(error_of("isosurface { function { select(x, 1, 2) } }")
+                  .find("uses select, which glint does not compute yet"),
               std::string::npos);
     EXPECT_NE(error_of("isosurface { function { x < 1 } }")
                   .find("scene.pov:1:27: error: comparisons and logic (<) in a function are not "

@@ -75,6 +75,15 @@ const std::vector<Builtin>& builtins() {
         {"pow", 2, [](const Args& a) { return "(" + a[0] + "^" + a[1] + ")"; }},
         {"atan2", 2, [](const Args& a) { return "atan2(" + a[0] + "," + a[1] + ")"; }},
         {"atan", 1, [](const Args& a) { return "atan2(" + a[0] + ",1)"; }},
+        {"floor", 1, unary("floor")},
+        {"ceil", 1, [](const Args& a) { return "(-floor(-" + a[0] + "))"; }},
+        {"int", 1, unary("trunc")},
+        // POV-Ray's mod is C's fmod: the remainder takes the sign of a.
+        {"mod", 2,
+         [](const Args& a) {
+             return "(" + a[0] + "-" + a[1] + "*trunc(" + a[0] + "/" + a[1] + "))";
+         }},
+        {"div", 2, [](const Args& a) { return "trunc(" + a[0] + "/" + a[1] + ")"; }},
         {"min", -1, [](const Args& a) { return folded("min", a); }},
         {"max", -1, [](const Args& a) { return folded("max", a); }},
     };
@@ -83,9 +92,8 @@ const std::vector<Builtin>& builtins() {
 
 // POV-Ray's other built-in functions, which glint's expressions cannot write yet.
 bool is_unwritable_builtin(std::string_view name) {
-    static constexpr std::string_view kOthers[] = {"acos", "acosh",  "asin", "asinh", "atanh",
-                                                   "ceil", "floor",  "int",  "mod",   "prod",
-                                                   "sum",  "select", "div"};
+    static constexpr std::string_view kOthers[] = {"acos",  "acosh", "asin", "asinh",
+                                                   "atanh", "prod",  "sum",  "select"};
     return std::find(std::begin(kOthers), std::end(kOthers), name) != std::end(kOthers);
 }
 
@@ -189,6 +197,8 @@ private:
             return "$" + std::to_string(parameter - parameters_.begin());
         if (aliases_ && (t.text == "u" || t.text == "v")) return t.text == "u" ? "$0" : "$1";
         if (t.text == "pi") return "pi";
+        if (const std::optional<double> value = parser_.render_float(t.text))
+            return expression_number(*value);
         if (t.text == "pattern" || t.text == "pigment" || t.text == "transform" ||
             t.text == "spline") {
             parser_.skip_braced(t);

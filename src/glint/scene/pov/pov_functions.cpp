@@ -76,6 +76,17 @@ std::vector<PovValue> PovParser::arguments(const PovToken& name, std::size_t min
     return values;
 }
 
+std::optional<double> PovParser::render_float(std::string_view w) const {
+    if (w == "clock") return options_.clock;
+    if (w == "image_width") return double(options_.image_width);
+    if (w == "image_height") return double(options_.image_height);
+    if (w == "clock_delta") return 1.0;
+    if (w == "clock_on") return 0.0;
+    if (w == "initial_clock" || w == "final_clock") return options_.clock;
+    if (w == "frame_number" || w == "initial_frame" || w == "final_frame") return 0.0;
+    return std::nullopt;
+}
+
 std::optional<PovValue> PovParser::builtin(const PovToken& name) {
     const std::string& w = name.text;
     // Constants.
@@ -95,13 +106,7 @@ std::optional<PovValue> PovParser::builtin(const PovToken& name) {
         v[w == "u" ? 0 : 1] = 1;
         return v;
     }
-    if (w == "clock") return options_.clock;
-    if (w == "image_width") return double(options_.image_width);
-    if (w == "image_height") return double(options_.image_height);
-    if (w == "clock_delta") return 1.0;
-    if (w == "clock_on") return 0.0;
-    if (w == "initial_clock" || w == "final_clock") return options_.clock;
-    if (w == "frame_number" || w == "initial_frame" || w == "final_frame") return 0.0;
+    if (const std::optional<double> value = render_float(w)) return *value;
     if (w == "version") {
         if (const PovValue* declared = symbols_.find("version")) return *declared;
         return 3.7;

@@ -51,8 +51,9 @@ struct PovColorMap {
 // read past so that only an object that uses it stops the scene.
 struct PovPigment {
     enum class Kind { color, pattern, image, unsupported } kind = Kind::color;
-    std::string pattern;                    // unsupported: its name
-    PovPosition at;                         // unsupported: where it was written
+    std::string pattern;  // unsupported: its name
+    std::string uses;     // unsupported function: what in it glint does not compute yet
+    PovPosition at;       // unsupported: where it was written
     PovVector color = PovVector::of(0, 5);  // POV-Ray's default pigment is black
     PatternSpec spec;                       // pattern: glint's own
     PovColorMap map;                        // pattern: its colours

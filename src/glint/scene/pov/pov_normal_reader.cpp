@@ -64,6 +64,9 @@ PovNormal PovItemReader::normal(const std::optional<PovNormal>& base) {
             }
             pattern_of = pattern(name);
             n.pattern.kind = NormalPatternKind::slope;
+            // A function glint cannot compute: the surface stays smooth.
+            if (pattern_of.kind == PovPigment::Kind::unsupported)
+                n.unsupported = name.text + " using " + pattern_of.uses;
         } else if (unread_normal_pattern(first.text)) {
             // A pattern glint does not tilt normals by yet: the surface stays smooth.
             const PovToken name = parser_.next();

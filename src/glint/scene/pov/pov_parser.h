@@ -52,6 +52,9 @@ public:
     // Reads the scene file's text (already in `files` as file 0).
     PovParser(PovFiles& files, PovLanguageOptions options);
     const PovLanguageOptions& options() const { return options_; }
+    // The render's built-in floats (image_width, image_height, clock, frame_number, ...);
+    // nothing for other names.
+    std::optional<double> render_float(std::string_view name) const;
 
     // --- Tokens ---
     // The next token after directives and macro calls, which act as it is taken.

@@ -5,6 +5,7 @@
 #include <optional>
 #include <string_view>
 
+#include "glint/geometry/expression.h"
 #include "glint/scene/pov/pov_item_reader.h"
 #include "glint/shading/noise.h"
 
@@ -21,19 +22,31 @@ std::optional<PatternKind> pattern_kind(std::string_view w) {
         PatternKind kind;
     };
     static constexpr Named kKinds[] = {
-        {"agate", PatternKind::agate},       {"bozo", PatternKind::bozo},
-        {"boxed", PatternKind::boxed},       {"brick", PatternKind::brick},
-        {"checker", PatternKind::checker},   {"hexagon", PatternKind::hexagon},
-        {"crackle", PatternKind::crackle},   {"cylindrical", PatternKind::cylindrical},
-        {"gradient", PatternKind::gradient}, {"granite", PatternKind::granite},
-        {"leopard", PatternKind::leopard},   {"marble", PatternKind::marble},
-        {"onion", PatternKind::onion},       {"planar", PatternKind::planar},
-        {"radial", PatternKind::radial},     {"spherical", PatternKind::spherical},
+        {"agate", PatternKind::agate},
+        {"bozo", PatternKind::bozo},
+        {"boxed", PatternKind::boxed},
+        {"brick", PatternKind::brick},
+        {"checker", PatternKind::checker},
+        {"hexagon", PatternKind::hexagon},
+        {"crackle", PatternKind::crackle},
+        {"cylindrical", PatternKind::cylindrical},
+        {"function", PatternKind::function},
+        {"gradient", PatternKind::gradient},
+        {"granite", PatternKind::granite},
+        {"leopard", PatternKind::leopard},
+        {"marble", PatternKind::marble},
+        {"onion", PatternKind::onion},
+        {"planar", PatternKind::planar},
+        {"radial", PatternKind::radial},
+        {"spherical", PatternKind::spherical},
         {"spotted", PatternKind::bozo},  // the same function in POV-Ray
         {"bumps", PatternKind::bozo},    // as a pigment, too
-        {"wood", PatternKind::wood},         {"mandel", PatternKind::mandel},
-        {"ripples", PatternKind::ripples},   {"waves", PatternKind::waves},
-        {"spiral1", PatternKind::spiral1},   {"spiral2", PatternKind::spiral2},
+        {"wood", PatternKind::wood},
+        {"mandel", PatternKind::mandel},
+        {"ripples", PatternKind::ripples},
+        {"waves", PatternKind::waves},
+        {"spiral1", PatternKind::spiral1},
+        {"spiral2", PatternKind::spiral2},
         {"wrinkles", PatternKind::wrinkles},
     };
     for (const Named& k : kKinds)
@@ -124,6 +137,26 @@ PovPigment PovItemReader::pattern(const PovToken& name) {
         const Vector3 d = to_vector(parser_.finite_vector("after gradient"));
         if (!(length(d) > 0)) throw parser_.error_at(at, "gradient direction must not be zero");
         p.spec.direction = normalize(d);
+    } else if (p.spec.kind == PatternKind::function) {
+        // function { f(x, y, z) } onto glint's expressions, as an isosurface's.
+        parser_.expect("{", "after function");
+        std::string uses;
+        const std::string text =
+            call_text(PovFunction{3, function_body({}, uses), {}, {}}, {"x", "y", "z"});
+        parser_.expect("}", "to close the function");
+        if (!uses.empty()) {
+            PovPigment unread;
+            unread.kind = PovPigment::Kind::unsupported;
+            unread.pattern = name.text;
+            unread.uses = uses;
+            unread.at = name.at;
+            return unread;
+        }
+        auto compiled = compile_expression(text, {});
+        if (auto* error = std::get_if<ExpressionError>(&compiled))
+            throw parser_.error_at(name, "function pattern: " + error->message);
+        p.spec.function =
+            std::make_shared<const Expression>(std::move(std::get<Expression>(compiled)));
     } else if (p.spec.kind == PatternKind::mandel) {
         p.spec.iterations = parser_.whole_number("as mandel's iterations", 1, 1 << 16);
     } else if (p.spec.kind == PatternKind::spiral1 || p.spec.kind == PatternKind::spiral2) {

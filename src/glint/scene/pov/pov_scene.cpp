@@ -492,7 +492,11 @@ private:
     void refuse_unread(const PovPigment& pigment) const {
         if (const PovPigment* unread = unread_pigment(pigment))
             throw files_.error_at(
-                unread->at, "pigment pattern " + quote(unread->pattern) + " is not supported yet",
+                unread->at,
+                unread->uses.empty()
+                    ? "pigment pattern " + quote(unread->pattern) + " is not supported yet"
+                    : "the pigment's function uses " + unread->uses +
+                          ", which glint does not compute yet",
                 {"docs/povray.md lists what glint reads"});
     }
 
