@@ -1,6 +1,7 @@
-// Coloured glass that fades inside, seen by every integrator: a glowing wall behind a slab whose
-// surfaces filter by its colour (tint) and whose inside fades by Beer-Lambert's law. Each
-// integrator follows the clear refraction alike, so each must see the same worked colour.
+// Coloured glass that fades inside, and a coloured mirror, seen by every integrator: a glowing
+// wall behind a slab whose surfaces filter by its colour (tint) and whose inside fades by
+// Beer-Lambert's law, and one reflected in a mirror whose reflection varies with the angle. Each
+// integrator follows clear refraction and mirrors alike, so each must see the same worked colour.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -43,6 +44,30 @@ TEST_P(TintedGlass, LetsThroughTheColourSquaredAndTheFade) {
     // slab's thickness: (exp(-0.5), 1, exp(-1)). The rays at the image's edge cross up to
     // 1 / cos(4.3 degrees) = 1.003 of it.
     const Color expected{std::exp(-0.5f), 0.25f, 0.0625f * std::exp(-1.0f)};
+    Color mean;
+    for (const Color& c : r.image.pixels) mean += c / float(r.image.pixels.size());
+    EXPECT_NEAR(mean.r, expected.r, 0.005f * expected.r);
+    EXPECT_NEAR(mean.g, expected.g, 0.005f * expected.g);
+    EXPECT_NEAR(mean.b, expected.b, 0.005f * expected.b);
+}
+
+// A coloured metallic mirror seen head on, reflecting a glowing wall behind the eye: kr is its
+// facing value 0.2 (not the grazing 0.5), in the reflection's colour (1, 0.5, 0.25) and, metallic,
+// the surface colour (1, 0.8, 0.6).
+TEST_P(TintedGlass, AMirrorHeadOnReflectsItsFacingValueInItsColours) {
+    Scene scene = glass_before_a_wall(GetParam());
+    Material mirror;
+    mirror.ka = mirror.kd = mirror.ks = 0;
+    mirror.color = Color{1, 0.8f, 0.6f};
+    mirror.reflect = 0.5f;
+    mirror.reflect_angular = AngularReflection{0.2f, 1, false};
+    mirror.reflect_color = {1, 0.5f, 0.25f};
+    mirror.reflect_metallic = 1;
+    scene.materials[0] = mirror;
+    scene.objects[0] = {Plane{{0, 0, 0}, {0, 0, -1}}, 0};
+    scene.objects[1] = {Disk{{0, 0, -10}, {0, 0, 1}, 20}, 1};
+    const RenderResult r = render(World(scene), {});
+    const Color expected{0.2f, 0.2f * 0.5f * 0.8f, 0.2f * 0.25f * 0.6f};
     Color mean;
     for (const Color& c : r.image.pixels) mean += c / float(r.image.pixels.size());
     EXPECT_NEAR(mean.r, expected.r, 0.005f * expected.r);

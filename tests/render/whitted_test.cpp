@@ -204,6 +204,21 @@ TEST(Whitted, MirrorAddsKrTimesTheReflectedColour) {
     EXPECT_EQ(stats, (counts(1, 1, 0, 1, 0)));
 }
 
+TEST(Whitted, AReflectionVaryingWithTheAngleTakesItsFacingValueHeadOnAndItsColour) {
+    // The eye ray meets the mirror head on: kr is the facing 0.2 (not the grazing 0.5), each
+    // channel times the reflection's colour (1, 0.5, 0.25).
+    Scene scene = base_scene();
+    Material& m = scene.materials[0];
+    m.ka = 0.2f, m.kd = 0, m.reflect = 0.5f;
+    m.reflect_angular = AngularReflection{0.2f, 1, false};
+    m.reflect_color = {1, 0.5f, 0.25f};
+    scene.objects.push_back({Plane{{0, 0, 0}, {0, 0, -1}}, 0});
+    const World world(scene);
+    RayStats stats;
+    const Color c = WhittedIntegrator(world).trace_eye_ray(kEyeRay, stats);
+    expect_near(c, Color::gray(0.1f) + 0.2f * Color{1, 0.5f, 0.25f} * Color{0.2f, 0.4f, 0.6f});
+}
+
 // Two parallel mirrors facing each other, the eye between them: the ray bounces until cut.
 Scene hall_of_mirrors(float reflect, int max_depth, float min_weight) {
     Scene scene = base_scene();

@@ -138,6 +138,27 @@ TEST(Bsdf, TheTransmitFilterColoursWhatRefractsAndNothingElse) {
     EXPECT_NEAR(tinted.b, 0.25f * white.b, 1e-6f * white.b);
 }
 
+TEST(Bsdf, TheReflectFilterColoursItsOwnReflectionNotWhatTotalReflectionMovesToIt) {
+    BsdfInputs in = inputs();
+    in.reflect = 0.4f;
+    in.reflect_filter = {1, 0.5f, 0.25f};
+    const auto s = Bsdf(in).sample(0.5f, {0.5f, 0.5f});
+    ASSERT_TRUE(s && !s->transmitted && s->delta);
+    EXPECT_NEAR(s->weight.g / s->weight.r, 0.5f, 1e-6f);
+    EXPECT_NEAR(Bsdf(in).albedo().b, 0.4f * 0.25f, 1e-6f);
+    // Inside glass of index 2, 40 degrees is past the critical angle (30): all of kt 0.4
+    // reflects too, untinted: 0.4 (1, 0.5, 0.25) + 0.4.
+    in.transmit = 0.4f;
+    in.n1 = 2;
+    in.n2 = 1;
+    const Bsdf inside(in);
+    EXPECT_EQ(inside.lobe_probability(BsdfLobe::transmit), 0);
+    const Color albedo = inside.albedo();
+    EXPECT_NEAR(albedo.r, 0.8f, 1e-6f);
+    EXPECT_NEAR(albedo.g, 0.6f, 1e-6f);
+    EXPECT_NEAR(albedo.b, 0.5f, 1e-6f);
+}
+
 TEST(Bsdf, FresnelSplitsTransmissionAndTotalInternalReflectionReflectsIt) {
     BsdfInputs in = inputs();
     in.transmit = 1;

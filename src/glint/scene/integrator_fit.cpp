@@ -75,9 +75,11 @@ void check_beam_fits(const Scene& scene) {
         const Material& m = scene.materials[i];
         const char* varying = m.fresnel                   ? "has fresnel: true"
                               : m.maps && m.maps->reflect ? "has a textured reflect"
-                              : m.tint > 0                ? "has a tint"
-                              : m.fade.fades()            ? "has a fade"
-                                                          : nullptr;
+                              : m.reflect_angular || m.reflect_metallic > 0
+                                  ? "has a reflect that varies with the angle"
+                              : m.tint > 0     ? "has a tint"
+                              : m.fade.fades() ? "has a fade"
+                                               : nullptr;
         if (!varying) continue;
         const SourceLocation where = place_of(scene, scene.sources.materials, i);
         throw SceneError(where,

@@ -34,6 +34,10 @@ Bsdf::Bsdf(const BsdfInputs& in, TransportMode mode) : in_(in), mode_(mode) {
         }
         if (mode == TransportMode::radiance) compression_ = eta * eta;
     }
+    if (in.reflect_filter != Color{1, 1, 1} && reflect_ > 0) {
+        const float own = in.reflect * scale;
+        reflect_color_ = (own * in.reflect_filter + Color::gray(reflect_ - own)) / reflect_;
+    }
     reflect_delta_ = in.roughness < kMirrorRoughness;
     if (!reflect_delta_) reflect_exponent_ = phong_exponent_of_roughness(in.roughness);
     transmit_delta_ = in.transmit_roughness < kMirrorRoughness;
@@ -53,7 +57,8 @@ bool Bsdf::has_smooth_part() const {
 }
 
 Color Bsdf::albedo() const {
-    return diffuse_ + Color::gray(highlight_ + reflect_) + transmit_ * in_.transmit_filter;
+    return diffuse_ + Color::gray(highlight_) + reflect_ * reflect_color_ +
+           transmit_ * in_.transmit_filter;
 }
 
 Color Bsdf::diffuse_f(Vector3 wi) const {
@@ -95,7 +100,8 @@ float Bsdf::adjoint_factor(Vector3 wi) const {
 Color Bsdf::eval(Vector3 wi) const {
     if (reflects(wi)) {
         Color f = diffuse_f(wi) + Color::gray(highlight_f(wi));
-        if (!reflect_delta_) f += Color::gray(glossy_f(wi, mirror_, reflect_exponent_, reflect_));
+        if (!reflect_delta_)
+            f += reflect_color_ * glossy_f(wi, mirror_, reflect_exponent_, reflect_);
         return f * adjoint_factor(wi);
     }
     if (transmit_delta_) return {};
@@ -161,7 +167,7 @@ std::optional<BsdfSample> Bsdf::sample(float u_lobe, Point2 u) const {
         s.pdf = pick_[l];
         const float w = s.transmitted ? transmit_ * compression_ : reflect_;
         s.weight = Color::gray(w / pick_[l] * adjoint_factor(s.wi));
-        if (s.transmitted) s.weight *= in_.transmit_filter;
+        s.weight *= s.transmitted ? in_.transmit_filter : reflect_color_;
         return s;
     }
     s.f = eval(s.wi);

@@ -4,7 +4,7 @@
 //   diffuse    kd C / pi                                  (Lambert)
 //   highlight  ks (n+2)/(2 pi) cos^n(alpha), alpha between wi and wo mirrored about N
 //              (the normalised Phong lobe of Lafortune and Willems 1994; it reflects <= ks)
-//   reflect    kr: a mirror, or with roughness r the glossy lobe of the distributed
+//   reflect    kr F_r: a mirror, or with roughness r the glossy lobe of the distributed
 //              integrator, (m+1)/(2 pi) cos^m(alpha) / |N.wi| with m = 2/r^2 - 2, whose
 //              samples each weigh kr as Cook's glossy rays do
 //   transmit   kt F_t: Snell's refracted direction, or the lobe of transmit_roughness around it,
@@ -41,6 +41,7 @@ struct BsdfInputs {
     Color color{1, 1, 1};  // C, the surface colour the diffuse part takes
     float ks = 0, shininess = 0;
     float reflect = 0, roughness = 0;
+    Color reflect_filter{1, 1, 1};  // the reflect part's own colour (a metallic reflection)
     float transmit = 0, transmit_roughness = 0;
     Color transmit_filter{1, 1, 1};  // the transmitted part's colour (coloured glass)
     float n1 = 1, n2 = 1;            // indices on wo's side and beyond (Snell's eta = n1 / n2)
@@ -90,9 +91,10 @@ private:
 
     BsdfInputs in_;
     TransportMode mode_;
-    Color diffuse_;      // kd C, scaled
-    float highlight_;    // ks, scaled
-    float reflect_;      // kr (with kt F, and all of kt on total internal reflection), scaled
+    Color diffuse_;    // kd C, scaled
+    float highlight_;  // ks, scaled
+    float reflect_;    // kr (with kt F, and all of kt on total internal reflection), scaled
+    Color reflect_color_{1, 1, 1};  // its colour: kr's own filtered, what kt moved to it not
     float transmit_;     // kt (1 - F with fresnel), scaled; 0 on total internal reflection
     Vector3 mirror_;     // wo mirrored about n
     Vector3 refracted_;  // Snell's direction of wo, when transmit_ > 0

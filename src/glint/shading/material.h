@@ -7,6 +7,7 @@
 #include <string>
 
 #include "glint/math/color.h"
+#include "glint/shading/angular_reflection.h"
 #include "glint/shading/interior_fade.h"
 #include "glint/shading/normal_pattern.h"
 #include "glint/shading/spectrum.h"
@@ -39,7 +40,16 @@ struct Material {
     float brilliance = 1;
     float metallic = 0;
     Highlight highlight = Highlight::blinn;
-    float reflect = 0;   // kr, weight of the mirror-reflected ray
+    float reflect = 0;  // kr, weight of the mirror-reflected ray (at grazing incidence)
+    // When kr varies with the angle of incidence: its value facing the viewer and how it runs
+    // to `reflect` (angular_reflection.h). None for most materials.
+    std::optional<AngularReflection> reflect_angular;
+    // The mirror reflection's colour: kr of each channel is reflect times it (gold reflects
+    // more red than blue). Channels in [0, 1].
+    Color reflect_color{1, 1, 1};
+    // How far the reflection takes the surface colour facing the viewer, 0 to 1; none at
+    // grazing incidence (POV-Ray's metallic reflection).
+    float reflect_metallic = 0;
     float transmit = 0;  // kt, weight of the refracted ray
     // How much of the transmitted light takes the surface colour C, as coloured glass filters
     // it: the refracted ray weighs kt ((1 - tint) + tint C). POV-Ray's filter.

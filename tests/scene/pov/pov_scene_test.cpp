@@ -1113,6 +1113,36 @@ TEST(PovScene, FilterIsTheTintAndTheInteriorsFadeIsGlintsFade) {
               std::string::npos);
 }
 
+// reflection { min max falloff fresnel metallic } and a reflection's colour: kr from min facing
+// the viewer to max at grazing incidence, through the falloff or Fresnel's reflectance (from 0
+// with one value), tinted by metallic; a coloured reflection is its greatest channel in that
+// colour.
+TEST(PovScene, ReflectionsVaryWithTheAngleAndHaveAColour) {
+    const Scene s = parse(R"(
+        sphere { 0, 1 finish { reflection <0.8, 0.4, 0.2> } }
+        sphere { 0, 1 finish { reflection { 0.1, 0.6 falloff 2 metallic 0.5 } } }
+        sphere { 0, 1 finish { reflection { 0.7 fresnel } } interior { ior 1.5 } }
+        sphere { 0, 1 finish { reflection { 0.3 } } })");
+    ASSERT_EQ(s.materials.size(), 4u);
+    const Material& coloured = s.materials[s.objects[0].material];
+    EXPECT_FLOAT_EQ(coloured.reflect, 0.8f);
+    EXPECT_EQ(coloured.reflect_color, (Color{1, 0.5f, 0.25f}));
+    EXPECT_FALSE(coloured.reflect_angular);
+    const Material& falling = s.materials[s.objects[1].material];
+    EXPECT_FLOAT_EQ(falling.reflect, 0.6f);
+    ASSERT_TRUE(falling.reflect_angular);
+    EXPECT_FLOAT_EQ(falling.reflect_angular->facing, 0.1f);
+    EXPECT_FLOAT_EQ(falling.reflect_angular->falloff, 2);
+    EXPECT_FALSE(falling.reflect_angular->fresnel);
+    EXPECT_FLOAT_EQ(falling.reflect_metallic, 0.5f);
+    const Material& glass = s.materials[s.objects[2].material];
+    ASSERT_TRUE(glass.reflect_angular);
+    EXPECT_EQ(glass.reflect_angular->facing, 0);
+    EXPECT_TRUE(glass.reflect_angular->fresnel);
+    EXPECT_FLOAT_EQ(glass.reflect, 0.7f);
+    EXPECT_FALSE(s.materials[s.objects[3].material].reflect_angular);  // min = max
+}
+
 TEST(PovScene, MaterialsGiveTextureAndInterior) {
     const Scene s = parse(R"(
         #declare Glass = material { texture { pigment { rgbf <1, 0, 0, 0.5> } } interior { ior 1.5 } }

@@ -180,7 +180,7 @@ void RayTreeRecorder::branches(const SurfaceContext& c, const Branches& b, const
         return weight * k >= min_weight ? StopReason::none : StopReason::min_weight;
     };
     if (b.kr > 0)
-        n.branches.push_back({RayKind::reflected, b.kr, Color::gray(b.kr), {}, cut(b.kr)});
+        n.branches.push_back({RayKind::reflected, b.kr, b.kr * b.reflect_filter, {}, cut(b.kr)});
     if (c.material->transmit <= 0) return;
     const SnellIndices indices = snell_indices(c, media, wavelength);
     n.transmits = true;

@@ -192,8 +192,9 @@ Color ConeIntegrator::shade(const RayCone& cone, const Ray& ray, const Hit& hit,
         const Vector3 d = normalize(reflect(ray.direction, c.n));
         std::optional<RayDifferential> bent;
         if (at.bends_known) bent = reflected_pencil(ray, pencil, at, c.n, side);
-        branches += b.kr * trace(leaving(d, bent, c.roughness), spawn_from(world_, c, ray, d),
-                                 hit.primitive, depth + 1, weight * b.kr, stats, media);
+        branches += b.kr * b.reflect_filter *
+                    trace(leaving(d, bent, c.roughness), spawn_from(world_, c, ray, d),
+                          hit.primitive, depth + 1, weight * b.kr, stats, media);
     }
     if (b.kt > 0 && weight * b.kt >= settings.min_weight) {
         stats.count(RayKind::refracted);

@@ -114,11 +114,13 @@ Color DistributedIntegrator::shade(const Ray& ray, int depth, float weight, Samp
             stats.count(RayKind::reflected);
             const Ray r = spawn_from(world_, c, ray, d);
             if constexpr (kRecord)
-                recorder_->branch(RayKind::reflected, Color::gray(b.kr), lobe_draw(c.roughness, u));
+                recorder_->branch(RayKind::reflected, b.kr * b.reflect_filter,
+                                  lobe_draw(c.roughness, u));
             const auto r_pencil = c.roughness < kMirrorRoughness ? mirror_pencil(c, ray, pencil)
                                                                  : std::optional<RayDifferential>{};
-            color += b.kr * trace_ray<kRecord>(r, depth + 1, weight * b.kr, stream, stats, media,
-                                               or_null(r_pencil));
+            color += b.kr * b.reflect_filter *
+                     trace_ray<kRecord>(r, depth + 1, weight * b.kr, stream, stats, media,
+                                        or_null(r_pencil));
         } else if constexpr (kRecord) {
             recorder_->blocked(RayKind::reflected, u);
         }

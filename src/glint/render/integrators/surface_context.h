@@ -28,8 +28,12 @@ struct SurfaceContext {
     Normal3 ng;           // geometric normal on the ray's side: where secondary rays start
     Normal3 n;            // shading normal on the ray's side: what the formulas use
     Vector3 to_viewer;    // -direction of the ray, V
-    // The material's reflect, roughness and transmit_roughness at the point (maps evaluated).
+    // The material's reflect, roughness and transmit_roughness at the point (maps evaluated;
+    // reflect at the ray's angle when it varies with it).
     float reflect, roughness, transmit_roughness;
+    // What the mirror-reflected light is multiplied by besides reflect: the material's
+    // reflect_color, and a metallic reflection's colour.
+    Color reflect_color{1, 1, 1};
     // The ray's pencil where it meets the surface, when the ray carries one (pencil.h).
     std::optional<PencilAtSurface> pencil;
 };
@@ -58,6 +62,7 @@ inline SurfaceContext surface_context(const World& world, const Ray& ray, const 
         c.ambient_color = c.color;
     }
     c.reflect = m.reflect;
+    c.reflect_color = m.reflect_color;
     c.roughness = m.roughness;
     c.transmit_roughness = m.transmit_roughness;
     if (m.maps) [[unlikely]] {
@@ -75,6 +80,16 @@ inline SurfaceContext surface_context(const World& world, const Ray& ray, const 
     c.ng = c.entering ? c.sp.normal : -c.sp.normal;
     c.n = c.entering ? c.sp.shading_normal : -c.sp.shading_normal;
     c.to_viewer = -ray.direction;
+    if (m.reflect_angular || m.reflect_metallic > 0) [[unlikely]] {
+        // By the angle to the shading normal; Fresnel's by the object's own index against
+        // vacuum's, whichever objects it lies in.
+        const float cos_theta = dot(c.n, c.to_viewer);
+        if (m.reflect_angular)
+            c.reflect = reflect_at(*m.reflect_angular, c.reflect, cos_theta,
+                                   c.entering ? 1 / m.ior : m.ior);
+        if (m.reflect_metallic > 0)
+            c.reflect_color *= metallic_reflection(m.reflect_metallic, c.color, cos_theta);
+    }
     return c;
 }
 
@@ -119,9 +134,12 @@ inline float ior_at(const Material& m, float wavelength) {
 struct Branches {
     float kr = 0, kt = 0;
     Color filter{1, 1, 1};  // the refracted ray's colour besides kt (transmit_filter)
-    Vector3 refracted;      // unit; when kt > 0
-    bool entering;          // the refracted ray enters the object (else it leaves it)
-    float eta = 1;          // n1 / n2 of the refraction, when kt > 0
+    // The reflected ray's colour besides kr: the surface's own reflection's colour
+    // (reflect_color), not that of the light moved to it by Fresnel or total reflection.
+    Color reflect_filter{1, 1, 1};
+    Vector3 refracted;  // unit; when kt > 0
+    bool entering;      // the refracted ray enters the object (else it leaves it)
+    float eta = 1;      // n1 / n2 of the refraction, when kt > 0
 };
 
 // What the light refracted at c is multiplied by besides kt: the surface colour's share
@@ -147,7 +165,7 @@ inline SnellIndices snell_indices(const SurfaceContext& c, const MediumStack& me
 inline Branches branches_at(const SurfaceContext& c, Vector3 direction, const MediumStack& media,
                             float wavelength = 0) {
     const Material& m = *c.material;
-    Branches b{c.reflect, m.transmit, {1, 1, 1}, {}, c.entering};
+    Branches b{c.reflect, m.transmit, {1, 1, 1}, {1, 1, 1}, {}, c.entering};
     if (b.kt > 0) {
         const auto [n1, n2] = snell_indices(c, media, wavelength);
         if (const auto t = refract(direction, c.n, n1 / n2)) {
@@ -165,6 +183,8 @@ inline Branches branches_at(const SurfaceContext& c, Vector3 direction, const Me
             b.kt = 0;
         }
     }
+    if (c.reflect_color != Color{1, 1, 1} && b.kr > 0) [[unlikely]]
+        b.reflect_filter = (c.reflect * c.reflect_color + Color::gray(b.kr - c.reflect)) / b.kr;
     return b;
 }
 
@@ -188,6 +208,7 @@ inline BsdfInputs bsdf_inputs(const SurfaceContext& c, SnellIndices eta) {
     in.ks = m.ks;
     in.shininess = m.shininess;
     in.reflect = c.reflect;
+    in.reflect_filter = c.reflect_color;
     in.roughness = c.roughness;
     in.transmit = m.transmit;
     in.transmit_filter = transmit_filter(c);

@@ -84,9 +84,10 @@ Color WhittedIntegrator::shade(const Ray& ray, int depth, float weight, RayStats
     if (b.kr > 0 && weight * b.kr >= settings.min_weight) {
         stats.count(RayKind::reflected);
         const Ray r = spawn_from(world_, c, ray, normalize(reflect(ray.direction, c.n)));
-        if constexpr (kRecord) recorder_->branch(RayKind::reflected, Color::gray(b.kr));
-        color += b.kr * trace_ray<kRecord>(r, depth + 1, weight * b.kr, stats, media,
-                                           or_null(mirror_pencil(c, ray, pencil)));
+        if constexpr (kRecord) recorder_->branch(RayKind::reflected, b.kr * b.reflect_filter);
+        color += b.kr * b.reflect_filter *
+                 trace_ray<kRecord>(r, depth + 1, weight * b.kr, stats, media,
+                                    or_null(mirror_pencil(c, ray, pencil)));
     }
     if (b.kt > 0 && weight * b.kt >= settings.min_weight) {
         stats.count(RayKind::refracted);

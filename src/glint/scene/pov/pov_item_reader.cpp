@@ -763,6 +763,16 @@ PovFinish PovItemReader::finish(const PovFinish& base) {
         const PovVector v = parser_.color_expression(what);
         return std::max({v[0], v[1], v[2]});
     };
+    // A reflection's colour: its greatest channel as the amount, the others relative to it.
+    const auto reflection_amount = [&](std::string_view what) {
+        const PovVector v = parser_.color_expression(what);
+        const double most = std::max({v[0], v[1], v[2]});
+        f.reflection_color =
+            most > 0 ? Color{float(std::max(v[0], 0.0) / most), float(std::max(v[1], 0.0) / most),
+                             float(std::max(v[2], 0.0) / most)}
+                     : Color{1, 1, 1};
+        return most;
+    };
     for (;;) {
         const PovToken token = parser_.next();
         const std::string& w = token.text;
@@ -799,21 +809,40 @@ PovFinish PovItemReader::finish(const PovFinish& base) {
         else if (w == "reflection") {
             if (parser_.accept("{")) {
                 // reflection { [min,] max [fresnel] [metallic] [falloff F] [exponent E] }
-                f.reflection = amount("in reflection");
+                f.reflection = reflection_amount("in reflection");
+                f.reflection_min.reset();
+                f.fresnel = false;
+                f.reflection_falloff = 1;
+                f.reflection_metallic = 0;
                 // The maximum after the minimum, with or without a comma between.
-                if (parser_.accept(",") || number_next()) f.reflection = amount("in reflection");
+                bool two = false;
+                if (parser_.accept(",") || number_next()) {
+                    f.reflection_min = f.reflection;
+                    f.reflection = reflection_amount("in reflection");
+                    two = true;
+                }
                 for (PovToken r = parser_.next(); !r.is_symbol("}"); r = parser_.next()) {
-                    if (r.is_word("fresnel"))
+                    if (r.is_word("fresnel")) {
                         f.fresnel = optional_amount() != 0;
-                    else if (r.is_word("metallic"))
-                        optional_amount();  // tints the reflection: glint's is not tinted
-                    else if (r.is_word("falloff") || r.is_word("exponent"))
+                        // One value with fresnel is the maximum, from 0 facing the viewer.
+                        if (f.fresnel && !two) f.reflection_min = 0;
+                    } else if (r.is_word("metallic")) {
+                        f.reflection_metallic = std::clamp(optional_amount(), 0.0, 1.0);
+                    } else if (r.is_word("falloff")) {
+                        const PovToken at = parser_.peek();
+                        f.reflection_falloff = parser_.finite_float("after falloff");
+                        if (!(f.reflection_falloff > 0))
+                            throw parser_.error_at(at, "reflection's falloff must be > 0");
+                    } else if (r.is_word("exponent")) {
                         parser_.finite_float("in reflection");
-                    else
+                    } else {
                         throw unsupported(r, "in reflection { }");
+                    }
                 }
             } else {
-                f.reflection = amount("after reflection");
+                f.reflection = reflection_amount("after reflection");
+                f.reflection_min.reset();
+                f.fresnel = false;
             }
         } else {
             throw unsupported(token, "in a finish");

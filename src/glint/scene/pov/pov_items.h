@@ -28,10 +28,16 @@ struct PovFinish {
     double brilliance = 1;
     double phong = 0, phong_size = 40;
     double specular = 0, roughness = 0.05;
-    double reflection = 0;
-    double emission = 0;   // the pigment's colour given off, unlit
-    bool fresnel = false;  // reflection { ... fresnel }
-    double metallic = 0;   // the highlight's tint by the pigment
+    double reflection = 0;  // the maximum, at grazing incidence: its colour's greatest channel
+    Color reflection_color{1, 1, 1};  // the colour's channels over the greatest
+    // reflection { min max falloff F fresnel metallic M }: the minimum, facing the viewer
+    // (the maximum unless given; 0 with fresnel and one value).
+    std::optional<double> reflection_min;
+    double reflection_falloff = 1;
+    bool fresnel = false;
+    double reflection_metallic = 0;
+    double emission = 0;  // the pigment's colour given off, unlit
+    double metallic = 0;  // the highlight's tint by the pigment
 };
 
 // One entry of a color_map: the colour (r, g, b, filter, transmit) from the value `at` on.

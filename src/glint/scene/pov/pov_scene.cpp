@@ -561,6 +561,11 @@ private:
         m.brilliance = float(std::max(f.brilliance, 0.0));
         m.metallic = float(std::clamp(f.metallic, 0.0, 1.0));
         m.reflect = float(std::clamp(f.reflection, 0.0, 1.0));
+        if (f.reflection_min && (*f.reflection_min != f.reflection || f.fresnel))
+            m.reflect_angular = AngularReflection{float(std::clamp(*f.reflection_min, 0.0, 1.0)),
+                                                  float(f.reflection_falloff), f.fresnel};
+        m.reflect_metallic = float(f.reflection_metallic);
+        m.reflect_color = f.reflection_color;
         if (f.emission > 0 && p.kind == PovPigment::Kind::color)
             m.emission = rgb(p.color) * float(f.emission);
         if (layers.size() == 1) {

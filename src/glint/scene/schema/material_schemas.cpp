@@ -60,6 +60,26 @@ std::vector<EntitySchema> material_schemas() {
               "`blinn`, `phong`"},
              {"reflect", "number", "0", "kr, weight of the mirror-reflected ray", "[0, 1]",
               kUnitInterval},
+             {"reflect_color", "color", "1 (white)",
+              "the reflection's colour: each channel's kr is `reflect` times it (gold reflects "
+              "more "
+              "red than blue)",
+              "channels in [0, 1]"},
+             {"reflect_facing", "number", "`reflect` (0 with `reflect_fresnel`)",
+              "kr where the viewer looks along the normal; `reflect` is then kr at grazing "
+              "incidence, and kr runs between them with the angle ([reflection that varies with "
+              "the angle](#reflection-that-varies-with-the-angle))",
+              "[0, 1]", kUnitInterval},
+             {"reflect_falloff", "number", "1",
+              "kr = facing + (reflect − facing) (1 − cos θ)^falloff", "> 0", kPositive},
+             {"reflect_fresnel", "bool", "false",
+              "kr runs from `reflect_facing` to `reflect` by Fresnel's reflectance of a dielectric "
+              "of the object's `ior` instead",
+              ""},
+             {"reflect_metallic", "number", "0",
+              "how far the reflection takes the surface colour facing the viewer (none at grazing "
+              "incidence), as metal's does; POV-Ray's metallic reflection",
+              "[0, 1]", kUnitInterval},
              {"transmit", "number", "0", "kt, weight of the refracted ray", "[0, 1]",
               kUnitInterval},
              {"tint", "number", "0",

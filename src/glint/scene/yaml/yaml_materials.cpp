@@ -270,6 +270,24 @@ Material read_material(const YamlSource& source, const ReadSandbox& sandbox, con
     m.highlight = highlight == "phong" ? Highlight::phong : Highlight::blinn;
     MaterialMaps maps;
     maps.reflect = read_scalar_map(map, "reflect", m.reflect);
+    const bool fresnel_reflection = map.boolean("reflect_fresnel", false);
+    if (map.has("reflect_facing") || fresnel_reflection) {
+        // Fresnel's reflectance from 0 unless told, as POV-Ray's.
+        AngularReflection a;
+        a.facing = map.number_or("reflect_facing", fresnel_reflection ? 0.0f : m.reflect);
+        a.falloff = map.number_or("reflect_falloff", a.falloff);
+        a.fresnel = fresnel_reflection;
+        m.reflect_angular = a;
+    } else if (map.has("reflect_falloff")) {
+        throw source.error_at(map.require("reflect_falloff").key_node,
+                              "reflect_falloff needs reflect_facing: kr runs from it to reflect");
+    }
+    m.reflect_metallic = map.number_or("reflect_metallic", m.reflect_metallic);
+    m.reflect_color = map.color("reflect_color", m.reflect_color);
+    for (const float c : {m.reflect_color.r, m.reflect_color.g, m.reflect_color.b})
+        if (!(c <= 1))
+            throw source.error_at(map.require("reflect_color").value,
+                                  "reflect_color's channels must be in [0, 1]");
     m.transmit = map.number_or("transmit", m.transmit);
     m.tint = map.number_or("tint", m.tint);
     m.fade.distance = map.number_or("fade_distance", m.fade.distance);
