@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <memory>
 
 namespace glint {
 namespace {
@@ -52,6 +53,28 @@ TEST(Texture, UvCheckerUsesTextureCoordinates) {
     EXPECT_EQ(evaluate(checker, at({9, 9, 9}, {0.1f, 0.1f})), kWhite);
     EXPECT_EQ(evaluate(checker, at({9, 9, 9}, {0.3f, 0.1f})), kBlack);
     EXPECT_EQ(evaluate(checker, at({9, 9, 9}, {0.3f, 0.3f})), kWhite);
+}
+
+// A pattern laid over the uv (POV-Ray's uv_mapping) reads (u, v, 0), not the point, and so
+// does a pigment map laid over it, entries and all; both ask for the uv.
+TEST(Texture, UvMappedPatternsAndMapsReadTheSurfacesUv) {
+    auto ramp = std::make_shared<PatternTexture>();
+    ramp->spec.kind = PatternKind::gradient;
+    ramp->colors = {{0, kBlack}, {1, kWhite}};
+    ramp->uv_mapping = true;
+    const Color c = evaluate(Texture{ramp}, at({9, 9, 9}, {0.25f, 0.7f}));
+    EXPECT_FLOAT_EQ(c.r, 0.25f);
+    EXPECT_EQ(uv_needed(Texture{ramp}), Uv::compute);
+    auto map = std::make_shared<PigmentMap>();
+    map->spec.kind = PatternKind::gradient;
+    map->spec.direction = {0, 1, 0};
+    map->uv_mapping = true;
+    auto in_space = std::make_shared<PatternTexture>(*ramp);
+    in_space->uv_mapping = false;  // an entry sees the map's (u, v, 0)
+    map->entries = {{0, Texture{kBlack}}, {1, Texture{in_space}}};
+    // v = 0.5 picks half of the entry, whose gradient along x reads u = 0.25.
+    EXPECT_FLOAT_EQ(evaluate(Texture{map}, at({9, 9, 9}, {0.25f, 0.5f})).r, 0.125f);
+    EXPECT_EQ(uv_needed(Texture{map}), Uv::compute);
 }
 
 TEST(Texture, OnlyUvCheckersAndImagesNeedUv) {

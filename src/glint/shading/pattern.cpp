@@ -269,6 +269,8 @@ double checker_cell(double v) {
 float pattern_value(const PatternSpec& spec, Point3 p) {
     if (!is_finite(p)) return 0;
     p = turbulent(spec, p);
+    if (spec.warped) [[unlikely]]
+        p = spec.after_turbulence(p);
     const float raw = raw_value(spec, p);
     if (is_list_pattern(spec.kind)) return raw;
     // In double, so that a far point keeps its fraction. Values in [0, 1] stay as they are (1

@@ -8,6 +8,7 @@
 #include <memory>
 #include <span>
 
+#include "glint/math/transform.h"
 #include "glint/math/vector.h"
 
 namespace glint {
@@ -62,6 +63,11 @@ struct PatternSpec {
     Vector3 turbulence{0, 0, 0};
     int octaves = 6;  // in [1, kMaxOctaves]
     float omega = 0.5f, lambda = 2;
+    // Where the turbulence is a warp written after some of the pattern's transforms (POV-Ray's
+    // warp { turbulence }): the point turbulence moved is taken on through the inverse of those
+    // transforms into the pattern's own space.
+    bool warped = false;
+    Transform after_turbulence;
     // brick: a brick's size (x along the wall, y a course's height, z across it) and the
     // mortar's width, both with their mortar; POV-Ray's defaults.
     Vector3 brick_size{8, 3, 4.5f};

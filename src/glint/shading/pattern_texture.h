@@ -43,7 +43,10 @@ Color color_at(const std::vector<ColorStop>& map, float t);
 struct PatternTexture {
     PatternSpec spec;
     std::vector<ColorStop> colors;  // sorted by `at`, at least one
-    Transform to_pattern;           // scene space to the pattern's
+    Transform to_pattern;           // scene space (or uv space) to the pattern's
+    // The pattern laid over the surface's uv, at (u, v, 0), instead of its point in space
+    // (POV-Ray's uv_mapping).
+    bool uv_mapping = false;
 };
 
 Color evaluate(const PatternTexture& texture, Point3 p);

@@ -26,6 +26,9 @@ bool odd_cell(float a, float b, float c, float size) {
     return (odd_index(a, size) ^ odd_index(b, size) ^ odd_index(c, size)) != 0;
 }
 
+// Where a pattern laid over the surface's uv lies: (u, v, 0).
+Point3 uv_point(const SurfacePoint& sp) { return {sp.uv.x, sp.uv.y, 0}; }
+
 struct Evaluate {
     const SurfacePoint& sp;
 
@@ -39,7 +42,7 @@ struct Evaluate {
     Color operator()(const ImageTexture& image) const { return sample(image, sp.uv, sp.footprint); }
     Color operator()(const NoiseTexture& noise) const { return glint::evaluate(noise, sp.p); }
     Color operator()(const PatternTexturePtr& pattern) const {
-        return glint::evaluate(*pattern, sp.p);
+        return glint::evaluate(*pattern, pattern->uv_mapping ? uv_point(sp) : sp.p);
     }
     Color operator()(const ProjectedImagePtr& image) const { return glint::evaluate(*image, sp.p); }
     Color operator()(const PigmentMapPtr& map) const { return glint::evaluate(*map, sp); }
@@ -50,7 +53,14 @@ struct Evaluate {
 
 }  // namespace
 
-Color evaluate(const PigmentMap& map, const SurfacePoint& sp) {
+Color evaluate(const PigmentMap& map, const SurfacePoint& at) {
+    // Laid over the uv, the map and its entries see the point (u, v, 0).
+    SurfacePoint on_uv;
+    if (map.uv_mapping) {
+        on_uv = at;
+        on_uv.p = uv_point(at);
+    }
+    const SurfacePoint& sp = map.uv_mapping ? on_uv : at;
     if (map.average) {
         Color sum{0, 0, 0};
         float weights = 0;
@@ -90,9 +100,13 @@ Uv uv_needed_inside(const Texture& texture) {
     if ((checker && checker->space == CheckerSpace::uv) ||
         std::holds_alternative<ImageTexture>(texture))
         return Uv::compute;
-    if (const auto* map = std::get_if<PigmentMapPtr>(&texture))
+    if (const auto* pattern = std::get_if<PatternTexturePtr>(&texture))
+        if ((*pattern)->uv_mapping) return Uv::compute;
+    if (const auto* map = std::get_if<PigmentMapPtr>(&texture)) {
+        if ((*map)->uv_mapping) return Uv::compute;
         for (const PigmentMap::Entry& e : (*map)->entries)
             if (uv_needed(e.texture) == Uv::compute) return Uv::compute;
+    }
     if (const auto* layered = std::get_if<LayeredTexturePtr>(&texture))
         for (const LayeredTexture::Layer& layer : (*layered)->layers)
             if (uv_needed(layer.color) == Uv::compute ||

@@ -52,7 +52,9 @@ struct PigmentMap {
     PatternSpec spec;
     std::vector<Entry> entries;  // sorted by `at`, at least one
     bool average = false;
-    Transform to_pattern;  // scene space to the pattern's
+    Transform to_pattern;  // scene space (or uv space) to the pattern's
+    // The map and its entries laid over the surface's uv, at (u, v, 0) (POV-Ray's uv_mapping).
+    bool uv_mapping = false;
 };
 
 Color evaluate(const PigmentMap& map, const SurfacePoint& sp);

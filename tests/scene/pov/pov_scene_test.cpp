@@ -637,6 +637,37 @@ TEST(PovScene, FunctionPatternsAreTheirFunctionsValue) {
               std::string::npos);
 }
 
+// warp { turbulence }: the pattern's turbulence, with the transforms written before it beyond
+// it (the point turbulence moved goes through them); uv_mapping, in the pigment or the texture:
+// the pattern over the surface's (u, v, 0), placed by the pigment's transforms only.
+TEST(PovScene, WarpTurbulenceAndUvMappedPatterns) {
+    const Scene s = parse(R"(
+        sphere { 0, 1 pigment { gradient x scale 2 warp { turbulence <0.5, 0, 0> octaves 3 omega 0.25 }
+                                translate x } }
+        sphere { 0, 1 pigment { uv_mapping gradient x scale 0.5 } translate y * 3 }
+        sphere { 0, 1 texture { uv_mapping pigment { checker pigment { rgb 1 } pigment { rgb 0 } } } })");
+    const PatternTexture& warped =
+        *std::get<PatternTexturePtr>(s.materials[s.objects[0].material].color);
+    EXPECT_TRUE(warped.spec.warped);
+    EXPECT_EQ(warped.spec.turbulence, (Vector3{0.5f, 0, 0}));
+    EXPECT_EQ(warped.spec.octaves, 3);
+    EXPECT_EQ(warped.spec.omega, 0.25f);
+    // Before the warp, scale 2: its inverse halves the turbulent point. After it, translate x.
+    EXPECT_EQ(warped.spec.after_turbulence(Point3{1, 0, 0}), (Point3{0.5f, 0, 0}));
+    EXPECT_EQ(warped.to_pattern(Point3{1, 0, 0}), (Point3{0, 0, 0}));
+    const PatternTexture& on_uv =
+        *std::get<PatternTexturePtr>(s.materials[s.objects[1].material].color);
+    EXPECT_TRUE(on_uv.uv_mapping);
+    // Through the pigment's transforms (scale 0.5, and the object's translate written after it),
+    // as POV-Ray moves them; not through where the object lies.
+    EXPECT_EQ(on_uv.to_pattern(Point3{0.5f, 0, 0}), (Point3{1, -6, 0}));
+    EXPECT_TRUE(std::get<PigmentMapPtr>(s.materials[s.objects[2].material].color)->uv_mapping);
+    EXPECT_EQ(uv_needed(s.materials[s.objects[2].material].color), Uv::compute);
+    EXPECT_NE(error_of("sphere { 0, 1 pigment { gradient x warp { repeat x } } }")
+                  .find("pigment pattern \"warp\" is not supported yet"),
+              std::string::npos);
+}
+
 // isosurface: the function less the threshold as glint's implicit surface, within its
 // container: intersected with it when closed, clipped by it (or bounded, a box) when open.
 // Functions are written out: built-ins, declared floats, declared functions with their own

@@ -107,8 +107,7 @@ double PovParser::finite_float(std::string_view what) {
     return value;
 }
 
-int PovParser::whole_number(std::string_view what, int min, int max) {
-    const PovToken at = peek();
+double PovParser::count(std::string_view what) {
     // A count is followed by the vectors it counts (`prism { 0, 1, 4 <-1, 0> ... }`): a '<'
     // after it starts them rather than comparing.
     struct Restore {
@@ -117,7 +116,12 @@ int PovParser::whole_number(std::string_view what, int min, int max) {
         ~Restore() { flag = was; }
     } restore{counting_, counting_};
     counting_ = true;
-    const double value = finite_float(what);
+    return finite_float(what);
+}
+
+int PovParser::whole_number(std::string_view what, int min, int max) {
+    const PovToken at = peek();
+    const double value = count(what);
     if (!(value >= min && value <= max) || value != std::floor(value))
         throw error_at(at, "the number " + std::string(what) + " must be a whole number from " +
                                std::to_string(min) + " to " + std::to_string(max) + ", got " +

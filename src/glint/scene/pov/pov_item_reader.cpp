@@ -704,10 +704,19 @@ PovTexture PovItemReader::texture(const PovTexture& base) {
         t = *d;
     }
     // What is written after a declared layered texture changes its top layer, as in POV-Ray.
+    bool uv_mapping = false;  // the texture's pigment laid over the surface's uv
     for (;;) {
         const PovToken token = parser_.next();
-        if (token.is_symbol("}")) return without_hidden(std::move(t));
-        if (token.is_word("pigment"))
+        if (token.is_symbol("}")) {
+            PovPigment& p = t.top().pigment;
+            if (uv_mapping &&
+                (p.kind == PovPigment::Kind::pattern || p.kind == PovPigment::Kind::image))
+                p.uv_mapping = true;
+            return without_hidden(std::move(t));
+        }
+        if (token.is_word("uv_mapping"))
+            uv_mapping = true;
+        else if (token.is_word("pigment"))
             t.top().pigment = pigment(t.top().pigment);
         else if (token.is_word("finish"))
             t.top().finish = finish(t.top().finish);

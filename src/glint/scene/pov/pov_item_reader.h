@@ -140,6 +140,9 @@ private:
     PovPigment pattern(const PovToken& name);
     // A pigment modifier of a pattern (color_map, turbulence, waves, ...); false for another word.
     bool pattern_modifier(const PovToken& token, PovPigment& p);
+    // warp { turbulence ... } after `warp`, onto the pattern's turbulence; false, the warp read
+    // past, for a warp glint does not read (another kind, or a second turbulence).
+    bool warp(const PovToken& keyword, PovPigment& p);
     void read_default(const PovToken& directive);
     // A warning, once a scene for each `what`, that it is read and left out, and what glint
     // does instead.

@@ -84,7 +84,10 @@ public:
     PovVector color_expression(std::string_view what);  // a 5-vector: r, g, b, filter, transmit
     // As above, and an error unless every component is finite: what a scene's items take.
     double finite_float(std::string_view what);
-    // A finite float that is a whole number in [min, max] (counts, levels).
+    // A finite float followed by the vectors it counts: a '<' after it starts them rather than
+    // comparing (`vertex_vectors { 3 <0, 0, 0> ...`), as in POV-Ray.
+    double count(std::string_view what);
+    // A finite float that is a whole number in [min, max] (counts, levels), read as count().
     int whole_number(std::string_view what, int min, int max);
     // <a, b, ...> of exactly `count` finite numbers (a matrix's twelve).
     std::vector<double> finite_list(std::string_view what, std::size_t count);

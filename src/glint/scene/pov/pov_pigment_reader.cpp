@@ -268,6 +268,35 @@ PovColorMap PovItemReader::pigment_map(const PovToken& keyword) {
     });
 }
 
+bool PovItemReader::warp(const PovToken& keyword, PovPigment& p) {
+    parser_.expect("{", "after warp");
+    const PovToken kind = parser_.next();
+    PatternSpec& s = p.spec;
+    // One turbulence a pattern: its own or a warp's.
+    if (!kind.is_word("turbulence") || s.warped || s.turbulence != Vector3{}) {
+        if (!kind.is_symbol("}")) parser_.skip_to_closing_brace(keyword);
+        return false;
+    }
+    s.turbulence = to_vector(parser_.finite_vector("after turbulence"));
+    s.octaves = 6, s.omega = 0.5f, s.lambda = 2;
+    for (PovToken t = parser_.next(); !t.is_symbol("}"); t = parser_.next()) {
+        if (t.is_word("octaves"))
+            s.octaves = parser_.whole_number("after octaves", 1, kMaxOctaves);
+        else if (t.is_word("omega") || t.is_word("lambda"))
+            (t.text == "omega" ? s.omega : s.lambda) =
+                float(parser_.finite_float("after " + t.text));
+        else
+            throw parser_.error_at(
+                t, "expected octaves, omega, lambda or '}' in warp { turbulence }, got " +
+                       describe(t));
+    }
+    // The transforms so far lie beyond the turbulence: the point it moves goes through them.
+    s.warped = true;
+    s.after_turbulence = p.transform.inverse();
+    p.transform = Transform{};
+    return true;
+}
+
 PovPigment PovItemReader::pigment(const PovPigment& base) {
     parser_.expect("{", "after pigment");
     return pigment_body(base, "}");
@@ -333,8 +362,10 @@ PovPigment PovItemReader::pigment_body(const PovPigment& base, std::string_view 
             continue;
         }
         if (token.kind == PovTokenKind::identifier && pattern_modifier(token, p)) continue;
-        // Another modifier (warp, pigment_map, ...): the pigment is one glint does not read
-        // yet, an error only where an object uses it.
+        if (token.is_word("warp") && p.kind == PovPigment::Kind::pattern && warp(token, p))
+            continue;
+        // Another modifier (another warp, ...): the pigment is one glint does not read yet, an
+        // error only where an object uses it.
         PovPigment unread;
         unread.kind = PovPigment::Kind::unsupported;
         unread.pattern = token.text;
@@ -345,15 +376,8 @@ PovPigment PovItemReader::pigment_body(const PovPigment& base, std::string_view 
     if (average && !std::any_of(p.map.stops.begin(), p.map.stops.end(),
                                 [](const PovColorStop& s) { return s.pigment != nullptr; }))
         throw parser_.error_at(*average, "average needs a pigment_map");
-    if (uv_mapping && p.kind == PovPigment::Kind::image) p.uv_mapping = true;
-    if (uv_mapping && p.kind == PovPigment::Kind::pattern) {
-        // A pattern on the surface's uv: not read yet, an error where an object uses it.
-        PovPigment unread;
-        unread.kind = PovPigment::Kind::unsupported;
-        unread.pattern = "uv_mapping";
-        unread.at = *uv_mapping;
-        return unread;
-    }
+    if (uv_mapping && (p.kind == PovPigment::Kind::image || p.kind == PovPigment::Kind::pattern))
+        p.uv_mapping = true;
     return p;
 }
 

@@ -518,7 +518,7 @@ private:
             refuse_unread(layer->pigment);
             if (!normal) normal = layer->normal;
             const PovPigment& p = layer->pigment;
-            placed = placed || p.kind == PovPigment::Kind::pattern ||
+            placed = placed || (p.kind == PovPigment::Kind::pattern && !p.uv_mapping) ||
                      (p.kind == PovPigment::Kind::image && !p.uv_mapping);
         }
         const bool tilted = normal && normal->unsupported.empty();
@@ -629,11 +629,17 @@ private:
             auto map = std::make_shared<PigmentMap>();
             map->spec = p.spec;
             map->average = p.average;
+            // Laid over the uv, the entries lie in uv space too.
+            const Transform entry_frame = p.uv_mapping ? p.transform : frame * p.transform;
             for (const PovColorStop& stop : p.map.stops)
-                map->entries.push_back(
-                    {float(stop.at), stop.pigment ? texture_of(*stop.pigment, frame * p.transform)
-                                                  : Texture{rgb(stop.color)}});
+                map->entries.push_back({float(stop.at), stop.pigment
+                                                            ? texture_of(*stop.pigment, entry_frame)
+                                                            : Texture{rgb(stop.color)}});
             map->to_pattern = (frame * p.transform).inverse();
+            if (p.uv_mapping) {  // in uv space, placed by its own transforms only
+                map->uv_mapping = true;
+                map->to_pattern = p.transform.inverse();
+            }
             return map;
         }
         if (p.kind == PovPigment::Kind::pattern) {
@@ -642,6 +648,10 @@ private:
             for (const PovColorStop& stop : p.map.stops)
                 pattern->colors.push_back({float(stop.at), rgb(stop.color)});
             pattern->to_pattern = (frame * p.transform).inverse();
+            if (p.uv_mapping) {  // in uv space, placed by its own transforms only
+                pattern->uv_mapping = true;
+                pattern->to_pattern = p.transform.inverse();
+            }
             return pattern;
         }
         if (p.kind == PovPigment::Kind::image && !p.uv_mapping) {
