@@ -101,6 +101,12 @@ TEST(PovExpressions, PrecedenceAndPromotion) {
     // POV-Ray widens the shorter vector with zeros.
     EXPECT_EQ(debug("#debug vstr(5, <1,2> + <1,2,3,4,5>, \",\", 0, 0)"),
               std::vector<std::string>{"2,4,3,4,5"});
+    // Strings compare by their characters, as POV-Ray compares them.
+    EXPECT_EQ(debug("#declare S = \"\";\n#debug str((S != \"\") + 2 * (\"ab\" = \"ab\") + "
+                    "4 * (\"b\" > \"a\") + 8 * (\"a\" >= \"b\"), 0, 0)"),
+              std::vector<std::string>{"6"});
+    EXPECT_NE(error_of("#if (\"a\" = 1) #end").find("expected a string after '='"),
+              std::string::npos);
 }
 
 TEST(PovExpressions, FunctionsGiveWhatPovRayPrints) {

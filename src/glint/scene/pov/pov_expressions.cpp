@@ -207,21 +207,30 @@ PovValue PovParser::comparison() {
         // `box { <0, 0, 0> <1, 1, 1> }`: after a vector, '<' starts the next value.
         if (s == "<" && (!std::holds_alternative<double>(left) || counting_)) return left;
         const std::string which = next().text;
-        const double a = float_of(left, at, "before '" + which + "'");
-        const double b = float_of(additive(), at, "after '" + which + "'");
+        // Two strings compare by their characters, as POV-Ray compares them; else two floats.
+        int order = 0;  // <0, 0, >0: left before, equal to or after right
+        if (std::holds_alternative<std::string>(left)) {
+            const std::string a = std::get<std::string>(left);
+            order = a.compare(string_of(additive(), at, "after '" + which + "'"));
+        } else {
+            const double a = float_of(left, at, "before '" + which + "'");
+            const double b = float_of(additive(), at, "after '" + which + "'");
+            // NaN compares unequal and unordered, as in C.
+            if (!(a == b)) order = a < b ? -1 : a > b ? 1 : 2;
+        }
         bool result = false;
         if (which == "<")
-            result = a < b;
+            result = order < 0;
         else if (which == "<=")
-            result = a <= b;
+            result = order <= 0;
         else if (which == "=")
-            result = a == b;
+            result = order == 0;
         else if (which == ">=")
-            result = a >= b;
+            result = order == 0 || order == 1;
         else if (which == ">")
-            result = a > b;
+            result = order == 1;
         else
-            result = a != b;
+            result = order != 0;
         left = double(result);
     }
 }
