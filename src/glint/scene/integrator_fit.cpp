@@ -77,6 +77,7 @@ void check_beam_fits(const Scene& scene) {
                               : m.maps && m.maps->reflect ? "has a textured reflect"
                               : m.reflect_angular || m.reflect_metallic > 0
                                   ? "has a reflect that varies with the angle"
+                              : m.reflect_color != Color{1, 1, 1} ? "has a reflect_color"
                               : m.tint > 0     ? "has a tint"
                               : m.fade.fades() ? "has a fade"
                                                : nullptr;
@@ -85,7 +86,7 @@ void check_beam_fits(const Scene& scene) {
         throw SceneError(where,
                          "material '" + m.name + "' " + varying +
                              ": the beam integrator weighs a polygon's reflected and refracted "
-                             "beams by one kr and kt across the whole polygon",
+                             "beams by one grey kr and kt across the whole polygon",
                          {"give it constant reflect and transmit, or render with the whitted "
                           "integrator"},
                          line_of(where));
