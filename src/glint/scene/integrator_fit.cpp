@@ -78,9 +78,9 @@ void check_beam_fits(const Scene& scene) {
                               : m.reflect_angular || m.reflect_metallic > 0
                                   ? "has a reflect that varies with the angle"
                               : m.reflect_color != Color{1, 1, 1} ? "has a reflect_color"
-                              : m.tint > 0     ? "has a tint"
-                              : m.fade.fades() ? "has a fade"
-                                               : nullptr;
+                              : m.tint > 0                        ? "has a tint"
+                              : m.fade.fades()                    ? "has a fade"
+                                                                  : nullptr;
         if (!varying) continue;
         const SourceLocation where = place_of(scene, scene.sources.materials, i);
         throw SceneError(where,
