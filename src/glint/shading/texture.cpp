@@ -53,14 +53,10 @@ struct Evaluate {
 
 }  // namespace
 
-Color evaluate(const PigmentMap& map, const SurfacePoint& at) {
-    // Laid over the uv, the map and its entries see the point (u, v, 0).
-    SurfacePoint on_uv;
-    if (map.uv_mapping) {
-        on_uv = at;
-        on_uv.p = uv_point(at);
-    }
-    const SurfacePoint& sp = map.uv_mapping ? on_uv : at;
+namespace {
+
+// The map's colour at sp, the point where its pattern and entries are evaluated.
+Color evaluate_entries(const PigmentMap& map, const SurfacePoint& sp) {
     if (map.average) {
         Color sum{0, 0, 0};
         float weights = 0;
@@ -74,6 +70,17 @@ Color evaluate(const PigmentMap& map, const SurfacePoint& at) {
     const Color lower = evaluate(map.entries[span.lower].texture, sp);
     if (span.weight == 0) return lower;
     return lower * (1 - span.weight) + evaluate(map.entries[span.upper].texture, sp) * span.weight;
+}
+
+}  // namespace
+
+Color evaluate(const PigmentMap& map, const SurfacePoint& at) {
+    if (!map.uv_mapping) [[likely]]
+        return evaluate_entries(map, at);
+    // Laid over the uv, the map and its entries see the point (u, v, 0).
+    SurfacePoint on_uv = at;
+    on_uv.p = uv_point(at);
+    return evaluate_entries(map, on_uv);
 }
 
 LayeredColors evaluate_layers(const LayeredTexture& layered, const SurfacePoint& sp) {

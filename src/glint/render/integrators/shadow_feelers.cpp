@@ -3,6 +3,8 @@
 
 #include <cmath>
 
+#include "glint/render/integrators/surface_context.h"
+
 namespace glint {
 
 Color ShadowFeelers::transmittance(std::size_t light, const SurfacePoint& sp, Normal3 n,
@@ -56,7 +58,7 @@ Color ShadowFeelers::transmittance(std::size_t light, const SurfacePoint& sp, No
         const SurfacePoint crossed =
             world_.surface_at(feeler, *hit, tints ? uv_needed(m.color) : Uv::skip);
         factor *= m.transmit;
-        if (tints) factor *= Color::gray(1 - m.tint) + m.tint * evaluate(m.color, crossed);
+        if (tints) factor *= tint_filter(m.tint, evaluate(m.color, crossed));
         // Leaving an object by its back, the feeler has crossed its inside since the surface
         // before (an approximation where objects nest or overlap).
         if (m.fade.fades() && dot(crossed.normal, feeler.direction) > 0)

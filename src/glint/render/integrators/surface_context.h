@@ -142,13 +142,18 @@ struct Branches {
     float eta = 1;      // n1 / n2 of the refraction, when kt > 0
 };
 
-// What the light refracted at c is multiplied by besides kt: the surface colour's share
-// (Material::tint), as coloured glass filters it.
+// What light crossing a surface of colour `surface` is multiplied by besides kt: the
+// colour's share (Material::tint), as coloured glass filters it.
+inline Color tint_filter(float tint, const Color& surface) {
+    return Color::gray(1 - tint) + tint * surface;
+}
+
+// The tint filter of the light refracted at c.
 inline Color transmit_filter(const SurfaceContext& c) {
     const float tint = c.material->tint;
     if (tint == 0) [[likely]]
         return Color{1, 1, 1};
-    return Color::gray(1 - tint) + tint * c.color;
+    return tint_filter(tint, c.color);
 }
 
 // Snell's law's indices at c: n1 on the ray's side, n2 beyond.

@@ -629,17 +629,15 @@ private:
             auto map = std::make_shared<PigmentMap>();
             map->spec = p.spec;
             map->average = p.average;
-            // Laid over the uv, the entries lie in uv space too.
+            // Laid over the uv, the map and its entries lie in uv space, placed by the
+            // pigment's own transforms only.
             const Transform entry_frame = p.uv_mapping ? p.transform : frame * p.transform;
             for (const PovColorStop& stop : p.map.stops)
                 map->entries.push_back({float(stop.at), stop.pigment
                                                             ? texture_of(*stop.pigment, entry_frame)
                                                             : Texture{rgb(stop.color)}});
-            map->to_pattern = (frame * p.transform).inverse();
-            if (p.uv_mapping) {  // in uv space, placed by its own transforms only
-                map->uv_mapping = true;
-                map->to_pattern = p.transform.inverse();
-            }
+            map->to_pattern = entry_frame.inverse();
+            map->uv_mapping = p.uv_mapping;
             return map;
         }
         if (p.kind == PovPigment::Kind::pattern) {
@@ -647,11 +645,9 @@ private:
             pattern->spec = p.spec;
             for (const PovColorStop& stop : p.map.stops)
                 pattern->colors.push_back({float(stop.at), rgb(stop.color)});
-            pattern->to_pattern = (frame * p.transform).inverse();
-            if (p.uv_mapping) {  // in uv space, placed by its own transforms only
-                pattern->uv_mapping = true;
-                pattern->to_pattern = p.transform.inverse();
-            }
+            // Laid over the uv, placed by its own transforms only.
+            pattern->to_pattern = (p.uv_mapping ? p.transform : frame * p.transform).inverse();
+            pattern->uv_mapping = p.uv_mapping;
             return pattern;
         }
         if (p.kind == PovPigment::Kind::image && !p.uv_mapping) {
