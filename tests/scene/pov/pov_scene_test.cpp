@@ -909,6 +909,27 @@ TEST(PovScene, HeightFieldsAreMeshesOfTheImagesLevels) {
 }
 
 // superellipsoid { <e, n> }: (|x|^(2/e) + |y|^(2/e))^(e/n) + |z|^(2/n) - 1 in the unit cube.
+TEST(PovScene, ASphereSweepIsTheMergeOfItsSpheresAndCones) {
+    // `0.5 <1, 0, 0>`: the vector after an item's float starts the next sphere, as POV-Ray
+    // reads it, rather than comparing.
+    const Scene s = parse(R"(
+        sphere_sweep { linear_spline 3, <-1, 0, 0>, 0.5 <1, 0, 0>, 0.5, <1, 2, 0>, 0.25
+                       tolerance 1e-6 translate z })");
+    ASSERT_EQ(s.objects.size(), 1u);
+    // Down onto the straight piece's top at x = 0: the cylinder of radius 0.5, moved by z.
+    const auto top = intersect(s.objects[0].shape, Ray{{0, 5, 1}, {0, -1, 0}}, {0, kInfinity});
+    ASSERT_TRUE(top.has_value());
+    EXPECT_NEAR(top->t, 4.5f, 1e-5f);
+    // Along the path from inside: no inner surface where the pieces meet, out at the first
+    // sphere's far side.
+    const auto out = intersect(s.objects[0].shape, Ray{{0.5f, 0, 1}, {-1, 0, 0}}, {0, kInfinity});
+    ASSERT_TRUE(out.has_value());
+    EXPECT_NEAR(out->t, 2, 1e-5f);
+    EXPECT_NE(error_of("sphere_sweep { cubic_spline 3, <0, 0, 0>, 1, <1, 0, 0>, 1, <2, 0, 0>, 1 }")
+                  .find("sphere_sweep cubic_spline needs at least 4 spheres, got 3"),
+              std::string::npos);
+}
+
 TEST(PovScene, SuperellipsoidsAreImplicitSurfaces) {
     const Scene s = parse("superellipsoid { <1, 1> } superellipsoid { <0.5, 2> }");
     ASSERT_EQ(s.objects.size(), 2u);

@@ -25,6 +25,16 @@ double PovParser::parenthesized_float(std::string_view what) {
 
 void PovParser::directive(const PovToken& token) {
     const Nested nested(*this, token);
+    // A directive's expressions stand alone, whatever vector or item's float it interrupts.
+    struct Restore {
+        PovParser& parser;
+        bool in_vector, item_float;
+        ~Restore() {
+            parser.in_vector_ = in_vector;
+            parser.item_float_ = item_float;
+        }
+    } restore{*this, in_vector_, item_float_};
+    in_vector_ = item_float_ = false;
     const std::string& word = token.text;
     if (word == "declare" || word == "local") return declare(token, word == "local");
     if (word == "undef") {

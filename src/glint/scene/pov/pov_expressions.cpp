@@ -100,6 +100,12 @@ PovVector PovParser::color_expression(std::string_view what) {
 
 double PovParser::finite_float(std::string_view what) {
     const PovToken at = peek();
+    struct Restore {
+        bool& flag;
+        bool was;
+        ~Restore() { flag = was; }
+    } restore{item_float_, item_float_};
+    item_float_ = true;
     const double value = float_of(expression(), at, what);
     if (!fits_float(value))
         throw error_at(at, "the number " + std::string(what) + " must be finite, got " +
@@ -107,21 +113,9 @@ double PovParser::finite_float(std::string_view what) {
     return value;
 }
 
-double PovParser::count(std::string_view what) {
-    // A count is followed by the vectors it counts (`prism { 0, 1, 4 <-1, 0> ... }`): a '<'
-    // after it starts them rather than comparing.
-    struct Restore {
-        bool& flag;
-        bool was;
-        ~Restore() { flag = was; }
-    } restore{counting_, counting_};
-    counting_ = true;
-    return finite_float(what);
-}
-
 int PovParser::whole_number(std::string_view what, int min, int max) {
     const PovToken at = peek();
-    const double value = count(what);
+    const double value = finite_float(what);
     if (!(value >= min && value <= max) || value != std::floor(value))
         throw error_at(at, "the number " + std::string(what) + " must be a whole number from " +
                                std::to_string(min) + " to " + std::to_string(max) + ", got " +
@@ -205,7 +199,7 @@ PovValue PovParser::comparison() {
               (s == ">" && !in_vector_)))
             return left;
         // `box { <0, 0, 0> <1, 1, 1> }`: after a vector, '<' starts the next value.
-        if (s == "<" && (!std::holds_alternative<double>(left) || counting_)) return left;
+        if (s == "<" && (!std::holds_alternative<double>(left) || item_float_)) return left;
         const std::string which = next().text;
         // Two strings compare by their characters, as POV-Ray compares them; else two floats.
         int order = 0;  // <0, 0, >0: left before, equal to or after right
@@ -320,11 +314,11 @@ PovValue PovParser::primary() {
             return checked_string(token.text, token);
         case PovTokenKind::symbol:
             if (token.text == "(") {
-                const bool was_in_vector = in_vector_, was_counting = counting_;
-                in_vector_ = counting_ = false;
+                const bool was_in_vector = in_vector_, was_item_float = item_float_;
+                in_vector_ = item_float_ = false;
                 PovValue value = expression();
                 in_vector_ = was_in_vector;
-                counting_ = was_counting;
+                item_float_ = was_item_float;
                 expect(")", "to close '('");
                 return value;
             }

@@ -27,14 +27,14 @@ bool is_shape(const std::string& keyword) {
            keyword == "mesh2" || keyword == "height_field" || keyword == "superellipsoid" ||
            keyword == "blob" || keyword == "prism" || keyword == "lathe" || keyword == "sor" ||
            keyword == "text" || keyword == "julia_fractal" || keyword == "isosurface" ||
-           is_polynomial(keyword);
+           keyword == "sphere_sweep" || is_polynomial(keyword);
 }
 
 // POV-Ray's objects that glint does not read yet: read past, so that only using one stops the
 // scene (include files declare many).
 bool is_unread_object(const std::string& keyword) {
-    static const std::string_view kUnread[] = {"bicubic_patch", "lemon",      "ovus",
-                                               "parametric",    "polynomial", "sphere_sweep"};
+    static const std::string_view kUnread[] = {"bicubic_patch", "lemon", "ovus", "parametric",
+                                               "polynomial"};
     return std::find(std::begin(kUnread), std::end(kUnread), keyword) != std::end(kUnread);
 }
 
@@ -282,6 +282,8 @@ PovObject PovItemReader::object(const PovToken& keyword) {
         mesh2(keyword, object);
     } else if (keyword.text == "text") {
         text(keyword, object);
+    } else if (keyword.text == "sphere_sweep") {
+        sphere_sweep(keyword, object);
     } else {
         object.shape = shape(keyword);
         if (is_polynomial(keyword.text)) object.polynomial = keyword.text;

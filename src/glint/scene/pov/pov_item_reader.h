@@ -100,6 +100,8 @@ private:
     // written $0, $1, ...; what glint cannot compute yet noted in `unsupported`.
     std::string function_body(const std::vector<std::string>& parameters, std::string& unsupported);
     void text(const PovToken& keyword, PovObject& object);
+    // sphere_sweep as a merge of its chain of spheres and cones (pov_sphere_sweep_reader.cpp).
+    void sphere_sweep(const PovToken& keyword, PovObject& object);
     // The corners of triangles as read, three a triangle, with a smooth one's normals.
     struct MeshCorners {
         std::vector<Point3> positions;

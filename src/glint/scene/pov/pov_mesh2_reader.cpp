@@ -60,7 +60,7 @@ void PovItemReader::mesh2(const PovToken& keyword, PovObject& object) {
     const auto block = [&](const PovToken& name, auto&& item) {
         parser_.expect("{", "after " + name.text);
         const PovToken at = parser_.peek();
-        const double count = parser_.count("as the number of " + name.text);
+        const double count = parser_.finite_float("as the number of " + name.text);
         if (!(count >= 0 && count <= double(limit) && count == std::floor(count)))
             throw parser_.error_at(at, name.text +
                                            " must count a whole number of items from 0 "

@@ -83,11 +83,11 @@ public:
     PovVector vector_expression(std::string_view what, int size = 3);
     PovVector color_expression(std::string_view what);  // a 5-vector: r, g, b, filter, transmit
     // As above, and an error unless every component is finite: what a scene's items take.
+    // A '<' after an item's float starts the next value rather than comparing
+    // (`vertex_vectors { 3 <0, 0, 0> ...`, `sphere_sweep { ... 0.5 <-3, 1, 0> ...`): POV-Ray
+    // reads no comparison in an item's float unless it is in parentheses.
     double finite_float(std::string_view what);
-    // A finite float followed by the vectors it counts: a '<' after it starts them rather than
-    // comparing (`vertex_vectors { 3 <0, 0, 0> ...`), as in POV-Ray.
-    double count(std::string_view what);
-    // A finite float that is a whole number in [min, max] (counts, levels), read as count().
+    // A finite float that is a whole number in [min, max] (counts, levels).
     int whole_number(std::string_view what, int min, int max);
     // <a, b, ...> of exactly `count` finite numbers (a matrix's twelve).
     std::vector<double> finite_list(std::string_view what, std::size_t count);
@@ -237,8 +237,8 @@ private:
     int include_depth_ = 0;
     // One stream of rand() numbers per seed() call, as POV-Ray keeps them.
     std::vector<std::uint32_t> random_streams_;
-    bool in_vector_ = false;  // '>' closes the vector rather than comparing
-    bool counting_ = false;   // in a count: '<' starts the vectors after it
+    bool in_vector_ = false;   // '>' closes the vector rather than comparing
+    bool item_float_ = false;  // in an item's float: '<' starts the value after it
     // A scene never writes a file: what it writes is kept here, by the name it gave, for its own
     // #read and #include, and dropped with the parse.
     std::map<std::string, std::string> written_;
