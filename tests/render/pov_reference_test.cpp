@@ -40,7 +40,7 @@ INSTANTIATE_TEST_SUITE_P(Scenes, PovReference,
                                          "polynomials", "prism", "refraction", "shapes", "sky",
                                          "text", "tiles", "lathe", "normals", "operands", "images",
                                          "mesh2", "heightfields", "maps", "isosurfaces", "layers",
-                                         "fisheye", "glass", "reflections", "sweep"));
+                                         "fisheye", "glass", "reflections", "sweep", "media"));
 
 }  // namespace
 }  // namespace glint

@@ -109,7 +109,24 @@ std::optional<std::string> beam_unfit_part(const Shape& shape) {
     return (vowel ? "an " : "a ") + name + ", which is curved";
 }
 
+// Participating media are marched along the rays of the Whitted family only.
+void check_media_fit(const Scene& scene) {
+    const IntegratorKind kind = scene.settings.integrator;
+    if (kind == IntegratorKind::whitted || kind == IntegratorKind::distributed) return;
+    for (std::size_t i = 0; i < scene.materials.size(); ++i) {
+        const Material& m = scene.materials[i];
+        if (m.media.empty()) continue;
+        const SourceLocation where = place_of(scene, scene.sources.materials, i);
+        throw SceneError(where,
+                         "material '" + m.name + "' is filled with a participating medium: the " +
+                             std::string(integrator_info(kind).name) +
+                             " integrator does not march media along its rays",
+                         {"render it with the whitted or distributed integrator"}, line_of(where));
+    }
+}
+
 void check_integrator_fits(const Scene& scene) {
+    check_media_fit(scene);
     if (scene.settings.integrator == IntegratorKind::beam) return check_beam_fits(scene);
     const IntegratorInfo& integrator = integrator_info(scene.settings.integrator);
     if (!integrator.traces_particles) return;

@@ -5,10 +5,12 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "glint/math/color.h"
 #include "glint/shading/angular_reflection.h"
 #include "glint/shading/interior_fade.h"
+#include "glint/shading/medium.h"
 #include "glint/shading/normal_pattern.h"
 #include "glint/shading/spectrum.h"
 #include "glint/shading/texture.h"
@@ -56,6 +58,11 @@ struct Material {
     float tint = 0;
     // How light fades on its way through the object's inside (interior_fade.h).
     InteriorFade fade;
+    // The participating media filling the object's inside (medium.h); none for most.
+    std::vector<Medium> media;
+    // Whether the object's inside, when it holds no media, holds those of the object around it
+    // (POV-Ray's hollow): else it keeps them out.
+    bool hollow = false;
     // Whether kt splits by Fresnel's equations into reflected (kt F) and refracted (kt (1 - F)).
     bool fresnel = false;
     float ior = 1;  // index of refraction inside (outside: the enclosing object's, or 1)

@@ -930,6 +930,38 @@ TEST(PovScene, ASphereSweepIsTheMergeOfItsSpheresAndCones) {
               std::string::npos);
 }
 
+TEST(PovScene, MediaFillTheirObjectsAsGlintsOwn) {
+    const Scene s = parse(R"(
+        #declare Glow = density { spherical density_map { [0 rgb 0] [1 rgb 2] } }
+        #declare Haze = media { scattering { 5, <0.1, 0.2, 0.3> eccentricity 0.4 extinction 0.5 } }
+        sphere { 0, 1 pigment { rgbt 1 } hollow
+                 interior { media { emission 0.5 absorption <0.1, 0, 0> intervals 2 samples 3
+                                    method 2 density { Glow } }
+                            media { Haze } }
+                 scale 2 translate x })");
+    ASSERT_EQ(s.objects.size(), 1u);
+    const Material& m = s.materials[s.objects[0].material];
+    EXPECT_TRUE(m.hollow);
+    ASSERT_EQ(m.media.size(), 2u);
+    const Medium& glow = m.media[0];
+    EXPECT_EQ(glow.emission, Color::gray(0.5f));
+    EXPECT_EQ(glow.absorption, (Color{0.1f, 0, 0}));
+    EXPECT_EQ(glow.samples, 6);  // intervals x samples with method 2
+    ASSERT_EQ(glow.density.size(), 1u);
+    // The density moves with the sphere: at its middle (1, 0, 0) the spherical pattern is 1,
+    // the map's 2; half way out, 0.5 and 1; outside, 0.
+    EXPECT_NEAR(density_at(glow, {1, 0, 0}).r, 2, 1e-5f);
+    EXPECT_NEAR(density_at(glow, {1, 1, 0}).g, 1, 1e-5f);
+    EXPECT_NEAR(density_at(glow, {3.5f, 0, 0}).b, 0, 1e-5f);
+    const Medium& haze = m.media[1];
+    EXPECT_EQ(haze.phase, PhaseKind::henyey_greenstein);
+    EXPECT_EQ(haze.scattering, (Color{0.1f, 0.2f, 0.3f}));
+    EXPECT_FLOAT_EQ(haze.eccentricity, 0.4f);
+    EXPECT_FLOAT_EQ(haze.extinction, 0.5f);
+    EXPECT_EQ(haze.samples, 8);  // POV-Ray's 1 interval, 1 sample, method 3 of 2^3
+    EXPECT_TRUE(haze.density.empty());
+}
+
 TEST(PovScene, SuperellipsoidsAreImplicitSurfaces) {
     const Scene s = parse("superellipsoid { <1, 1> } superellipsoid { <0.5, 2> }");
     ASSERT_EQ(s.objects.size(), 2u);

@@ -128,9 +128,13 @@ private:
                          ", weight " + read(n.weight));
         const int in = indent + 1;
         const auto fog_line = [&] {
-            if (n.fog && n.fog_inside)
+            if (n.fog && n.fog_inside && is_black(n.fog->added))
                 line(in, "through the object's inside: its fade lets " +
                              read(n.fog->transmittance) + " through (brings T x what lies behind)");
+            else if (n.fog && n.fog_inside)
+                line(in, "through the object's inside: its fade and media let " +
+                             read(n.fog->transmittance) + " through, add " + read(n.fog->added) +
+                             " (bring T x what lies behind + that)");
             else if (n.fog)
                 line(in, "through fog: lets " + read(n.fog->transmittance) + " through, adds " +
                              read(n.fog->added) + " (brings T x what lies behind + that)");

@@ -3,6 +3,7 @@
 
 #include "glint/render/integrators/glossy_lobe.h"
 #include "glint/render/integrators/local_lighting.h"
+#include "glint/render/integrators/media_marching.h"
 #include "glint/render/integrators/ray_fog.h"
 #include "glint/render/integrators/surface_context.h"
 #include "glint/render/integrators/wavelength_split.h"
@@ -69,8 +70,12 @@ Color DistributedIntegrator::shade(const Ray& ray, int depth, float weight, Samp
                                    const RayDifferential* pencil) {
     const RenderSettings& settings = world_.settings();
     const auto hit = world_.intersect(ray, {0, kInfinity}, kVisibleToCameraRays);
-    const std::optional<FogEffect> fog =
-        ray_fog(world_, ray, media, hit ? hit->shape_hit.t : kInfinity);
+    const float length = hit ? hit->shape_hit.t : kInfinity;
+    std::optional<FogEffect> fog = ray_fog(world_, ray, media, length);
+    // Each sample draws where in its intervals the media are evaluated.
+    if (media.size() > 0 && media_around(media)) [[unlikely]]
+        fog = with_media(world_, feelers_, media, ray, length,
+                         stream.get_1d(stream.next_dimension()), stats, fog);
     if (!hit) {
         const Color sky = world_.sky().radiance(ray.direction);
         if constexpr (kRecord) {

@@ -64,6 +64,9 @@ public:
     const Material* innermost_material() const {
         return size_ > 0 ? entries_[size_ - 1].material : nullptr;
     }
+    // The material of the medium `level` steps out from the innermost (0: the innermost), for
+    // level < size().
+    const Material* material_out(int level) const { return entries_[size_ - 1 - level].material; }
 
     static constexpr int kCapacity = 8;
 

@@ -3,6 +3,7 @@
 
 #include <cmath>
 
+#include "glint/render/integrators/media_marching.h"
 #include "glint/render/integrators/surface_context.h"
 
 namespace glint {
@@ -61,8 +62,10 @@ Color ShadowFeelers::transmittance(std::size_t light, const SurfacePoint& sp, No
         if (tints) factor *= tint_filter(m.tint, evaluate(m.color, crossed));
         // Leaving an object by its back, the feeler has crossed its inside since the surface
         // before (an approximation where objects nest or overlap).
-        if (m.fade.fades() && dot(crossed.normal, feeler.direction) > 0)
+        if ((m.fade.fades() || !m.media.empty()) && dot(crossed.normal, feeler.direction) > 0) {
             factor *= fade_over(m.fade, hit->shape_hit.t);
+            if (!m.media.empty()) factor *= media_transmittance(m.media, feeler, hit->shape_hit.t);
+        }
         if (is_black(factor)) return {};
         // Continue from just beyond the surface crossed.
         const Ray next =

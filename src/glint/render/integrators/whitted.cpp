@@ -3,6 +3,7 @@
 #include "glint/render/integrators/whitted.h"
 
 #include "glint/render/integrators/local_lighting.h"
+#include "glint/render/integrators/media_marching.h"
 #include "glint/render/integrators/ray_fog.h"
 #include "glint/render/integrators/surface_context.h"
 
@@ -48,8 +49,9 @@ Color WhittedIntegrator::shade(const Ray& ray, int depth, float weight, RayStats
                                const MediumStack& media, const RayDifferential* pencil) {
     const RenderSettings& settings = world_.settings();
     const auto hit = world_.intersect(ray, {0, kInfinity}, kVisibleToCameraRays);
-    const std::optional<FogEffect> fog =
-        ray_fog(world_, ray, media, hit ? hit->shape_hit.t : kInfinity);
+    const float length = hit ? hit->shape_hit.t : kInfinity;
+    const std::optional<FogEffect> fog = with_media(world_, feelers_, media, ray, length, 0.5f,
+                                                    stats, ray_fog(world_, ray, media, length));
     if (!hit) {
         const Color sky = world_.sky().radiance(ray.direction);
         if constexpr (kRecord) {

@@ -159,7 +159,7 @@ std::optional<PovItem> PovItemReader::read(const PovToken& keyword) {
     if (w == "color_map" || w == "colour_map") return color_map(keyword);
     if (w == "material") return material({});
     if (w == "pigment_map" || w == "normal_map" || w == "texture_map" || w == "slope_map" ||
-        w == "density_map" || w == "material_map" || w == "media" || w == "density") {
+        w == "density_map" || w == "material_map") {
         parser_.skip_braced(keyword);
         return PovUnread{w, keyword.at};
     }
@@ -181,6 +181,8 @@ std::optional<PovItem> PovItemReader::read(const PovToken& keyword) {
     if (w == "pigment") return pigment(default_texture_->pigment);
     if (w == "finish") return finish(default_texture_->finish);
     if (w == "interior") return interior({});
+    if (w == "media") return media(keyword);
+    if (w == "density") return density();
     if (w == "transform") {
         parser_.expect("{", "after transform");
         Transform t;
@@ -641,11 +643,16 @@ void PovItemReader::modifiers(PovObject& object) {
         const std::string& w = token.text;
         if (const auto step = transform_step(token)) {
             object.transform = *step * object.transform;
-            // A texture given before moves with the object.
+            // A texture given before moves with the object, as do the media of an interior.
             if (object.texture) {
                 PovTexture moved = *object.texture;
                 moved.move(*step);
                 object.texture = std::make_shared<const PovTexture>(moved);
+            }
+            if (object.interior && object.interior->has_densities()) {
+                PovInterior moved = *object.interior;
+                moved.move(*step);
+                object.interior = std::make_shared<const PovInterior>(std::move(moved));
             }
         } else if (w == "texture") {
             // A texture written after another is a layer over it, as in POV-Ray.
@@ -924,9 +931,12 @@ PovInterior PovItemReader::interior(const PovInterior& base) {
                 throw parser_.error_at(at, problem);
         } else if (token.is_word("caustics"))
             parser_.finite_float("in an interior");  // read; faked caustics are not drawn
-        else if (token.is_word("media"))
-            parser_.skip_braced(token);
-        else
+        else if (token.is_word("media")) {
+            if (in.media.size() == kMaxMedia)
+                throw parser_.error_at(
+                    token, "an interior holds at most " + std::to_string(kMaxMedia) + " media");
+            in.media.push_back(media(token));
+        } else
             throw unsupported(token, "in an interior");
     }
 }

@@ -53,6 +53,10 @@ public:
     PovColorMap color_map(const PovToken& keyword);
     PovFinish finish(const PovFinish& base);
     PovInterior interior(const PovInterior& base);
+    // media { }, its keyword read (pov_media_reader.cpp).
+    PovMedium media(const PovToken& keyword);
+    // density { }, its keyword read: a pigment whose colour is the density.
+    PovPigment density();
     // material { [declared] texture interior transforms }, over what the object has.
     PovMaterial material(const PovMaterial& base);
     PovCamera camera(const PovToken& keyword);

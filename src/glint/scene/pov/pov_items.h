@@ -15,6 +15,7 @@
 #include "glint/scene/pov/pov_files.h"
 #include "glint/scene/pov/pov_value.h"
 #include "glint/shading/interior_fade.h"
+#include "glint/shading/medium.h"
 #include "glint/shading/normal_pattern.h"
 #include "glint/shading/pattern.h"
 #include "glint/shading/projected_image.h"
@@ -123,6 +124,13 @@ struct PovTexture {
     }
 };
 
+// media { } as written: glint's medium (its densities left empty) and the density pigments,
+// in the object's space as its texture's pigments are.
+struct PovMedium {
+    Medium medium;
+    std::vector<PovPigment> densities;
+};
+
 struct PovInterior {
     double ior = 1;
     double dispersion = 1;  // the index's ratio from the red end of the spectrum to the violet
@@ -130,6 +138,18 @@ struct PovInterior {
     // fade_distance, fade_power and fade_color, as glint's fade (0 distance: none; POV-Ray's
     // power 0 unless given).
     InteriorFade fade{0, 0, {}};
+    std::vector<PovMedium> media;
+
+    bool has_densities() const {
+        for (const PovMedium& m : media)
+            if (!m.densities.empty()) return true;
+        return false;
+    }
+    // Moves the media's densities, as an object's transforms move its interior.
+    void move(const Transform& step) {
+        for (PovMedium& m : media)
+            for (PovPigment& d : m.densities) d.transform = step * d.transform;
+    }
 };
 
 // material { texture interior }: what it gives; null where it gives nothing.
@@ -227,9 +247,9 @@ struct PovUnread {
     PovPosition at;
 };
 
-using PovItem =
-    std::variant<PovObject, PovTexture, PovPigment, PovFinish, PovInterior, Transform, PovUnread,
-                 PovCamera, PovColorMap, PovSkySphere, PovMaterial, PovNormal, PovFunction>;
+using PovItem = std::variant<PovObject, PovTexture, PovPigment, PovFinish, PovInterior, Transform,
+                             PovUnread, PovCamera, PovColorMap, PovSkySphere, PovMaterial,
+                             PovNormal, PovFunction, PovMedium>;
 
 // A declared item as an identifier's value holds it.
 struct PovItemRef {

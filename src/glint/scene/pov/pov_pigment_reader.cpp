@@ -206,7 +206,7 @@ bool PovItemReader::pattern_modifier(const PovToken& token, PovPigment& p) {
     PatternSpec& s = p.spec;
     if (w == "color_map" || w == "colour_map") {
         p.map = color_map(token);
-    } else if (w == "pigment_map") {
+    } else if (w == "pigment_map" || w == "density_map") {
         p.map = pigment_map(token);
     } else if (w == "turbulence") {
         s.turbulence = to_vector(parser_.finite_vector("after turbulence"));

@@ -507,7 +507,7 @@ private:
     // them all.
     std::uint32_t material(const std::shared_ptr<const PovTexture>& texture,
                            const std::shared_ptr<const PovInterior>& interior,
-                           const Transform& frame) {
+                           const Transform& frame, bool hollow = false) {
         std::vector<const PovTexture*> layers;  // from the top down
         for (auto layer = texture->above.rbegin(); layer != texture->above.rend(); ++layer)
             layers.push_back(&*layer);
@@ -523,7 +523,11 @@ private:
         }
         const bool tilted = normal && normal->unsupported.empty();
         placed = placed || tilted;
-        const MaterialKey key{texture, interior, placed ? frame.matrix().m : Matrix4::identity().m};
+        if (interior)
+            for (const PovMedium& medium : interior->media)
+                for (const PovPigment& density : medium.densities) refuse_unread(density);
+        const MaterialKey key{texture, interior, placed ? frame.matrix().m : Matrix4::identity().m,
+                              hollow};
         if (const auto found = materials_.find(key); found != materials_.end())
             return found->second;
         const PovTexture& t = *layers.front();
@@ -598,6 +602,16 @@ private:
         // Powers from 1000 on are Beer-Lambert's law in glint as in POV-Ray.
         if (interior) m.fade = interior->fade;
         if (interior && interior->dispersion != 1) disperse(m, *interior);
+        m.hollow = hollow;
+        if (interior) {
+            for (const PovMedium& medium : interior->media) {
+                Medium glint_medium = medium.medium;
+                // Placed in the scene's space already (placed_interior).
+                for (const PovPigment& density : medium.densities)
+                    glint_medium.density.push_back(texture_of(density, Transform{}));
+                m.media.push_back(std::move(glint_medium));
+            }
+        }
         scene_.materials.push_back(std::move(m));
         const auto index = std::uint32_t(scene_.materials.size() - 1);
         materials_.emplace(key, index);
@@ -760,11 +774,14 @@ private:
             Operand placed;
             if (paint) {
                 // An operand's texture lies in the CSG's own space.
-                const OperandPaint own{paint->frame * object.transform,
-                                       operand.interior ? operand.interior : paint->interior};
+                const Transform frame = paint->frame * object.transform;
+                const OperandPaint own{frame, operand.interior
+                                                  ? placed_interior(operand.interior, frame)
+                                                  : paint->interior};
                 placed.shape = placed_shape(operand, &own);
                 if (operand.texture)
-                    placed.material = material(operand.texture, own.interior, own.frame) + 1;
+                    placed.material =
+                        material(operand.texture, own.interior, own.frame, operand.hollow) + 1;
             } else {
                 placed.shape = placed_shape(operand);
             }
@@ -811,6 +828,16 @@ private:
         return combined(balanced(shapes, begin, middle, op), balanced(shapes, middle, end, op), op);
     }
 
+    // The interior with its media's densities placed in the scene's space by `frame`, the
+    // space the interior lies in (its object's parent's), as a texture lies in its frame.
+    static std::shared_ptr<const PovInterior> placed_interior(
+        const std::shared_ptr<const PovInterior>& interior, const Transform& frame) {
+        if (!interior->has_densities() || frame == Transform{}) return interior;
+        PovInterior placed = *interior;
+        placed.move(frame);
+        return std::make_shared<const PovInterior>(std::move(placed));
+    }
+
     // `texture_frame`: where the texture handed down lies (its space to the scene's). An
     // object's own texture lies in its parent's space, and moves with the object's transforms
     // written after it (PovItemReader::modifiers).
@@ -823,7 +850,7 @@ private:
             texture = object.texture ? object.texture : object.fallback;
             texture_frame = parent;
         }
-        if (object.interior) interior = object.interior;
+        if (object.interior) interior = placed_interior(object.interior, parent);
         no_shadow = no_shadow || object.no_shadow;
         const Transform placement = parent * object.transform;
         if (object.light) {
@@ -850,7 +877,7 @@ private:
         if (!(placement == Transform{}))
             shape = Transformed(placement, std::make_shared<const Shape>(std::move(shape)));
         if (clip) shape = combined(std::move(shape), *clip, CsgOperation::clip);
-        SceneObject o{std::move(shape), material(texture, interior, texture_frame)};
+        SceneObject o{std::move(shape), material(texture, interior, texture_frame, object.hollow)};
         o.casts_shadow = !no_shadow;
         scene_.objects.push_back(std::move(o));
     }
@@ -894,7 +921,7 @@ private:
     // By the texture and interior themselves, held so that a freed one's address is never
     // taken for a new one's.
     using MaterialKey = std::tuple<std::shared_ptr<const PovTexture>,
-                                   std::shared_ptr<const PovInterior>, decltype(Matrix4::m)>;
+                                   std::shared_ptr<const PovInterior>, decltype(Matrix4::m), bool>;
     std::map<MaterialKey, std::uint32_t> materials_;
     bool any_area_light_ = false;
     std::optional<double> assumed_gamma_;

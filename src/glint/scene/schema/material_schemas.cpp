@@ -97,6 +97,33 @@ std::vector<EntitySchema> material_schemas() {
               ">= 0", kNonNegative},
              {"fade_color", "color", "0 (black)",
               "c, the colour that passes unfaded: its complement fades", "channels in [0, 1]"},
+             {"medium_absorption", "color", "0 (none)",
+              "what the object's inside absorbs per unit length ([participating "
+              "media](#participating-media))",
+              "channels >= 0"},
+             {"medium_emission", "color", "0 (none)",
+              "the light the object's inside gives off per unit length", "channels >= 0"},
+             {"medium_scattering", "color", "0 (none)",
+              "what the object's inside scatters per unit length of the light it is lit by",
+              "channels >= 0"},
+             {"medium_phase", "string", "`isotropic`",
+              "how the scattered light spreads over the directions: evenly, by Rayleigh's law, "
+              "Mie's hazy or murky approximations, or Henyey and Greenstein's function",
+              "`isotropic`, `rayleigh`, `mie_hazy`, `mie_murky`, `henyey_greenstein`"},
+             {"medium_eccentricity", "number", "0",
+              "g of `henyey_greenstein`: > 0 scatters forwards, < 0 backwards", "(-1, 1)",
+              Range{-1, 1, true, true}},
+             {"medium_extinction", "number", "1",
+              "how much of what it scatters the medium takes from the light crossing it", "[0, 1]",
+              kUnitInterval},
+             {"medium_samples", "integer", "10",
+              "points a ray through the medium is evaluated at, one in each of as many equal "
+              "intervals",
+              "1..1000", Range{1, 1000}},
+             {"hollow", "bool", "false",
+              "whether the object's inside, when it holds no medium, holds that of the object "
+              "around it (POV-Ray's hollow); else it keeps it out",
+              ""},
              {"ior", "number", "1",
               "index of refraction inside the object; outside it is that of the object around it "
               "([nested media](#nested-media)), or 1 (vacuum)",
