@@ -154,5 +154,50 @@ TEST(Media, AShadowFeelerThroughAnAbsorbingMediumIsDimmed) {
     EXPECT_NEAR(lit.r, std::exp(-0.8f), 1e-4f);
 }
 
+// A glowing wall 10 away through an atmosphere that absorbs 0.1 and glows 0.2 a unit: the wall's
+// 1 comes through exp(-1), and the atmosphere adds 0.2 (1 - exp(-1)) / 0.1.
+Scene wall_in_an_atmosphere(IntegratorKind integrator) {
+    Scene scene;
+    scene.settings.width = scene.settings.height = 4;
+    scene.settings.integrator = integrator;
+    scene.settings.samples_per_pixel = 4;
+    scene.settings.background = {};
+    scene.camera.from = {0, 0, -10};
+    scene.camera.at = {0, 0, 0};
+    scene.camera.fov = 0.05f;
+    scene.materials = {testing::glowing(Color::gray(1))};
+    scene.objects.push_back({Disk{{0, 0, 0}, {0, 0, -1}, 10}, 0});
+    Medium air;
+    air.absorption = Color::gray(0.1f);
+    air.emission = Color::gray(0.2f);
+    scene.atmosphere = {air};
+    return scene;
+}
+
+TEST_P(MediaInside, TheAtmosphereFillsTheSpaceBetweenTheObjects) {
+    const Color got = mean_of(render(World(wall_in_an_atmosphere(GetParam())), {}));
+    EXPECT_NEAR(got.g, std::exp(-1.0f) + 0.2f * (1 - std::exp(-1.0f)) / 0.1f, 1e-3f);
+}
+
+TEST(Media, ALightOutOfTheMediaScattersNothingInThem) {
+    // A scattering atmosphere lit by a light that scatters in it, then by one that does not.
+    Scene scene = wall_in_an_atmosphere(IntegratorKind::whitted);
+    scene.atmosphere[0].emission = {};
+    scene.atmosphere[0].scattering = Color::gray(0.05f);
+    scene.lights.push_back(PointLight{{0, 5, -5}, {1, 1, 1}});
+    const float t = std::exp(-1.5f);  // sigma_t = 0.15 over 10
+    EXPECT_GT(mean_of(render(World(scene), {})).r, t + 0.01f);
+    std::get<PointLight>(scene.lights[0]).in_media = false;
+    EXPECT_NEAR(mean_of(render(World(scene), {})).r, t, 1e-4f);
+}
+
+TEST(Media, TheAtmosphereEndsAtTheBoxAroundTheObjectsTheLightsAndTheEye) {
+    // The eye at z = -10 and the wall's disk at z = 0 (radius 10): a ray along +z from the eye
+    // leaves the box where it meets the wall, one along -x where the box ends at x = -10.
+    const World world(wall_in_an_atmosphere(IntegratorKind::whitted));
+    EXPECT_NEAR(world.atmosphere_reach(Ray{{0, 0, -10}, {0, 0, 1}}), 10, 1e-4f);
+    EXPECT_NEAR(world.atmosphere_reach(Ray{{0, 0, -5}, {-1, 0, 0}}), 10, 1e-4f);
+}
+
 }  // namespace
 }  // namespace glint

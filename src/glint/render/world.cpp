@@ -50,6 +50,7 @@ World::World(Scene scene, AccelKind accel, ShadowAcceleration shadows)
       ambient_(scene.ambient),
       sky_(scene.sky ? Sky(*scene.sky) : Sky(scene.settings.background)),
       fogs_(scene.fogs),
+      atmosphere_(std::move(scene.atmosphere)),
       materials_(std::move(scene.materials)),
       lights_(std::move(scene.lights)) {
     primitives_.reserve(scene.objects.size());
@@ -91,6 +92,11 @@ World::World(Scene scene, AccelKind accel, ShadowAcceleration shadows)
     }
     warnings_.insert(warnings_.end(), eye.warnings.begin(), eye.warnings.end());
     const IntegratorKind kind = settings_.integrator;
+    if (!atmosphere_.empty() && kind != IntegratorKind::whitted &&
+        kind != IntegratorKind::distributed)
+        warnings_.push_back("the " + std::string(integrator_info(kind).name) +
+                            " integrator draws no atmosphere: media outside objects are marched "
+                            "by the whitted and distributed integrators");
     if (!fogs_.empty() && kind != IntegratorKind::whitted && kind != IntegratorKind::distributed)
         warnings_.push_back("the " + std::string(integrator_info(kind).name) +
                             " integrator draws no fog: fog is drawn by the whitted and "
@@ -103,6 +109,22 @@ World::World(Scene scene, AccelKind accel, ShadowAcceleration shadows)
         scene_center_ = bounded.min + bounded.diagonal() / 2;
     }
     shadows_ = shadows;
+    if (!atmosphere_.empty()) {
+        // The finite objects' box: a ray that misses them all (or meets only a plane far
+        // away) leaves the atmosphere where it leaves the box.
+        atmosphere_box_ = Bounds3{camera_.eye(), camera_.eye()};
+        for (const Primitive& p : primitives_)
+            if (const Bounds3 b = glint::bounds(p.shape); !b.is_empty() && b.is_finite())
+                atmosphere_box_ = merge(atmosphere_box_, b);
+        for (const Light& light : lights_) {
+            if (const auto* point = std::get_if<PointLight>(&light))
+                atmosphere_box_ = merge(atmosphere_box_, point->position);
+            else if (const auto* spot = std::get_if<SpotLight>(&light))
+                atmosphere_box_ = merge(atmosphere_box_, spot->position);
+            else if (const auto* area = std::get_if<AreaLight>(&light))
+                atmosphere_box_ = merge(atmosphere_box_, area->center);
+        }
+    }
     for (const Light& light : lights_) {
         light_buffers_.push_back(
             buffered(light)
@@ -178,6 +200,11 @@ Ray World::spawn_ray(Point3 p, Normal3 n, Vector3 d, float error, float time) co
     const float distance = std::max(ray_epsilon(p), 2 * error);
     const float offset = dot(n, d) >= 0 ? distance : -distance;
     return {p + to_vector(n) * offset, d, time};
+}
+
+float World::atmosphere_reach(const Ray& ray) const {
+    const auto chord = intersect_slabs(atmosphere_box_, ray, {0, kInfinity});
+    return chord ? chord->max : 0;
 }
 
 }  // namespace glint

@@ -43,6 +43,10 @@ public:
     // What rays that leave the scene see: the scene's sky image, or its background colour.
     const Sky& sky() const { return sky_; }
     std::span<const Fog> fogs() const { return fogs_; }
+    // The media outside objects, and how far along a ray they reach: to where it leaves the
+    // box around the finite objects, the lights and the eye.
+    const std::vector<Medium>& atmosphere() const { return atmosphere_; }
+    float atmosphere_reach(const Ray& ray) const;
     // The scene's lights, in scene order (light buffers and shadow caches are indexed by it).
     std::span<const Light> lights() const { return lights_; }
     // The objects whose material emits light and whose surface can be drawn on, in scene order.
@@ -131,6 +135,8 @@ private:
     Color ambient_;
     Sky sky_;
     std::vector<Fog> fogs_;
+    std::vector<Medium> atmosphere_;
+    Bounds3 atmosphere_box_;
     std::vector<Material> materials_;
     std::vector<Light> lights_;
     std::vector<ObjectLight> object_lights_;

@@ -140,6 +140,8 @@ struct Scene {
     std::optional<SkyImage> sky;
     // Fog between the surfaces, seen by the rays that carry light to the eye.
     std::vector<Fog> fogs;
+    // Participating media filling the space outside objects (and inside hollow ones).
+    std::vector<Medium> atmosphere;
     // What the loader accepted but the user should know ("3 degenerate triangles dropped").
     std::vector<std::string> warnings;
     SceneSources sources;

@@ -28,6 +28,7 @@ struct PointLight {
     Color color{1, 1, 1};
     Attenuation attenuation;
     bool casts_shadows = true;
+    bool in_media = true;  // scatters in participating media
 };
 
 // A point light that shines into a cone: full intensity within the falloff's start, none beyond
@@ -45,6 +46,7 @@ struct SpotLight {
     Color color{1, 1, 1};
     Attenuation attenuation;
     bool casts_shadows = true;
+    bool in_media = true;  // scatters in participating media
 };
 
 // The share of a spot light's intensity that leaves it at cos_angle from its axis: the rim's
@@ -55,6 +57,7 @@ struct DirectionalLight {
     Vector3 direction{0, -1, 0};  // unit; the way the light travels
     Color color{1, 1, 1};
     bool casts_shadows = true;
+    bool in_media = true;  // scatters in participating media
 };
 
 // A light with an extent, for soft shadows (Cook, Porter and Carpenter 1984). Its colour is that
@@ -72,6 +75,7 @@ struct AreaLight {
     // Shadow rays a sample sends to it; 0 takes the scene's image.shadow_rays.
     int shadow_rays = 0;
     bool casts_shadows = true;
+    bool in_media = true;  // scatters in participating media
 };
 
 AreaLight sphere_light(Point3 center, float radius);
@@ -87,6 +91,11 @@ using Light = std::variant<PointLight, SpotLight, DirectionalLight, AreaLight>;
 
 inline bool casts_shadows(const Light& light) {
     return std::visit([](const auto& l) { return l.casts_shadows; }, light);
+}
+
+// Whether the light scatters in participating media (POV-Ray's media_interaction).
+inline bool scatters_in_media(const Light& light) {
+    return std::visit([](const auto& l) { return l.in_media; }, light);
 }
 
 // What a surface point receives from one light, before shadowing.

@@ -962,6 +962,20 @@ TEST(PovScene, MediaFillTheirObjectsAsGlintsOwn) {
     EXPECT_TRUE(haze.density.empty());
 }
 
+TEST(PovScene, MediaOutsideObjectsAreTheAtmosphere) {
+    const Scene s = parse(R"(
+        media { scattering { 4, 0.02 } absorption 0.01 intervals 10 samples 2 method 1 }
+        light_source { <0, 10, 0> rgb 1 media_interaction off }
+        light_source { <0, 10, 5> rgb 1 spotlight point_at 0 })");
+    ASSERT_EQ(s.atmosphere.size(), 1u);
+    EXPECT_EQ(s.atmosphere[0].phase, PhaseKind::rayleigh);
+    EXPECT_EQ(s.atmosphere[0].scattering, Color::gray(0.02f));
+    EXPECT_EQ(s.atmosphere[0].samples, 20);
+    ASSERT_EQ(s.lights.size(), 2u);
+    EXPECT_FALSE(scatters_in_media(s.lights[0]));
+    EXPECT_TRUE(scatters_in_media(s.lights[1]));
+}
+
 TEST(PovScene, SuperellipsoidsAreImplicitSurfaces) {
     const Scene s = parse("superellipsoid { <1, 1> } superellipsoid { <0.5, 2> }");
     ASSERT_EQ(s.objects.size(), 2u);

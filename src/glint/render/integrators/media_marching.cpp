@@ -53,6 +53,7 @@ FogEffect march_media(const World& world, ShadowFeelers& feelers, std::span<cons
             scatters = scatters || !is_black(scattering[k]);
         }
         for (std::size_t l = 0; scatters && l < lights.size(); ++l) {
+            if (!scatters_in_media(lights[l])) continue;
             const LightSample ls = sample_light(lights[l], at.p);
             if (is_black(ls.intensity)) continue;
             const float cos_theta = dot(ls.to_light, ray.direction);

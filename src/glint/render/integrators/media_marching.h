@@ -3,6 +3,7 @@
 // light an interval adds is attenuated by the intervals before it.
 #pragma once
 
+#include <algorithm>
 #include <cmath>
 #include <optional>
 #include <span>
@@ -33,27 +34,31 @@ FogEffect march_media(const World& world, ShadowFeelers& feelers, std::span<cons
 Color media_transmittance(std::span<const Medium> media, const Ray& ray, float length);
 
 // The media a ray inside the objects of the stack travels through: the innermost object's, or
-// where that one is hollow and holds none, those of the object around it; none outside.
-inline const std::vector<Medium>* media_around(const MediumStack& stack) {
+// where that one is hollow and holds none, those of the object around it; outside every object
+// (or hollow ones only), the scene's atmosphere. None where there are none.
+inline const std::vector<Medium>* media_around(const World& world, const MediumStack& stack) {
     for (int level = 0; level < stack.size(); ++level) {
         const Material& m = *stack.material_out(level);
         if (!m.media.empty()) return &m.media;
         if (!m.hollow) return nullptr;
     }
-    return nullptr;
+    return world.atmosphere().empty() ? nullptr : &world.atmosphere();
 }
 
 // The fog of the ray (ray_fog()) with the media around it, when there are any: their light is
-// added to what reaches the ray's origin, their transmittance multiplies the fade's. A ray
-// leaving the scene from inside an object (open surfaces) meets no media.
+// added to what reaches the ray's origin, their transmittance multiplies the fog's. The
+// atmosphere reaches as far as World::atmosphere_reach; a ray leaving the scene from inside an
+// object (open surfaces) meets no media.
 inline std::optional<FogEffect> with_media(const World& world, ShadowFeelers& feelers,
                                            const MediumStack& stack, const Ray& ray, float length,
                                            float offset, RayStats& stats,
                                            std::optional<FogEffect> fog) {
-    if (stack.size() == 0) [[likely]]
+    if (stack.size() == 0 && world.atmosphere().empty()) [[likely]]
         return fog;
-    const std::vector<Medium>* media = media_around(stack);
-    if (!media || !std::isfinite(length)) return fog;
+    const std::vector<Medium>* media = media_around(world, stack);
+    if (!media) return fog;
+    if (media == &world.atmosphere()) length = std::min(length, world.atmosphere_reach(ray));
+    if (!(length > 0) || !std::isfinite(length)) return fog;
     const FogEffect m = march_media(world, feelers, *media, ray, length, offset, stats);
     if (!fog) return m;
     return FogEffect{fog->transmittance * m.transmittance, fog->added + m.added};

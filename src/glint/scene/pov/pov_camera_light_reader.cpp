@@ -191,9 +191,13 @@ PovLight PovItemReader::light_source(const PovToken& keyword) {
             parser_.skip_braced(t);
             read_past("photons { } in a light_source",
                       "the Whitted and distributed integrators trace no photons");
-        } else if (w == "media_interaction" || w == "media_attenuation")
-            optional_amount();
-        else if (w == "looks_like") {
+        } else if (w == "media_interaction" || w == "media_attenuation") {
+            const double on = optional_amount();
+            if (w == "media_interaction")
+                light.media_interaction = on != 0;
+            else if (on != 0)  // the media inside objects dim every feeler that crosses them
+                read_past("media_attenuation on", "the atmosphere does not dim shadow feelers");
+        } else if (w == "looks_like") {
             parser_.expect("{", "after looks_like");
             const PovToken inner = parser_.next();
             if (!starts_object(inner.text) || inner.kind != PovTokenKind::identifier)
@@ -201,9 +205,7 @@ PovLight PovItemReader::light_source(const PovToken& keyword) {
                     inner, "expected an object in looks_like { }, got " + describe(inner));
             light.looks_like = std::make_shared<const PovObject>(object(inner));
             parser_.expect("}", "after the looks_like object");
-        } else if (w == "media_interaction" || w == "media_attenuation")
-            optional_amount();  // POV-Ray's media only
-        else if (const auto step = transform_step(t))
+        } else if (const auto step = transform_step(t))
             light.transform = *step * light.transform;
         else
             throw parser_.error_at(t, describe(t) + " is not supported in a light_source yet",

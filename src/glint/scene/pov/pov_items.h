@@ -192,6 +192,7 @@ struct PovLight {
     std::optional<double> fade_distance;
     double fade_power = 0;
     bool shadowless = false;
+    bool media_interaction = true;                // scatters in media
     std::shared_ptr<const PovObject> looks_like;  // drawn at the light, casting no shadow
     Transform transform;
 };

@@ -47,7 +47,7 @@ double dot3(const PovVector& a, const PovVector& b) {
 
 // POV-Ray's scene items, besides objects, that glint does not read yet: their error says so.
 bool not_read_yet(const PovToken& token) {
-    static const std::string_view kNotYet[] = {"media", "photons", "rainbow"};
+    static const std::string_view kNotYet[] = {"photons", "rainbow"};
     return token.kind == PovTokenKind::identifier &&
            std::find(std::begin(kNotYet), std::end(kNotYet), token.text) != std::end(kNotYet);
 }
@@ -195,6 +195,8 @@ public:
                 background(t);
             else if (w == "fog")
                 fog(items_.fog(t));
+            else if (w == "media")
+                atmosphere(t);
             else if (w == "global_settings")
                 global_settings(t);
             else if (t.is_word("default"))
@@ -379,7 +381,8 @@ private:
                 attenuation = {0.5f, 0, 1 / (2 * fd * fd)};
         }
         if (pov.kind == PovLight::Kind::parallel) {
-            scene_.lights.push_back(DirectionalLight{normalize(target - at), c, shadows});
+            scene_.lights.push_back(
+                DirectionalLight{normalize(target - at), c, shadows, pov.media_interaction});
             return;
         }
         if (pov.kind == PovLight::Kind::spot) {
@@ -393,6 +396,7 @@ private:
             s.color = c;
             s.attenuation = attenuation;
             s.casts_shadows = shadows;
+            s.in_media = pov.media_interaction;
             scene_.lights.push_back(s);
             return;
         }
@@ -407,12 +411,13 @@ private:
                 a.attenuation = attenuation;
                 a.shadow_rays = pov.n1 * pov.n2;
                 a.casts_shadows = shadows;
+                a.in_media = pov.media_interaction;
                 scene_.lights.push_back(a);
                 any_area_light_ = true;
                 return;
             }
         }
-        scene_.lights.push_back(PointLight{at, c, attenuation, shadows});
+        scene_.lights.push_back(PointLight{at, c, attenuation, shadows, pov.media_interaction});
     }
 
     void background(const PovToken&) {
@@ -826,6 +831,20 @@ private:
         if (end - begin == 1) return std::move(shapes[begin]);
         const std::size_t middle = begin + (end - begin) / 2;
         return combined(balanced(shapes, begin, middle, op), balanced(shapes, middle, end, op), op);
+    }
+
+    // media { } outside objects: the scene's atmosphere, its densities in the scene's space.
+    void atmosphere(const PovToken& keyword) {
+        if (scene_.atmosphere.size() == kMaxMedia)
+            throw parser_.error_at(
+                keyword, "the scene holds at most " + std::to_string(kMaxMedia) + " media");
+        const PovMedium pov = items_.media(keyword);
+        Medium medium = pov.medium;
+        for (const PovPigment& density : pov.densities) {
+            refuse_unread(density);
+            medium.density.push_back(texture_of(density, Transform{}));
+        }
+        scene_.atmosphere.push_back(std::move(medium));
     }
 
     // The interior with its media's densities placed in the scene's space by `frame`, the

@@ -29,6 +29,10 @@ const KeySchema kShadows{"shadows", "bool", "true",
                          "it, as POV-Ray's `shadowless` fill lights (the Whitted family and path "
                          "tracing's light samples; particles from the light still stop at objects)",
                          ""};
+const KeySchema kInMedia{"in_media", "bool", "true",
+                         "whether the light scatters in participating media ([participating "
+                         "media](#participating-media)); POV-Ray's `media_interaction`",
+                         ""};
 const KeySchema kAreaAttenuation{"attenuation", "`[constant, linear, quadratic]`",
                                  "`[1, 0, 0]` (none)",
                                  "intensity at distance d is `color / (constant + linear·d + "
@@ -38,7 +42,7 @@ const KeySchema kAreaAttenuation{"attenuation", "`[constant, linear, quadratic]`
 // An area light: its shape's keys, then those every area light takes.
 EntitySchema area_light(std::string_view name, std::vector<KeySchema> keys) {
     keys.insert(keys.end(),
-                {kShadowRays, kVisible, kColor, kIntensity, kAreaAttenuation, kShadows});
+                {kShadowRays, kVisible, kColor, kIntensity, kAreaAttenuation, kShadows, kInMedia});
     return {EntityFamily::light, name, std::move(keys)};
 }
 
@@ -54,6 +58,7 @@ std::vector<EntitySchema> light_schemas() {
              kIntensity,
              kAttenuation,
              kShadows,
+             kInMedia,
          }},
         {EntityFamily::light,
          "directional",
@@ -63,6 +68,7 @@ std::vector<EntitySchema> light_schemas() {
              kColor,
              kIntensity,
              kShadows,
+             kInMedia,
          }},
         {EntityFamily::light,
          "spot",
@@ -86,6 +92,7 @@ std::vector<EntitySchema> light_schemas() {
              kIntensity,
              kAttenuation,
              kShadows,
+             kInMedia,
          }},
         area_light("sphere",
                    {

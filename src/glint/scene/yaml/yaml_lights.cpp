@@ -47,6 +47,7 @@ LightEntry parse_point(const MapReader& map) {
     light.color = read_emitted(map);
     light.attenuation = read_attenuation(map);
     light.casts_shadows = map.boolean("shadows", true);
+    light.in_media = map.boolean("in_media", true);
     return {light, std::nullopt};
 }
 
@@ -88,6 +89,7 @@ LightEntry parse_spot(const MapReader& map) {
     light.color = read_emitted(map);
     light.attenuation = read_attenuation(map);
     light.casts_shadows = map.boolean("shadows", true);
+    light.in_media = map.boolean("in_media", true);
     return {light, std::nullopt};
 }
 
@@ -96,6 +98,7 @@ LightEntry parse_directional(const MapReader& map) {
     light.direction = map.direction("direction");
     light.color = read_emitted(map);
     light.casts_shadows = map.boolean("shadows", true);
+    light.in_media = map.boolean("in_media", true);
     return {light, std::nullopt};
 }
 
@@ -105,6 +108,7 @@ LightEntry area_light(const MapReader& map, AreaLight light) {
     light.attenuation = read_attenuation(map);
     light.shadow_rays = map.integer_or("shadow_rays", 0);
     light.casts_shadows = map.boolean("shadows", true);
+    light.in_media = map.boolean("in_media", true);
     LightEntry entry{light, std::nullopt};
     if (map.boolean("visible", true))
         entry.visible_shape =

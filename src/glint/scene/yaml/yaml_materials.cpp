@@ -12,6 +12,7 @@
 #include "glint/image/texture_file.h"
 #include "glint/scene/suggest.h"
 #include "glint/scene/yaml/yaml_file_path.h"
+#include "glint/scene/yaml/yaml_medium.h"
 #include "glint/shading/noise.h"
 
 namespace glint {
@@ -27,8 +28,6 @@ constexpr std::string_view kWraps[] = {"clamp", "repeat"};
 constexpr std::string_view kFilters[] = {"trilinear", "ewa", "bilinear", "nearest"};
 constexpr std::string_view kCheckerSpaces[] = {"solid", "uv"};
 constexpr std::string_view kHighlights[] = {"blinn", "phong"};
-constexpr std::string_view kPhases[] = {"henyey_greenstein", "isotropic", "mie_hazy", "mie_murky",
-                                        "rayleigh"};
 constexpr std::string_view kEmissionSides[] = {"both", "front"};
 
 // Glasses by name: Sellmeier coefficients B1..B3, C1..C3 (um^2) from the makers' data sheets.
@@ -190,45 +189,6 @@ namespace {
 // `dispersion`: a glass's name, {abbe: V} around the material's ior (n_d), {cauchy: [A, B]} or
 // {sellmeier: [B1, B2, B3, C1, C2, C3]}. The formulas fix the index themselves, so the material
 // takes no `ior` with them; its ior becomes their value at the d line.
-// The medium filling the object's inside, when one of its coefficients is given.
-void read_medium(const MapReader& map, const YAML::Node& node, Material& m) {
-    const bool given =
-        map.has("medium_absorption") || map.has("medium_emission") || map.has("medium_scattering");
-    if (!given) {
-        for (const std::string_view key :
-             {"medium_phase", "medium_eccentricity", "medium_extinction", "medium_samples"})
-            if (map.has(key))
-                throw map.source().error_at(map.require(key).key_node,
-                                            std::string(key) +
-                                                " needs a medium: give medium_absorption, "
-                                                "medium_emission or medium_scattering");
-        return;
-    }
-    Medium medium;
-    medium.absorption = map.color("medium_absorption", Color{});
-    medium.emission = map.color("medium_emission", Color{});
-    medium.scattering = map.color("medium_scattering", Color{});
-    const std::string phase =
-        map.choice("medium_phase", kPhases, "medium phase", "medium phases", "isotropic");
-    medium.phase = phase == "rayleigh"            ? PhaseKind::rayleigh
-                   : phase == "mie_hazy"          ? PhaseKind::mie_hazy
-                   : phase == "mie_murky"         ? PhaseKind::mie_murky
-                   : phase == "henyey_greenstein" ? PhaseKind::henyey_greenstein
-                                                  : PhaseKind::isotropic;
-    medium.eccentricity = map.number_or("medium_eccentricity", medium.eccentricity);
-    medium.extinction = map.number_or("medium_extinction", medium.extinction);
-    medium.samples = map.integer_or("medium_samples", medium.samples);
-    // The keys' ranges hold the numbers; the colours' channels are checked here.
-    if (const std::string problem = describe_problem(medium); !problem.empty()) {
-        for (const std::string_view key :
-             {"medium_absorption", "medium_emission", "medium_scattering"})
-            if (map.has(key) && problem.find(key.substr(7)) != std::string::npos)
-                throw map.source().error_at(map.require(key).value, problem);
-        throw map.source().error_at(node, problem);
-    }
-    m.media.push_back(std::move(medium));
-}
-
 void read_dispersion(const MapReader& map, Material& m) {
     const YamlSource& source = map.source();
     const MapEntry* entry = map.find("dispersion");
@@ -338,7 +298,8 @@ Material read_material(const YamlSource& source, const ReadSandbox& sandbox, con
     if (const std::string problem = describe_problem(m.fade); !problem.empty())
         throw source.error_at(map.has("fade_color") ? map.require("fade_color").value : node,
                               problem);
-    read_medium(map, node, m);
+    if (std::optional<Medium> medium = read_medium(map, "medium_"))
+        m.media.push_back(std::move(*medium));
     m.hollow = map.boolean("hollow", m.hollow);
     m.ior = map.number_or("ior", m.ior);
     m.fresnel = map.boolean("fresnel", m.fresnel);

@@ -18,6 +18,7 @@
 #include "glint/scene/yaml/yaml_lights.h"
 #include "glint/scene/yaml/yaml_map_reader.h"
 #include "glint/scene/yaml/yaml_materials.h"
+#include "glint/scene/yaml/yaml_medium.h"
 #include "glint/scene/yaml/yaml_settings.h"
 #include "glint/scene/yaml/yaml_shape_reader.h"
 #include "glint/scene/yaml/yaml_sky.h"
@@ -85,9 +86,9 @@ void add_light_face(LightEntry& entry, std::size_t index, TextPosition where,
 }
 
 Scene read_scene(const YamlSource& source, const ReadSandbox& sandbox, const YAML::Node& root) {
-    const MapReader scene(
-        source, root, Field("", "scene"), "scene",
-        {"image", "camera", "ambient", "sky", "fog", "materials", "lights", "define", "objects"});
+    const MapReader scene(source, root, Field("", "scene"), "scene",
+                          {"image", "camera", "ambient", "sky", "fog", "atmosphere", "materials",
+                           "lights", "define", "objects"});
     Scene result;
     if (const MapEntry* image = section(scene, "image")) {
         result.settings = read_image(source, image->value, scene.field("image"), sandbox.limits);
@@ -115,6 +116,8 @@ Scene read_scene(const YamlSource& source, const ReadSandbox& sandbox, const YAM
     }
     if (const MapEntry* fog = section(scene, "fog"))
         result.fogs = read_fogs(source, fog->value, scene.field("fog"));
+    if (const MapEntry* atmosphere = section(scene, "atmosphere"))
+        result.atmosphere = read_atmosphere(source, atmosphere->value, scene.field("atmosphere"));
 
     result.sources.file = source.file_name();
     MaterialTable materials(source, sandbox, result.materials, result.sources.materials);
