@@ -29,8 +29,8 @@ namespace glint {
 FogEffect march_media(const World& world, ShadowFeelers& feelers, std::span<const Medium> media,
                       const Ray& ray, float length, float offset, RayStats& stats);
 
-// The transmittance of the media alone over `length` along the ray, at the intervals' middles
-// (what a shadow feeler crossing them keeps).
+// The transmittance of the media alone over `length` along the ray (what a shadow feeler
+// crossing them keeps), at the middles of a quarter as many intervals as a marched ray has.
 Color media_transmittance(std::span<const Medium> media, const Ray& ray, float length);
 
 // The media a ray inside the objects of the stack travels through: the innermost object's, or

@@ -22,12 +22,19 @@ PovPigment PovItemReader::density() {
     return pigment_body(plain, "}");
 }
 
+namespace {
+
+constexpr int kMostPoints = 128;
+
+}  // namespace
+
 PovMedium PovItemReader::media(const PovToken& keyword) {
     parser_.expect("{", "after " + keyword.text);
     const std::optional<PovMedium> declared = take_declared<PovMedium>();
     PovMedium m = declared ? *declared : PovMedium{};
     // POV-Ray 3.7's sampling: `intervals` stretches, `samples` points in each, and with method 3
-    // up to 2^aa_level more where they differ; glint takes as many evenly spread points.
+    // up to 2^aa_level more where they differ; glint spreads as many points evenly, at most
+    // kMostPoints (POV-Ray's subdivision seldom goes all the way).
     int intervals = 1, samples = 1, method = 3, aa_level = 3;
     bool sampling_given = false;
     const auto colour = [&](const PovToken& token) {
@@ -100,7 +107,7 @@ PovMedium PovItemReader::media(const PovToken& keyword) {
     }
     if (sampling_given || !declared) {
         const int adaptive = method == 3 ? 1 << aa_level : 1;
-        m.medium.samples = std::clamp(intervals * samples * adaptive, 1, 1000);
+        m.medium.samples = std::clamp(intervals * samples * adaptive, 1, kMostPoints);
     }
     return m;
 }
