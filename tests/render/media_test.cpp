@@ -129,6 +129,19 @@ TEST_P(MediaInside, AHollowObjectInsideHoldsTheMediumAndASolidOneKeepsItOut) {
     EXPECT_NEAR(mean_of(render(World(scene), {})).r, expected, 1e-3f);
 }
 
+TEST_P(MediaInside, AScatteringMediumIsLitThroughItsObjectsSurface) {
+    // Lit from above, with opaque shadows: the feelers from the medium pass the sphere's clear
+    // surface. Scattering 0.1 that extinguishes nothing adds 0.1 x 1 over the chord of 2.
+    Scene scene = medium_before_a_wall(GetParam());
+    ASSERT_FALSE(scene.settings.transparent_shadows);
+    Medium haze;
+    haze.scattering = Color::gray(0.1f);
+    haze.extinction = 0;
+    scene.materials[0].media = {haze};
+    scene.lights.push_back(DirectionalLight{{0, -1, 0}, {1, 1, 1}});
+    EXPECT_NEAR(mean_of(render(World(scene), {})).r, 1.2f, 1e-3f);
+}
+
 INSTANTIATE_TEST_SUITE_P(TheIntegratorsThatMarchMedia, MediaInside,
                          ::testing::Values(IntegratorKind::whitted, IntegratorKind::distributed));
 

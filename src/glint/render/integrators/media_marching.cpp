@@ -63,7 +63,7 @@ FogEffect march_media(const World& world, ShadowFeelers& feelers, std::span<cons
                     scattering[k] * phase_value(media[k].phase, media[k].eccentricity, cos_theta);
             if (is_black(scattered)) continue;
             const Color shadow = feelers.transmittance(l, at, Normal3(ls.to_light), ls.to_light,
-                                                       ls.distance, ray.time, stats);
+                                                       ls.distance, ray.time, stats, true);
             source += scattered * ls.intensity * shadow;
         }
         effect.added += effect.transmittance * source * through_interval(sigma_t, ds);

@@ -23,7 +23,9 @@ namespace glint {
 // What the media do to the light the ray (unit direction) brings back from `length` along it:
 // their transmittance, and the light they emit and scatter towards the ray's origin. In each
 // interval of length ds, at the point `offset` (in [0, 1)) of the way through it, the source
-// S = emission + sum over lights of scattering phase L_light (with a shadow feeler) and
+// S = emission + sum over lights of scattering phase L_light (with a shadow feeler, which
+// passes transparent surfaces whatever transparent_shadows says: the medium's own surface
+// would otherwise shadow it) and
 // sigma_t give the interval's light S (1 - exp(-sigma_t ds)) / sigma_t, exact where S and
 // sigma_t are constant over it. The intervals are the most samples of the media.
 FogEffect march_media(const World& world, ShadowFeelers& feelers, std::span<const Medium> media,

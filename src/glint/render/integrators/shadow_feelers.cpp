@@ -10,7 +10,7 @@ namespace glint {
 
 Color ShadowFeelers::transmittance(std::size_t light, const SurfacePoint& sp, Normal3 n,
                                    Vector3 to_light, float light_distance, float time,
-                                   RayStats& stats) {
+                                   RayStats& stats, bool through_transparent) {
     constexpr Color kLit{1, 1, 1};
     if (light != kNoLight && !casts_shadows(world_.lights()[light])) return kLit;
     if (light != kNoLight)
@@ -39,7 +39,7 @@ Color ShadowFeelers::transmittance(std::size_t light, const SurfacePoint& sp, No
         feeler.direction = aim / remaining;
         remaining -= world_.ray_epsilon(target);
     }
-    if (!transparent_) {
+    if (!transparent_ && !through_transparent) {
         stats.count(RayKind::shadow);
         bool blocked = false;
         if (light == kNoLight)

@@ -36,9 +36,11 @@ public:
     // The fraction of the light that reaches the surface point sp along the unit direction
     // to_light over light_distance, from world.lights()[light] (or kNoLight), per channel. n is
     // the geometric normal on the side of the light; time is the moment the shadow ray is traced
-    // at.
+    // at. `through_transparent` passes transparent surfaces whatever transparent_shadows says:
+    // a point in a medium is lit through the surface of the object that holds it.
     Color transmittance(std::size_t light, const SurfacePoint& sp, Normal3 n, Vector3 to_light,
-                        float light_distance, float time, RayStats& stats);
+                        float light_distance, float time, RayStats& stats,
+                        bool through_transparent = false);
 
 private:
     const World& world_;
