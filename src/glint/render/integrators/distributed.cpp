@@ -73,8 +73,7 @@ Color DistributedIntegrator::shade(const Ray& ray, int depth, float weight, Samp
     const float length = hit ? hit->shape_hit.t : kInfinity;
     std::optional<FogEffect> fog = ray_fog(world_, ray, media, length);
     // Each sample draws where in its intervals the media are evaluated.
-    if ((media.size() > 0 || !world_.atmosphere().empty()) && media_around(world_, media))
-        [[unlikely]]
+    if (media_around(world_, media)) [[unlikely]]
         fog = with_media(world_, feelers_, media, ray, length,
                          stream.get_1d(stream.next_dimension()), stats, fog);
     if (!hit) {

@@ -11,6 +11,8 @@ namespace {
 
 Color rgb_of(const PovVector& c) { return {float(c[0]), float(c[1]), float(c[2])}; }
 
+constexpr int kMostPoints = 128;
+
 }  // namespace
 
 PovPigment PovItemReader::density() {
@@ -22,12 +24,6 @@ PovPigment PovItemReader::density() {
     return pigment_body(plain, "}");
 }
 
-namespace {
-
-constexpr int kMostPoints = 128;
-
-}  // namespace
-
 PovMedium PovItemReader::media(const PovToken& keyword) {
     parser_.expect("{", "after " + keyword.text);
     const std::optional<PovMedium> declared = take_declared<PovMedium>();
@@ -37,22 +33,24 @@ PovMedium PovItemReader::media(const PovToken& keyword) {
     // kMostPoints (POV-Ray's subdivision seldom goes all the way).
     int intervals = 1, samples = 1, method = 3, aa_level = 3;
     bool sampling_given = false;
-    const auto colour = [&](const PovToken& token) {
+    // Each value is checked where it is written, by the medium's own ranges.
+    const auto checked = [&](const PovToken& at) {
+        if (const std::string problem = describe_problem(m.medium); !problem.empty())
+            throw parser_.error_at(at, problem);
+    };
+    const auto colour = [&](const PovToken& token, Color& into) {
         const PovToken at = parser_.peek();
-        const PovVector c = parser_.color_expression("after " + token.text);
-        for (int i = 0; i < 3; ++i)
-            if (!(c[i] >= 0))
-                throw parser_.error_at(at, "media " + token.text + " must not be negative");
-        return rgb_of(c);
+        into = rgb_of(parser_.color_expression("after " + token.text));
+        checked(at);
     };
     for (;;) {
         const PovToken token = parser_.next();
         if (token.is_symbol("}")) break;
         const std::string& w = token.text;
         if (w == "absorption") {
-            m.medium.absorption = colour(token);
+            colour(token, m.medium.absorption);
         } else if (w == "emission") {
-            m.medium.emission = colour(token);
+            colour(token, m.medium.emission);
         } else if (w == "scattering") {
             parser_.expect("{", "after scattering");
             const int type = parser_.whole_number("as the scattering type", 1, 5);
@@ -62,21 +60,17 @@ PovMedium PovItemReader::media(const PovToken& keyword) {
                                             PhaseKind::henyey_greenstein};
             m.medium.phase = kTypes[type - 1];
             parser_.accept(",");
-            m.medium.scattering = colour(token);
+            colour(token, m.medium.scattering);
             for (;;) {
                 const PovToken more = parser_.next();
                 if (more.is_symbol("}")) break;
                 const PovToken at = parser_.peek();
                 if (more.is_word("eccentricity")) {
                     m.medium.eccentricity = float(parser_.finite_float("after eccentricity"));
-                    if (!(m.medium.eccentricity > -1 && m.medium.eccentricity < 1))
-                        throw parser_.error_at(at, "eccentricity must be in (-1, 1), got " +
-                                                       format_pov_number(m.medium.eccentricity));
+                    checked(at);
                 } else if (more.is_word("extinction")) {
                     m.medium.extinction = float(parser_.finite_float("after extinction"));
-                    if (!(m.medium.extinction >= 0 && m.medium.extinction <= 1))
-                        throw parser_.error_at(at, "extinction must be in [0, 1], got " +
-                                                       format_pov_number(m.medium.extinction));
+                    checked(at);
                 } else {
                     throw unsupported(more, "in scattering");
                 }

@@ -528,9 +528,6 @@ private:
         }
         const bool tilted = normal && normal->unsupported.empty();
         placed = placed || tilted;
-        if (interior)
-            for (const PovMedium& medium : interior->media)
-                for (const PovPigment& density : medium.densities) refuse_unread(density);
         const MaterialKey key{texture, interior, placed ? frame.matrix().m : Matrix4::identity().m,
                               hollow};
         if (const auto found = materials_.find(key); found != materials_.end())
@@ -610,11 +607,7 @@ private:
         m.hollow = hollow;
         if (interior) {
             for (const PovMedium& medium : interior->media) {
-                Medium glint_medium = medium.medium;
-                // Placed in the scene's space already (placed_interior).
-                for (const PovPigment& density : medium.densities)
-                    glint_medium.density.push_back(texture_of(density, Transform{}));
-                m.media.push_back(std::move(glint_medium));
+                m.media.push_back(medium_of(medium));  // placed already (placed_interior)
             }
         }
         scene_.materials.push_back(std::move(m));
@@ -833,18 +826,22 @@ private:
         return combined(balanced(shapes, begin, middle, op), balanced(shapes, middle, end, op), op);
     }
 
-    // media { } outside objects: the scene's atmosphere, its densities in the scene's space.
-    void atmosphere(const PovToken& keyword) {
-        if (scene_.atmosphere.size() == kMaxMedia)
-            throw parser_.error_at(
-                keyword, "the scene holds at most " + std::to_string(kMaxMedia) + " media");
-        const PovMedium pov = items_.media(keyword);
+    // glint's medium of a POV-Ray medium whose densities lie in the scene's space.
+    Medium medium_of(const PovMedium& pov) const {
         Medium medium = pov.medium;
         for (const PovPigment& density : pov.densities) {
             refuse_unread(density);
             medium.density.push_back(texture_of(density, Transform{}));
         }
-        scene_.atmosphere.push_back(std::move(medium));
+        return medium;
+    }
+
+    // media { } outside objects: the scene's atmosphere, its densities in the scene's space.
+    void atmosphere(const PovToken& keyword) {
+        if (scene_.atmosphere.size() == kMaxMedia)
+            throw parser_.error_at(
+                keyword, "the scene holds at most " + std::to_string(kMaxMedia) + " media");
+        scene_.atmosphere.push_back(medium_of(items_.media(keyword)));
     }
 
     // The interior with its media's densities placed in the scene's space by `frame`, the
