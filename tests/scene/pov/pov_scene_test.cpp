@@ -167,7 +167,17 @@ TEST(PovScene, TransformsCsgAndDeclaredObjects) {
     const auto& outer = std::get<Csg>(s.objects[3].shape);  // box - (sphere + sphere)
     EXPECT_EQ(outer.operation, CsgOperation::difference);
     EXPECT_TRUE(std::holds_alternative<Box>(*outer.a));
-    EXPECT_EQ(std::get<Csg>(*outer.b).operation, CsgOperation::union_of);
+    EXPECT_EQ(std::get<Csg>(*outer.b).operation, CsgOperation::merge);
+}
+
+// What a difference takes away is one solid: where two of its parts overlap, a point inside
+// one is inside what is taken, though the ray has left the other.
+TEST(PovScene, ADifferenceTakesAwayOverlappingPartsWhole) {
+    const Scene s = parse(R"(
+        difference { box { -1, 1 } box { <-2, -2, -2>, <2, 0.5, 2> } box { <-3, 0, -3>, 3 } })");
+    ASSERT_EQ(s.objects.size(), 1u);
+    EXPECT_FALSE(intersect(s.objects[0].shape, Ray{{0, 0.25f, -5}, {0, 0, 1}}, {0, kInfinity}));
+    EXPECT_FALSE(intersect(s.objects[0].shape, Ray{{0, -0.5f, -5}, {0, 0, 1}}, {0, kInfinity}));
 }
 
 // Long CSGs (a polyhedron is an intersection of its faces' planes) become balanced trees: each

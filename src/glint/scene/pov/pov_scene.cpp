@@ -794,7 +794,10 @@ private:
                                                                     : CsgOperation::union_of;
         Operand shape = balanced(kept, 0, kept.size(), op);
         if (taken.empty()) return shape.shape;
-        return combined(std::move(shape), balanced(taken, 0, taken.size(), CsgOperation::union_of),
+        // What is taken away is one solid: its parts merged, so that where two of them overlap
+        // a point inside one stays inside what is taken (a union's inner surfaces would say
+        // the ray leaves it there).
+        return combined(std::move(shape), balanced(taken, 0, taken.size(), CsgOperation::merge),
                         CsgOperation::difference)
             .shape;
     }
