@@ -157,8 +157,8 @@ void World::build_shadow_maps() {
 }
 
 void World::add_object_light(const SceneObject& object, std::uint32_t primitive) {
-    const Color emission = materials_[object.material].emission;
-    if (!object.emits_light || is_black(emission)) return;
+    const Material& material = materials_[object.material];
+    if (!object.emits_light || !emits(material)) return;
     if (lights_scene_.empty()) {
         lights_scene_.assign(primitive, 0);
         object_light_of_.assign(primitive, -1);
@@ -168,10 +168,12 @@ void World::add_object_light(const SceneObject& object, std::uint32_t primitive)
     object_light_of_.resize(primitive, -1);
     lights_scene_.push_back(1);
     object_light_of_.push_back(-1);
+    // Light in the surface's colour varies over it: the rays that find it carry it alone.
+    if (is_black(material.emission)) return;
     if (auto surface = SurfaceSampler::of(object.shape)) {
         object_light_of_.back() = std::int32_t(object_lights_.size());
-        object_lights_.push_back({std::move(*surface), emission,
-                                  materials_[object.material].emits_both_sides, primitive});
+        object_lights_.push_back(
+            {std::move(*surface), material.emission, material.emits_both_sides, primitive});
     } else if (!integrator_info(settings_.integrator).physically_based &&
                settings_.integrator != IntegratorKind::whitted) {
         warnings_.push_back("object " + std::to_string(primitive) + " (" +

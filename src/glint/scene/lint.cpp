@@ -55,7 +55,7 @@ void no_lights(const Scene& scene, Warnings& out) {
     // A glowing object counts even when it lights nothing (emits_light: false): it is seen, as
     // a slit seen through a prism is.
     for (const SceneObject& object : scene.objects)
-        if (!is_black(scene.materials[object.material].emission)) return;
+        if (emits(scene.materials[object.material])) return;
     out.push_back({"no-lights", "scene",
                    "the scene has no lights and no emitting objects: only the ambient term "
                    "(ka * ambient) lights it, so every surface is flat",

@@ -27,6 +27,10 @@ struct MaterialMaps {
     std::optional<NoiseScalar> reflect, roughness, transmit_roughness;
     std::optional<BumpMap> bump;
     std::optional<NormalPattern> normal_pattern;
+    // Light the surface gives off in its own colour C, as C times this, on top of the
+    // material's emission (POV-Ray's emission of a pigment that varies). Such an object is
+    // seen and lights the scene by the rays that find it, but no shadow ray aims at it.
+    Color color_emission;
 };
 
 struct Material {
@@ -81,5 +85,10 @@ struct Material {
     // on them asks one question.
     std::shared_ptr<const MaterialMaps> maps;
 };
+
+// Whether the surface gives off light anywhere: a constant emission, or one in its colour.
+inline bool emits(const Material& m) {
+    return !is_black(m.emission) || (m.maps && !is_black(m.maps->color_emission));
+}
 
 }  // namespace glint

@@ -76,7 +76,10 @@ inline SurfaceContext surface_context(const World& world, const Ray& ray, const 
             c.sp.shading_normal = perturbed(*maps.normal_pattern, c.sp.shading_normal, c.sp.p);
     }
     c.entering = dot(c.sp.normal, ray.direction) < 0;
-    c.emission = m.emits_both_sides || c.entering ? m.emission : Color{};
+    if (m.emits_both_sides || c.entering) {
+        c.emission = m.emission;
+        if (m.maps) c.emission += c.color * m.maps->color_emission;
+    }
     c.ng = c.entering ? c.sp.normal : -c.sp.normal;
     c.n = c.entering ? c.sp.shading_normal : -c.sp.shading_normal;
     c.to_viewer = -ray.direction;

@@ -13,6 +13,7 @@
 #include <tuple>
 
 #include "glint/scene/pov/pov_item_reader.h"
+#include "glint/scene/pov/pov_radiosity.h"
 #include "glint/scene/pov/pov_sky.h"
 #include "glint/scene/quote.h"
 #include "glint/scene/scene_error.h"
@@ -217,6 +218,10 @@ public:
             scene_.warnings.push_back("#debug: " + message);
         choose_working_space_and_bake_sky();
         if (any_area_light_) scene_.settings.integrator = IntegratorKind::distributed;
+        if (radiosity_) {
+            const std::optional<double> version = parser_.scene_version();
+            light_by_radiosity(*radiosity_, !(version && *version >= 3.7), scene_, scene_.warnings);
+        }
         return std::move(scene_);
     }
 
@@ -475,7 +480,9 @@ private:
                 parser_.finite_float("after " + w);
             else if (w == "charset")
                 parser_.next();
-            else if (w == "radiosity" || w == "photons" || w == "subsurface") {
+            else if (w == "radiosity")
+                radiosity_ = read_pov_radiosity(parser_, items_);
+            else if (w == "photons" || w == "subsurface") {
                 parser_.skip_braced(t);
                 scene_.warnings.push_back("global_settings " + w +
                                           " { } is ignored: glint renders without it");
@@ -572,8 +579,13 @@ private:
                                                   float(f.reflection_falloff), f.fresnel};
         m.reflect_metallic = float(f.reflection_metallic);
         m.reflect_color = f.reflection_color;
-        if (f.emission > 0 && p.kind == PovPigment::Kind::color)
+        if (f.emission > 0 && p.kind == PovPigment::Kind::color) {
             m.emission = rgb(p.color) * float(f.emission);
+        } else if (f.emission > 0) {
+            MaterialMaps maps = m.maps ? *m.maps : MaterialMaps{};
+            maps.color_emission = Color{1, 1, 1} * float(f.emission);
+            m.maps = std::make_shared<const MaterialMaps>(std::move(maps));
+        }
         if (layers.size() == 1) {
             m.color = texture_of(p, frame);
             m.transmit = float(std::clamp(transmitted(p), 0.0, 1.0));
@@ -944,6 +956,7 @@ private:
     std::map<MaterialKey, std::uint32_t> materials_;
     bool any_area_light_ = false;
     std::optional<double> assumed_gamma_;
+    std::optional<PovRadiosity> radiosity_;
     std::optional<PovSkySphere> sky_;
     std::set<std::string> warned_normals_;
 };
