@@ -180,6 +180,50 @@ TEST(PovScene, ADifferenceTakesAwayOverlappingPartsWhole) {
     EXPECT_FALSE(intersect(s.objects[0].shape, Ray{{0, -0.5f, -5}, {0, 0, 1}}, {0, kInfinity}));
 }
 
+// trace() meets a declared object as POV-Ray 3.7 does (its #debug output for the same lines):
+// the first hit and the outward normal, from outside and from inside, and <0, 0, 0> for a miss
+// and for what a difference cut away.
+TEST(PovScene, TraceFindsTheFirstHitAndItsNormal) {
+    const Scene s = parse(R"(
+        #declare N = <0, 0, 0>; #declare M = <0, 0, 0>; #declare K = <0, 0, 0>;
+        #declare L = <0, 0, 0>;
+        #declare Ball = sphere { 0, 1 scale 2 translate x }
+        #declare P = trace(Ball, <1, 5, 0>, -y, N);
+        #debug concat("P ", vstr(3, P, ",", 0, 4), " N ", vstr(3, N, ",", 0, 4))
+        #declare Q = trace(Ball, <10, 5, 0>, -y, M);
+        #debug concat("Q ", vstr(3, Q, ",", 0, 4), " M ", vstr(3, M, ",", 0, 4))
+        #declare Box = box { -1, 1 }
+        #declare R = trace(Box, <0, 0, 0>, x, K);
+        #debug concat("R ", vstr(3, R, ",", 0, 4), " K ", vstr(3, K, ",", 0, 4))
+        #declare S = trace(Box, <0, 0.5, -5>, z);
+        #debug concat("S ", vstr(3, S, ",", 0, 4))
+        #declare Hole = difference { box { -1, 1 } sphere { 0, 1.2 } }
+        #declare T = trace(Hole, <0, 0, -5>, z, L);
+        #debug concat("T ", vstr(3, T, ",", 0, 4), " L ", vstr(3, L, ",", 0, 4))
+        sphere { P, 0.1 })");
+    const std::vector<std::string> expected = {
+        "#debug: P 1.0000,2.0000,0.0000 N 0.0000,1.0000,0.0000",
+        "#debug: Q 0.0000,0.0000,0.0000 M 0.0000,0.0000,0.0000",
+        "#debug: R 1.0000,0.0000,0.0000 K 1.0000,0.0000,0.0000", "#debug: S 0.0000,0.5000,-1.0000",
+        "#debug: T 0.0000,0.0000,0.0000 L 0.0000,0.0000,0.0000"};
+    EXPECT_EQ(s.warnings, expected);
+    ASSERT_EQ(s.objects.size(), 1u);
+    EXPECT_TRUE(intersect(s.objects[0].shape, Ray{{1, 2, -5}, {0, 0, 1}}, {0, kInfinity}));
+}
+
+TEST(PovScene, TraceRefusesWhatItCannotTake) {
+    EXPECT_NE(error_of("#declare P = trace(1, 0, y);")
+                  .find("trace takes an object first, got a "
+                        "float"),
+              std::string::npos);
+    EXPECT_NE(error_of("#declare B = box { -1, 1 } #declare P = trace(B, 0, y, Undeclared);")
+                  .find("1:56: error: trace's fourth argument must be a vector declared before"),
+              std::string::npos);
+    EXPECT_NE(error_of("#declare B = box { -1, 1 } #declare P = trace(B, 0, 0);")
+                  .find("trace's direction is zero"),
+              std::string::npos);
+}
+
 // Long CSGs (a polyhedron is an intersection of its faces' planes) become balanced trees: each
 // level of glint's CSG walks its operands' hits again, so depth, not count, sets the cost.
 TEST(PovScene, LongCsgsAreBalancedTrees) {

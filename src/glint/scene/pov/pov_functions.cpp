@@ -281,6 +281,34 @@ std::optional<PovValue> PovParser::builtin(const PovToken& name) {
         const auto [low, high] = extent_reader_(**item, name);
         return w == "min_extent" ? low : high;
     }
+    if (w == "trace" && trace_reader_) {
+        // trace(OBJECT, A, B [, NORMAL]): the first hit of the ray from A along B, or <0, 0, 0>;
+        // NORMAL, a vector declared before, takes the normal there (<0, 0, 0> for none).
+        expect("(", "after trace");
+        const PovValue object = expression();
+        const auto* item = std::get_if<std::shared_ptr<const PovItemRef>>(&object);
+        if (!item)
+            throw error_at(name,
+                           std::string("trace takes an object first, got ") + kind_of(object));
+        expect(",", "after trace's object");
+        const PovVector from = vector_expression("as trace's start");
+        expect(",", "after trace's start");
+        const PovVector direction = vector_expression("as trace's direction");
+        PovValue* normal = nullptr;
+        if (accept(",")) {
+            const PovToken id = raw_next();
+            normal = symbols_.find(id.text);
+            if (!normal || !std::holds_alternative<PovVector>(*normal))
+                throw error_at(id,
+                               "trace's fourth argument must be a vector declared before, "
+                               "which takes the normal; got " +
+                                   describe(id));
+        }
+        expect(")", "after trace's arguments");
+        const std::optional<TraceHit> hit = trace_reader_(*item, from, direction, name);
+        if (normal) *normal = hit ? hit->normal : vector3(0, 0, 0);
+        return hit ? hit->point : vector3(0, 0, 0);
+    }
     if (w == "defined") {
         expect("(", "after defined");
         const PovToken id = raw_next();  // a macro's name is not called here

@@ -102,6 +102,15 @@ public:
     using ExtentReader =
         std::function<std::pair<PovVector, PovVector>(const PovItemRef&, const PovToken& at)>;
     void set_extent_reader(ExtentReader reader) { extent_reader_ = std::move(reader); }
+    // trace(): where the ray from `from` along `direction` first meets a declared object, and
+    // the surface's normal there (pointing out of it); nothing where it misses.
+    struct TraceHit {
+        PovVector point, normal;
+    };
+    using TraceReader = std::function<std::optional<TraceHit>(
+        const std::shared_ptr<const PovItemRef>&, const PovVector& from, const PovVector& direction,
+        const PovToken& at)>;
+    void set_trace_reader(TraceReader reader) { trace_reader_ = std::move(reader); }
 
     PovSymbols& symbols() { return symbols_; }
     // The element that the subscripts next in the stream name, `name` having been read; an
@@ -253,6 +262,7 @@ private:
     std::map<std::string, OpenFile> open_files_;  // by handle
     ItemReader item_reader_;
     ExtentReader extent_reader_;
+    TraceReader trace_reader_;
 };
 
 }  // namespace glint

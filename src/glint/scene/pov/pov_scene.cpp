@@ -171,6 +171,10 @@ public:
             if (b.is_empty()) return std::pair{PovVector{}, PovVector{}};
             return std::pair{corner(b.min, -1e10f), corner(b.max, 1e10f)};
         });
+        parser_.set_trace_reader(
+            [this](const std::shared_ptr<const PovItemRef>& ref, const PovVector& from,
+                   const PovVector& direction,
+                   const PovToken& at) { return trace(ref, from, direction, at); });
         parser_.set_item_reader([this](const PovToken& keyword) -> std::optional<PovValue> {
             auto item = items_.read(keyword);
             if (!item) return std::nullopt;
@@ -935,6 +939,29 @@ private:
         if (sky_) scene_.sky = bake_sky(*sky_, scene_.settings.background, into_space);
     }
 
+    // trace(): the object's shape, built once for the calls in a row that trace the same object
+    // (a loop placing things on a surface), met by the ray.
+    std::optional<PovParser::TraceHit> trace(const std::shared_ptr<const PovItemRef>& ref,
+                                             const PovVector& from, const PovVector& direction,
+                                             const PovToken& at) {
+        const auto* object = std::get_if<PovObject>(&ref->item);
+        if (!object) throw parser_.error_at(at, "trace takes an object");
+        if (ref != traced_) {
+            traced_shape_ = placed_shape(*object);
+            traced_ = ref;
+        }
+        const Vector3 d{float(direction[0]), float(direction[1]), float(direction[2])};
+        if (!(length(d) > 0)) throw parser_.error_at(at, "trace's direction is zero");
+        const Ray ray{{float(from[0]), float(from[1]), float(from[2])}, normalize(d)};
+        const std::optional<ShapeHit> hit = intersect(traced_shape_, ray, {0, kInfinity});
+        if (!hit) return std::nullopt;
+        const SurfacePoint sp = surface_at(traced_shape_, ray, *hit);
+        const auto vector = [](auto v) {
+            return PovVector{{double(v.x), double(v.y), double(v.z)}};
+        };
+        return PovParser::TraceHit{vector(sp.p), vector(sp.shading_normal)};
+    }
+
     // The lights inside a CSG's operands, at any depth.
     void add_lights(const PovObject& object, const Transform& placement) {
         for (const auto& child : object.children) {
@@ -957,6 +984,8 @@ private:
     bool any_area_light_ = false;
     std::optional<double> assumed_gamma_;
     std::optional<PovRadiosity> radiosity_;
+    std::shared_ptr<const PovItemRef> traced_;  // the object trace() met last, and its shape
+    Shape traced_shape_;
     std::optional<PovSkySphere> sky_;
     std::set<std::string> warned_normals_;
 };
