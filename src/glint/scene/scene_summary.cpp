@@ -39,8 +39,7 @@ SceneSummary summarize_scene(const Scene& scene) {
     for (const SceneObject& object : scene.objects) {
         ++s.objects_by_shape[std::string(shape_name(object.shape))];
         s.triangles += triangle_count(object.shape);
-        if (object.emits_light && emits(scene.materials[object.material]))
-            ++s.emitting_objects;
+        if (object.emits_light && emits(scene.materials[object.material])) ++s.emitting_objects;
         const Bounds3 b = bounds(object.shape);
         if (b.is_finite())
             s.bounds = merge(s.bounds, b);

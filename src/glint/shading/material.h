@@ -27,9 +27,10 @@ struct MaterialMaps {
     std::optional<NoiseScalar> reflect, roughness, transmit_roughness;
     std::optional<BumpMap> bump;
     std::optional<NormalPattern> normal_pattern;
-    // Light the surface gives off in its own colour C, as C times this, on top of the
-    // material's emission (POV-Ray's emission of a pigment that varies). Such an object is
-    // seen and lights the scene by the rays that find it, but no shadow ray aims at it.
+    // Light the surface gives off in its own colour C (a layered texture's ambient blend), as
+    // C times this, on top of the material's emission (POV-Ray's emission of a pigment that
+    // varies). Such an object is seen and lights the scene by the rays that find it, but no
+    // shadow ray aims at it.
     Color color_emission;
 };
 

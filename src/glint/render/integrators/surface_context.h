@@ -78,7 +78,7 @@ inline SurfaceContext surface_context(const World& world, const Ray& ray, const 
     c.entering = dot(c.sp.normal, ray.direction) < 0;
     if (m.emits_both_sides || c.entering) {
         c.emission = m.emission;
-        if (m.maps) c.emission += c.color * m.maps->color_emission;
+        if (m.maps) c.emission += c.ambient_color * m.maps->color_emission;
     }
     c.ng = c.entering ? c.sp.normal : -c.sp.normal;
     c.n = c.entering ? c.sp.shading_normal : -c.sp.shading_normal;

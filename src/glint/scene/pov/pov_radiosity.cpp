@@ -37,7 +37,8 @@ PovRadiosity read_pov_radiosity(PovParser& parser, PovItemReader& items) {
                 throw parser.error_at(at,
                                       "brightness must be above 0, got " + number(r.brightness));
         } else if (w == "recursion_limit") {
-            r.recursion_limit = parser.whole_number("after recursion_limit", 1, 20);
+            // The diffuse bounces gathered: glint's paths bounce to max_trace_level.
+            parser.whole_number("after recursion_limit", 1, 20);
         } else if (w == "count" || w == "nearest_count") {
             // How many rays a cached point gathers (and from what pool of directions), and how
             // many cached points a pixel blends: the cache's, which a path tracer has not.

@@ -15,8 +15,7 @@ namespace glint {
 
 // What `global_settings { radiosity { … } }` asks for, read and checked.
 struct PovRadiosity {
-    double brightness = 1;    // scales the gathered light
-    int recursion_limit = 2;  // diffuse bounces gathered
+    double brightness = 1;  // scales the gathered light
 };
 
 // The samples a pixel a radiosity scene takes unless the command line says otherwise: a

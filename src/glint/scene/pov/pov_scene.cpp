@@ -951,8 +951,12 @@ private:
             traced_ = ref;
         }
         const Vector3 d{float(direction[0]), float(direction[1]), float(direction[2])};
-        if (!(length(d) > 0)) throw parser_.error_at(at, "trace's direction is zero");
-        const Ray ray{{float(from[0]), float(from[1]), float(from[2])}, normalize(d)};
+        const Point3 o{float(from[0]), float(from[1]), float(from[2])};
+        if (!(length(d) > 0) || !std::isfinite(length(d)))
+            throw parser_.error_at(at, "trace's direction is zero or beyond a float's range");
+        if (!std::isfinite(o.x) || !std::isfinite(o.y) || !std::isfinite(o.z))
+            throw parser_.error_at(at, "trace's start is beyond a float's range");
+        const Ray ray{o, normalize(d)};
         const std::optional<ShapeHit> hit = intersect(traced_shape_, ray, {0, kInfinity});
         if (!hit) return std::nullopt;
         const SurfacePoint sp = surface_at(traced_shape_, ray, *hit);
