@@ -1,5 +1,5 @@
 // The glint command-line tool: `glint render SCENE`, `glint explain SCENE --pixel X,Y`,
-// `glint info SCENE` and `glint bench SCENE`, with --help and --version.
+// `glint info SCENE`, `glint bench SCENE` and `glint merge PARTS...`, with --help and --version.
 #include <CLI/CLI.hpp>
 #include <csignal>
 #include <cstdint>
@@ -12,6 +12,7 @@
 #include "glint/scene/scene.h"
 #include "glint/scene/scene_formats.h"
 #include "info_command.h"
+#include "merge_command.h"
 #include "render_command.h"
 #include "scene_read_options.h"
 #include "size_option.h"
@@ -38,6 +39,8 @@ Examples:
   glint info scenes/showcase.yaml                       counts, structure, warnings
   glint info scene.yaml --accel kdtree --json
   glint bench scene.nff --json --rays 100000           build time, Mrays/s per structure
+  glint render big.yaml -o big.exr --part 3/8           writes big.exr.part3of8; when all
+  glint merge big.exr.part*of8                          8 are done, writes big.exr
 )";
 
 void add_render_command(CLI::App& app, glint::cli::RenderCommand& c) {
@@ -88,6 +91,16 @@ void add_render_command(CLI::App& app, glint::cli::RenderCommand& c) {
                      "beside the output (<stem>.partial<ext>) and a resume file")
         ->type_name("MINUTES")
         ->check(CLI::PositiveNumber);
+    render
+        ->add_option("--part", c.part,
+                     "Render part I of N (every Nth tile, or a run of sample passes) into "
+                     "<output>.partIofN, for glint merge to make the image of")
+        ->type_name("I/N");
+    render
+        ->add_option("--split", c.split,
+                     "What --part's parts are: tiles (the default; any render) or sample passes "
+                     "(not with adaptive sampling)")
+        ->check(CLI::IsMember({"tiles", "passes"}));
 }
 
 }  // namespace
@@ -110,6 +123,8 @@ int main(int argc, char** argv) {
     const CLI::App* bench_app = glint::cli::add_bench_command(app, bench);
     glint::cli::InfoCommand info;
     const CLI::App* info_app = glint::cli::add_info_command(app, info);
+    glint::cli::MergeCommand merge;
+    const CLI::App* merge_app = glint::cli::add_merge_command(app, merge);
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {
@@ -119,5 +134,6 @@ int main(int argc, char** argv) {
     if (bench_app->parsed()) return glint::cli::run_bench(bench);
     if (explain_app->parsed()) return glint::cli::run_explain(explain);
     if (info_app->parsed()) return glint::cli::run_info(info);
+    if (merge_app->parsed()) return glint::cli::run_merge(merge);
     return glint::cli::run_render(render);
 }

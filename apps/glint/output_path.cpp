@@ -56,4 +56,24 @@ std::filesystem::path partial_output_path(const std::filesystem::path& output) {
     return std::filesystem::path(output).replace_filename(name);
 }
 
+std::filesystem::path part_file_path(const std::filesystem::path& output, int index, int count) {
+    std::filesystem::path path = output;
+    path += ".part" + std::to_string(index) + "of" + std::to_string(count);
+    return path;
+}
+
+std::optional<std::filesystem::path> output_of_part_file(const std::filesystem::path& part_file) {
+    const std::string name = part_file.filename().string();
+    const std::size_t at = name.rfind(".part");
+    if (at == std::string::npos || at == 0) return std::nullopt;
+    const std::string suffix = name.substr(at + 5);  // "3of8"
+    const std::size_t of = suffix.find("of");
+    const auto digits = [](const std::string& s) {
+        return !s.empty() && s.find_first_not_of("0123456789") == std::string::npos;
+    };
+    if (of == std::string::npos || !digits(suffix.substr(0, of)) || !digits(suffix.substr(of + 2)))
+        return std::nullopt;
+    return std::filesystem::path(part_file).replace_filename(name.substr(0, at));
+}
+
 }  // namespace glint::cli

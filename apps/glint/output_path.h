@@ -21,4 +21,10 @@ std::optional<std::string> unwritable_image_reason(const std::filesystem::path& 
 // extension stays last, so the partial image is written and read like the full one.
 std::filesystem::path partial_output_path(const std::filesystem::path& output);
 
+// Where a part of a render of `output` goes: "out.exr.part3of8". The parts' files of one output
+// differ by name, so that machines sharing a folder write beside each other.
+std::filesystem::path part_file_path(const std::filesystem::path& output, int index, int count);
+// The output a part's file is of: "out.exr.part3of8" -> "out.exr"; none for another name.
+std::optional<std::filesystem::path> output_of_part_file(const std::filesystem::path& part_file);
+
 }  // namespace glint::cli

@@ -27,12 +27,14 @@
 #include "glint/render/render.h"
 #include "glint/render/render_job.h"
 #include "glint/render/render_output.h"
+#include "glint/render/render_part.h"
 #include "glint/render/resume_file.h"
 #include "glint/render/world.h"
 #include "glint/scene/integrator_fit.h"
 #include "glint/scene/load_scene.h"
 #include "output_path.h"
 #include "progress.h"
+#include "render_summary.h"
 #include "stats_json.h"
 #include "test_hold.h"
 #include "usage_error.h"
@@ -66,43 +68,6 @@ void check_memory(const Scene& scene, AccelKind accel, const RenderCommand& c, A
             .samples_image = !c.samples_image.empty(), .resuming = c.resume, .aovs = aovs});
     if (auto refusal = memory_refusal(scene, accel, need, c.max_memory, "--max-memory"))
         throw UsageError{std::move(*refusal)};
-}
-
-void print_summary(const std::string& output, const RenderSettings& s, const RenderResult& r) {
-    const RayStats& rays = r.rays;
-    const double mrays = r.seconds > 0 ? double(rays.total()) / r.seconds / 1e6 : 0;
-    if (s.adaptive) {
-        // Every pixel's samples are its eye rays.
-        const double pixels = double(s.width) * s.height;
-        std::printf("glint: wrote %s (%dx%d, adaptive: %.1f of at most %d spp) in %.2f s\n",
-                    output.c_str(), s.width, s.height,
-                    double(r.rays.traced[std::size_t(RayKind::primary)]) / pixels,
-                    s.samples_per_pixel, r.seconds);
-    } else {
-        std::printf("glint: wrote %s (%dx%d, %d spp) in %.2f s\n", output.c_str(), s.width,
-                    s.height, s.samples_per_pixel, r.seconds);
-    }
-    std::printf("  rays       %15s  %.2f Mrays/s\n", with_thousands(rays.total()).c_str(), mrays);
-    for (std::size_t kind = 0; kind < kRayKindCount; ++kind) {
-        // The notes' four kinds always; the others when an integrator traced them.
-        if (kind > std::size_t(RayKind::refracted) && rays.traced[kind] == 0) continue;
-        std::printf("  %-10s %15s", std::string(kRayKindNames[kind]).c_str(),
-                    with_thousands(rays.traced[kind]).c_str());
-        if (RayKind(kind) == RayKind::primary)
-            std::printf("  (%s hit)", with_thousands(rays.primary_hits).c_str());
-        std::printf("\n");
-    }
-    if (rays.shadow_map_lookups > 0)
-        std::printf("  shadow-map lookups %7s  (in place of shadow feelers)\n",
-                    with_thousands(rays.shadow_map_lookups).c_str());
-    if (rays.photons_stored > 0)
-        std::printf("  photons    %15s  (%s stored)\n", with_thousands(rays.particles).c_str(),
-                    with_thousands(rays.photons_stored).c_str());
-    else if (rays.particles > 0)
-        std::printf("  particles  %15s  (%s, %.2g%%, reached the eye)\n",
-                    with_thousands(rays.particles).c_str(),
-                    with_thousands(rays.particles_seen).c_str(),
-                    100.0 * double(rays.particles_seen) / double(rays.particles));
 }
 
 std::string shell_quoted(const std::string& s) {
@@ -157,11 +122,26 @@ AovSet requested_aovs(const RenderCommand& c) {
     } catch (const std::invalid_argument& e) {
         throw UsageError{std::string("--aov: ") + e.what()};
     }
-    if (c.resume || c.checkpoint_minutes)
+    if (c.resume || c.checkpoint_minutes || !c.part.empty())
         throw UsageError{
-            "--aov cannot be combined with --resume or --checkpoint: a resume file "
-            "does not hold the output variables"};
+            "--aov cannot be combined with --resume, --checkpoint or --part: a resume or part "
+            "file does not hold the output variables"};
     return set;
+}
+
+// The part --part asks for; the whole render without it.
+RenderPart requested_part(const RenderCommand& c) {
+    const PartSplit split = c.split == "passes" ? PartSplit::passes : PartSplit::tiles;
+    if (c.part.empty()) return RenderPart{1, 1, split};
+    const auto part = parse_render_part(c.part, split);
+    if (!part)
+        throw UsageError{
+            "--part: expected I/N, part I of N parts with 1 <= I <= N <= 100000, got \"" + c.part +
+            "\""};
+    if (!c.samples_image.empty())
+        throw UsageError{
+            "--samples-image cannot be combined with --part: glint merge writes the image"};
+    return *part;
 }
 
 }  // namespace
@@ -181,6 +161,12 @@ int run_render(const RenderCommand& command) {
                 throw UsageError{*reason};
         }
         const AovSet aovs = requested_aovs(command);
+        const RenderPart part = requested_part(command);
+        // A part's state goes to its own file beside the output, which glint merge writes.
+        const std::filesystem::path part_file =
+            part.whole() ? std::filesystem::path() : part_file_path(output, part.index, part.count);
+        if (!part.whole())
+            if (const auto reason = unwritable_reason(part_file)) throw UsageError{*reason};
         if (!holds_aov_layers(output))
             for (const Aov a : aovs.list())
                 if (const auto reason =
@@ -215,11 +201,25 @@ int run_render(const RenderCommand& command) {
         options.aovs = aovs;
         const RenderSettings& s = world.settings();
         const RenderIdentity identity =
-            identify_render(command.scene, files_read, s, options, GLINT_VERSION);
-        const std::filesystem::path resume = resume_path(output),
-                                    partial = partial_output_path(output);
+            identify_render(command.scene, files_read, s, options, GLINT_VERSION, part);
+        // A part leaves no image of its own when stopped: its state alone.
+        const std::filesystem::path resume = resume_path(
+                                        part.whole() ? std::filesystem::path(output) : part_file),
+                                    partial = part.whole() ? partial_output_path(output)
+                                                           : std::filesystem::path();
+        const int passes = pass_count(s.samples_per_pixel, pass_size_of(s, options));
         std::optional<RenderState> saved;
-        if (command.resume) saved = read_resume_file(resume, identity, s);
+        if (command.resume) {
+            saved = read_resume_file(resume, identity, s);
+        } else {
+            saved = initial_state(s, options);
+            if (const auto refusal = part_refusal(part, s, *saved))
+                throw UsageError{"--part " + command.part + ": " + *refusal};
+            start_part(*saved, part, passes);
+        }
+        const std::vector<WorkPiece> work = part_work(*saved, part, passes);
+        if (!part.whole() && work.empty())
+            throw UsageError{"--part " + command.part + ": the resume file holds the part done"};
         if (command.checkpoint_minutes)
             options.after_pass =
                 checkpoint_hook({partial, resume, identity,
@@ -240,15 +240,21 @@ int run_render(const RenderCommand& command) {
         ignore_stop_signals();
         {
             const ProgressWatcher watcher(progress, !command.quiet);
-            result = job.run(observer);
+            result = part.whole() ? job.run(observer) : job.run(work, observer);
         }
         report_bad_samples(result.bad_samples, command);
 
         // An interrupted image goes beside the target, never over it, so a good image from an
         // earlier run survives a Ctrl-C; a finished one makes the files of the stopped render
         // stale.
-        const std::string written = result.complete ? output : partial.string();
-        if (result.complete) {
+        const std::string written = !result.complete ? partial.string()
+                                    : part.whole()   ? output
+                                                     : part_file.string();
+        if (result.complete && !part.whole()) {
+            write_resume_file(part_file, identity, job.state());
+            std::error_code ignored;
+            std::filesystem::remove(resume, ignored);
+        } else if (result.complete) {
             write_image_and_aovs(output, result, command.ppm_ascii);
             std::error_code ignored;
             std::filesystem::remove(resume, ignored);
@@ -264,19 +270,31 @@ int run_render(const RenderCommand& command) {
             write_stats(command.stats_file, stats_json({command.scene, written, s.width, s.height,
                                                         s.samples_per_pixel, threads, &result}));
         }
+        if (!result.complete && !part.whole()) {
+            std::fprintf(stderr,
+                         "glint: interrupted: %s of %s was not finished\n"
+                         "glint: to continue, with the same options: glint render %s -o %s "
+                         "--part %s%s --resume (the state is in %s)\n",
+                         describe(part).c_str(), output.c_str(),
+                         shell_quoted(command.scene).c_str(), shell_quoted(output).c_str(),
+                         command.part.c_str(),
+                         part.split == PartSplit::passes ? " --split passes" : "", resume.c_str());
+            return kExitInterrupted;
+        }
         if (!result.complete) {
-            const int passes = progress.passes_total;
+            const int passes_total = progress.passes_total;
             const int next_pass = job.state().passes_done();
             if (next_pass == 0)
-                std::fprintf(stderr,
-                             "glint: interrupted in the first pass%s: the image so far is in %s "
-                             "(the tiles not yet rendered are black)",
-                             passes > 1 ? (" of " + std::to_string(passes)).c_str() : "",
-                             written.c_str());
+                std::fprintf(
+                    stderr,
+                    "glint: interrupted in the first pass%s: the image so far is in %s "
+                    "(the tiles not yet rendered are black)",
+                    passes_total > 1 ? (" of " + std::to_string(passes_total)).c_str() : "",
+                    written.c_str());
             else
                 std::fprintf(stderr,
                              "glint: interrupted after %d of %d passes: the image so far is in %s",
-                             next_pass, passes, written.c_str());
+                             next_pass, passes_total, written.c_str());
             std::fprintf(stderr,
                          "; %s was not written\n"
                          "glint: to continue, with the same options: glint render %s -o %s "
@@ -285,7 +303,12 @@ int run_render(const RenderCommand& command) {
                          shell_quoted(output).c_str(), resume.c_str());
             return kExitInterrupted;
         }
-        if (!command.quiet) print_summary(output, s, result);
+        if (!command.quiet) {
+            if (part.whole())
+                print_summary(output, s, result);
+            else
+                print_summary(part_file.string(), s, result, describe(part) + " of " + output);
+        }
         return 0;
     });
 }

@@ -32,6 +32,9 @@ struct RenderCommand {
     bool resume = false;  // continue from the output's resume file
     // Write the image so far and a resume file after the first pass this long after the last.
     std::optional<double> checkpoint_minutes;
+    // "I/N": render part I of N into <output>.partIofN, for glint merge; empty: the whole.
+    std::string part;
+    std::string split = "tiles";  // what the parts are: "tiles" or sample "passes"
 };
 
 // Exit status: 0 on success, 2 on bad input (scene, options, an unwritable output path, a resume

@@ -18,6 +18,7 @@
 #include <thread>
 #include <vector>
 
+#include "cli_fixture.h"
 #include "common/under_sanitizer.h"
 #include "glint/image/image_io.h"
 #include "glint/image/srgb.h"
@@ -25,86 +26,6 @@
 
 namespace glint {
 namespace {
-
-namespace fs = std::filesystem;
-
-struct Outcome {
-    int exit_code;
-    std::string out, err;
-};
-
-std::string slurp(const fs::path& file) {
-    std::ifstream in(file, std::ios::binary);
-    std::stringstream s;
-    s << in.rdbuf();
-    return s.str();
-}
-
-class Cli : public ::testing::Test {
-protected:
-    void SetUp() override {
-        dir_ = fs::path(GLINT_TEST_OUTPUT_DIR) /
-               ::testing::UnitTest::GetInstance()->current_test_info()->name();
-        fs::remove_all(dir_);
-        fs::create_directories(dir_);
-    }
-
-    // `shell` runs first in the same shell, e.g. "ulimit -v 1000000 && ".
-    Outcome run_glint(const std::string& args, const std::string& shell = "") const {
-        const fs::path out = dir_ / "stdout.txt", err = dir_ / "stderr.txt";
-        const std::string command = shell + "cd '" + dir_.string() + "' && '" GLINT_BINARY "' " +
-                                    args + " > '" + out.string() + "' 2> '" + err.string() + "'";
-        const int status = std::system(command.c_str());
-        return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, slurp(out), slurp(err)};
-    }
-
-    // Starts glint without waiting, its stdout and stderr going to files in the test's folder;
-    // `environment` holds NAME=value entries to add to this process's.
-    pid_t spawn_glint(std::vector<std::string> args,
-                      std::vector<std::string> environment = {}) const {
-        args.insert(args.begin(), GLINT_BINARY);
-        std::vector<char*> argv;
-        for (std::string& arg : args) argv.push_back(arg.data());
-        argv.push_back(nullptr);
-        std::vector<char*> envp;
-        for (char** e = environ; *e; ++e) envp.push_back(*e);
-        for (std::string& e : environment) envp.push_back(e.data());
-        envp.push_back(nullptr);
-        const std::string out = (dir_ / "stdout.txt").string(),
-                          err = (dir_ / "stderr.txt").string();
-        posix_spawn_file_actions_t files;
-        posix_spawn_file_actions_init(&files);
-        posix_spawn_file_actions_addopen(&files, STDOUT_FILENO, out.c_str(),
-                                         O_WRONLY | O_CREAT | O_TRUNC, 0644);
-        posix_spawn_file_actions_addopen(&files, STDERR_FILENO, err.c_str(),
-                                         O_WRONLY | O_CREAT | O_TRUNC, 0644);
-        pid_t pid = -1;
-        const int error =
-            posix_spawn(&pid, GLINT_BINARY, &files, nullptr, argv.data(), envp.data());
-        posix_spawn_file_actions_destroy(&files);
-        return error == 0 ? pid : -1;
-    }
-
-    // The environment that holds a render after `tiles` tiles until it is stopped
-    // (apps/glint/test_hold.h), and whether glint has said it holds.
-    static std::vector<std::string> hold_after(int tiles) {
-        return {"GLINT_TEST_HOLD_AFTER_TILES=" + std::to_string(tiles)};
-    }
-    bool holding() const {
-        return slurp(dir_ / "stderr.txt").find("glint: holding after") != std::string::npos;
-    }
-
-    fs::path write_scene(const std::string& name, const std::string& text) const {
-        std::ofstream(dir_ / name) << text;
-        return dir_ / name;
-    }
-
-    static std::string scene(const std::string& name) {
-        return std::string("'") + GLINT_SOURCE_DIR + "/scenes/" + name + "'";
-    }
-
-    fs::path dir_;
-};
 
 TEST_F(Cli, VersionAndHelp) {
     const Outcome version = run_glint("--version");
@@ -981,7 +902,7 @@ TEST_F(Cli, BadAovListsAreUsageErrors) {
     const Outcome resumed =
         run_glint("render '" + scene + "' -q -o out.png --aov depth --checkpoint 5");
     EXPECT_EQ(resumed.exit_code, 2);
-    EXPECT_NE(resumed.err.find("cannot be combined with --resume or --checkpoint"),
+    EXPECT_NE(resumed.err.find("cannot be combined with --resume, --checkpoint or --part"),
               std::string::npos)
         << resumed.err;
     EXPECT_FALSE(fs::exists(dir_ / "out.png"));

@@ -256,6 +256,42 @@ TEST_F(ResumeFile, MissingTruncatedCorruptAndForeignFilesAreRefused) {
               std::string::npos);
 }
 
+// A part's file is read without its scene, its part named; a resume of the whole refuses it;
+// a damaged header cannot make the reader take the memory of a huge image.
+TEST_F(ResumeFile, ASavedRenderIsReadWithoutItsSceneAndItsPartIsNamed) {
+    const fs::path file = dir_ / "image.png.part2of3";
+    const RenderPart part{2, 3, PartSplit::tiles};
+    const RenderIdentity id =
+        identify_render(scene_file_, {}, scene_.settings, options_, "1.2.3", part);
+    const RenderState state = save_stopped_render(dir_ / "unused.resume");
+    write_resume_file(file, id, state);
+    const SavedRender saved = read_saved_render(file);
+    EXPECT_EQ(saved.identity.part, part);
+    EXPECT_EQ(identity_difference(saved.identity, id), "");
+    EXPECT_EQ(saved.state.tile_passes, state.tile_passes);
+    EXPECT_TRUE(same_bytes(saved.state.film.box_sums(), state.film.box_sums()));
+    EXPECT_NE(refusal(file, identity(), scene_.settings)
+                  .find("was written for part 2 of 3 (tiles), not the whole render"),
+              std::string::npos);
+
+    // The width and height follow the files' stamps in the header.
+    std::size_t at = 8 + 4 + 4 + id.glint_version.size() + 4 + id.scene_path.size() + 4;
+    for (const FileStamp& f : id.files) at += 4 + f.path.size() + 8 + 4 + 1;
+    std::vector<unsigned char> bytes = read_whole_file(file);
+    for (const std::size_t field : {at, at + 4}) {
+        const std::uint32_t huge = 60000;
+        std::memcpy(&bytes[field], &huge, 4);  // little-endian, as the file
+    }
+    std::ofstream(file, std::ios::binary)
+        .write(reinterpret_cast<const char*>(bytes.data()), std::streamsize(bytes.size()));
+    try {
+        read_saved_render(file);
+        ADD_FAILURE() << "a 60000 x 60000 image in a small file was read";
+    } catch (const ResumeError& e) {
+        EXPECT_NE(std::string(e.what()).find("the file is corrupt"), std::string::npos) << e.what();
+    }
+}
+
 TEST(ResumePath, IsTheOutputWithResumeAppended) {
     EXPECT_EQ(resume_path("out/image.png"), std::filesystem::path("out/image.png.resume"));
 }

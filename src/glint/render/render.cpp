@@ -200,20 +200,15 @@ bool render_work(const World& world, const RenderOptions& options, const std::ve
         while (last < work.size() && work[last].pass == pass_index) ++last;
         const Pass pass{pass_index * size, std::min(spp, (pass_index + 1) * size)};
         std::atomic<bool> skipped{false};
+        // The rays the pass's preparation traced (photon maps): counted once, with tile 0's
+        // piece of the pass, though a pass continued after a stop, or rendered in parts on
+        // several machines, prepares again.
+        RayStats prepared;
         arena.execute([&] {
             if constexpr (requires(RayStats & r) {
                               Integrator::begin_pass(shared, world, 0, std::uint64_t(0), r);
-                          }) {
-                // Counted once, by the first piece of the pass, though a pass continued after a
-                // stop prepares again.
-                RayStats prepared;
+                          })
                 Integrator::begin_pass(shared, world, pass.begin, options.seed, prepared);
-                if (std::none_of(state.tile_passes.begin(), state.tile_passes.end(),
-                                 [&](int done) { return done > pass_index; })) {
-                    const std::lock_guard lock(state_mutex);
-                    state.rays += prepared;
-                }
-            }
             // One tile per task: tiles are large enough to amortise scheduling.
             tbb::parallel_for(
                 tbb::blocked_range<std::size_t>(first, last, 1),
@@ -231,6 +226,7 @@ bool render_work(const World& world, const RenderOptions& options, const std::ve
                         else
                             render_tile<Integrator, true>(tiles[std::size_t(tile)], pass, inputs,
                                                           state, totals);
+                        if (tile == 0) totals.rays += prepared;
                         {
                             const std::lock_guard lock(state_mutex);
                             state.rays += totals.rays;

@@ -36,7 +36,7 @@ void write_image_and_aovs(const std::filesystem::path& output, const RenderResul
 void save_progress(const std::filesystem::path& partial, const std::filesystem::path& resume,
                    const RenderIdentity& identity, const RenderState& state, const Image& image,
                    bool ppm_ascii) {
-    write_image(partial, image, WriteOptions{ppm_ascii});
+    if (!partial.empty()) write_image(partial, image, WriteOptions{ppm_ascii});
     write_resume_file(resume, identity, state);
 }
 
@@ -46,8 +46,8 @@ std::function<void(const RenderState&)> checkpoint_hook(CheckpointPolicy policy)
     auto last = std::make_shared<Clock::time_point>(Clock::now());
     return [policy = std::move(policy), last](const RenderState& so_far) {
         if (Clock::now() - *last < policy.interval) return;
-        save_progress(policy.partial, policy.resume, policy.identity, so_far, resolve_image(so_far),
-                      policy.ppm_ascii);
+        save_progress(policy.partial, policy.resume, policy.identity, so_far,
+                      policy.partial.empty() ? Image{} : resolve_image(so_far), policy.ppm_ascii);
         *last = Clock::now();
     };
 }

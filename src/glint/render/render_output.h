@@ -26,7 +26,8 @@ void write_image_and_aovs(const std::filesystem::path& output, const RenderResul
                           bool ppm_ascii = false);
 
 // The image so far at `partial` and the state at `resume`: at a checkpoint and when stopped.
-// The image first: a resume file always has an image of at most its samples.
+// The image first: a resume file always has an image of at most its samples. Without `partial`
+// the state alone (a part of a render, whose image alone is of little use).
 void save_progress(const std::filesystem::path& partial, const std::filesystem::path& resume,
                    const RenderIdentity& identity, const RenderState& state, const Image& image,
                    bool ppm_ascii = false);

@@ -16,6 +16,7 @@
 #include "glint/image/atomic_file.h"
 #include "glint/image/file_io.h"
 #include "glint/image/image_error.h"
+#include "glint/scene/scene_limits.h"
 
 namespace glint {
 
@@ -24,8 +25,9 @@ namespace {
 constexpr char kMagic[8] = {'G', 'L', 'I', 'N', 'T', 'R', 'E', 'S'};
 // 3: an adaptive render's film holds each pixel's own weighted samples (filter importance
 // sampling); 4: rays of five kinds (diffuse); 5: of six (particles), the particles' counts, and
-// the light integrator's film of particles; 6: the photons stored.
-constexpr std::uint32_t kFormatVersion = 7;
+// the light integrator's film of particles; 6: the photons stored; 8: the working space and the
+// part of the render.
+constexpr std::uint32_t kFormatVersion = 8;
 
 class ByteWriter {
 public:
@@ -241,6 +243,11 @@ void write_identity(ByteWriter& out, const RenderIdentity& id) {
     out.i32(id.adaptive ? id.adaptive->min_samples : 0);
     out.i32(id.tile_size);
     out.i32(id.pass_size);
+    out.u8(std::uint8_t(id.working_space.transfer));
+    out.f32(id.working_space.gamma);
+    out.i32(id.part.index);
+    out.i32(id.part.count);
+    out.u8(std::uint8_t(id.part.split));
 }
 
 // The identity after the magic and format version, as written.
@@ -275,6 +282,11 @@ RenderIdentity read_identity(ByteReader& in) {
     if (adaptive) id.adaptive = AdaptiveSampling{threshold, min_samples};
     id.tile_size = in.i32();
     id.pass_size = in.i32();
+    id.working_space.transfer = WorkingSpace::Transfer(in.u8());
+    id.working_space.gamma = in.f32();
+    id.part.index = in.i32();
+    id.part.count = in.i32();
+    id.part.split = PartSplit(in.u8());
     return id;
 }
 
@@ -302,9 +314,9 @@ std::string files_difference(const std::vector<FileStamp>& was, const std::vecto
     return {};
 }
 
-// What differs between the render a file was written for and this one, first difference first:
-// "written for seed 3, not 7". Empty when they are the same.
-std::string difference(const RenderIdentity& was, const RenderIdentity& now) {
+}  // namespace
+
+std::string identity_difference(const RenderIdentity& was, const RenderIdentity& now) {
     const auto num = [](auto v) { return std::to_string(v); };
     if (was.glint_version != now.glint_version)
         return "written by glint " + was.glint_version + ", this is glint " + now.glint_version;
@@ -341,8 +353,16 @@ std::string difference(const RenderIdentity& was, const RenderIdentity& now) {
     if (was.pass_size != now.pass_size)
         return "written for passes of " + num(was.pass_size) + " samples, not " +
                num(now.pass_size);
+    if (was.working_space.transfer != now.working_space.transfer ||
+        was.working_space.gamma != now.working_space.gamma)
+        return std::string("written for another working space (assumed_gamma)");
+    if (was.part != now.part)
+        return "written for " + (was.part.whole() ? "the whole render" : describe(was.part)) +
+               ", not " + (now.part.whole() ? "the whole render" : describe(now.part));
     return {};
 }
+
+namespace {
 
 void encode_state(const RenderState& s, ByteWriter& out) {
     out.u32(std::uint32_t(s.tile_passes.size()));
@@ -438,7 +458,7 @@ void decode_state(ByteReader& in, RenderState& s, const std::string& corrupt) {
 RenderIdentity identify_render(const std::filesystem::path& scene_file,
                                std::span<const std::filesystem::path> files_read,
                                const RenderSettings& settings, const RenderOptions& options,
-                               std::string_view glint_version) {
+                               std::string_view glint_version, const RenderPart& part) {
     RenderIdentity id;
     id.glint_version = glint_version;
     id.scene_path = std::filesystem::absolute(scene_file).lexically_normal().string();
@@ -455,7 +475,23 @@ RenderIdentity identify_render(const std::filesystem::path& scene_file,
     id.adaptive = settings.adaptive;
     id.tile_size = options.tile_size;
     id.pass_size = pass_size_of(settings, options);
+    id.working_space = settings.working_space;
+    id.part = part;
     return id;
+}
+
+RenderSettings settings_of(const RenderIdentity& id) {
+    RenderSettings settings;
+    settings.width = id.width;
+    settings.height = id.height;
+    settings.samples_per_pixel = id.samples_per_pixel;
+    settings.integrator = id.integrator;
+    settings.sampler = id.sampler;
+    settings.filter = id.filter;
+    settings.max_depth = id.max_depth;
+    settings.adaptive = id.adaptive;
+    settings.working_space = id.working_space;
+    return settings;
 }
 
 std::filesystem::path resume_path(const std::filesystem::path& output) {
@@ -492,14 +528,16 @@ void write_resume_file(const std::filesystem::path& file, const RenderIdentity& 
     });
 }
 
-RenderState read_resume_file(const std::filesystem::path& file, const RenderIdentity& expected,
-                             const RenderSettings& settings) {
-    const std::string prefix = "cannot resume from \"" + file.string() + "\": ";
+namespace {
+
+// The identity and state saved in `file`, which must have been written for `expected` if
+// given, with `settings`' image; else for the settings its identity names.
+SavedRender read_state_file(const std::filesystem::path& file, const std::string& prefix,
+                            const RenderIdentity* expected, const RenderSettings* settings) {
     std::error_code error;
     if (!std::filesystem::exists(file, error))
-        throw ResumeError(prefix +
-                          "there is no such file (an interrupted render leaves it "
-                          "beside its output)");
+        throw ResumeError(prefix + "there is no such file" +
+                          (expected ? " (an interrupted render leaves it beside its output)" : ""));
     std::vector<unsigned char> bytes;
     try {
         bytes = read_whole_file(file);
@@ -510,15 +548,33 @@ RenderState read_resume_file(const std::filesystem::path& file, const RenderIden
     const std::string corrupt = prefix + "the file is corrupt";
     ByteReader in(bytes.data(), bytes.size(), truncated);
     if (bytes.size() < sizeof kMagic || std::memcmp(in.take(sizeof kMagic), kMagic, 8) != 0)
-        throw ResumeError(prefix + "not a glint resume file");
+        throw ResumeError(
+            prefix + (expected ? "not a glint resume file" : "not a glint part or resume file"));
     if (const std::uint32_t version = in.u32(); version != kFormatVersion)
         throw ResumeError(prefix + "the file is of format version " + std::to_string(version) +
                           ", this glint reads version " + std::to_string(kFormatVersion));
-    const RenderIdentity written = read_identity(in);
-    if (const std::string why = difference(written, expected); !why.empty())
-        throw ResumeError(prefix + "the resume file was " + why);
-
-    RenderState state(settings, expected.tile_size, expected.pass_size);
+    RenderIdentity written = read_identity(in);
+    if (expected)
+        if (const std::string why = identity_difference(written, *expected); !why.empty())
+            throw ResumeError(prefix + "the resume file was " + why);
+    // Without a render to compare with, the identity itself must describe one.
+    const RenderSettings own = settings_of(written);
+    if (!settings) {
+        if (written.width < 1 || written.height < 1 || written.width > kMaxImageSide ||
+            written.height > kMaxImageSide || written.tile_size < 1 || written.pass_size < 1 ||
+            written.samples_per_pixel < 1 || !describe_problem(written.filter).empty() ||
+            std::size_t(written.integrator) >= integrator_names().size() ||
+            written.part.count < 1 || written.part.index < 1 ||
+            written.part.index > written.part.count ||
+            std::size_t(written.part.split) >= std::size(kPartSplitNames) ||
+            // At least 4 bytes a pixel, which deflate packs at most about 1000 to 1: a damaged
+            // header cannot ask for the memory of a larger image than the file can hold.
+            std::uint64_t(written.width) * std::uint64_t(written.height) * 4 >
+                std::uint64_t(in.left()) * 1100)
+            throw ResumeError(corrupt);
+        settings = &own;
+    }
+    RenderState state(*settings, written.tile_size, written.pass_size);
     const std::uint64_t payload_size = in.u64(), packed_size = in.u64();
     const std::uint32_t crc = in.u32();
     // The size a state of this image has, so that a damaged header cannot ask for any memory.
@@ -533,10 +589,23 @@ RenderState read_resume_file(const std::filesystem::path& file, const RenderIden
         throw ResumeError(corrupt);
     ByteReader state_in(payload.data(), payload.size(), corrupt);
     decode_state(state_in, state, corrupt);
-    const int passes = pass_count(settings.samples_per_pixel, state.pass_size);
+    const int passes = pass_count(settings->samples_per_pixel, state.pass_size);
     for (const int done : state.tile_passes)
         if (done < 0 || done > passes) throw ResumeError(corrupt);
-    return state;
+    return {std::move(written), std::move(state)};
+}
+
+}  // namespace
+
+RenderState read_resume_file(const std::filesystem::path& file, const RenderIdentity& expected,
+                             const RenderSettings& settings) {
+    return read_state_file(file, "cannot resume from \"" + file.string() + "\": ", &expected,
+                           &settings)
+        .state;
+}
+
+SavedRender read_saved_render(const std::filesystem::path& file) {
+    return read_state_file(file, "cannot read \"" + file.string() + "\": ", nullptr, nullptr);
 }
 
 }  // namespace glint

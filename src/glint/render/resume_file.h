@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "glint/render/render.h"
+#include "glint/render/render_part.h"
 #include "glint/render/render_state.h"
 #include "glint/scene/scene.h"
 
@@ -41,7 +42,9 @@ struct RenderIdentity {
     int max_depth = 0;
     std::optional<AdaptiveSampling> adaptive;
     int tile_size = 0;
-    int pass_size = 0;  // samples_per_pass
+    int pass_size = 0;           // samples_per_pass
+    WorkingSpace working_space;  // what the film's values are decoded from
+    RenderPart part;             // the part of the render (render_part.h); whole by default
 };
 
 // The identity of a render of `scene_file`, which read `files_read`, with the settings it was
@@ -49,7 +52,15 @@ struct RenderIdentity {
 RenderIdentity identify_render(const std::filesystem::path& scene_file,
                                std::span<const std::filesystem::path> files_read,
                                const RenderSettings& settings, const RenderOptions& options,
-                               std::string_view glint_version);
+                               std::string_view glint_version, const RenderPart& part = {});
+
+// What differs between the render a file was written for and this one, first difference first
+// ("written for seed 3, not 7"); empty when they are the same.
+std::string identity_difference(const RenderIdentity& was, const RenderIdentity& now);
+
+// The settings a render of `identity` was made with, as far as its state needs them (its image,
+// film, samples and integrator): to read a saved state without its scene.
+RenderSettings settings_of(const RenderIdentity& identity);
 
 // A resume file that cannot be used: missing, of another render, truncated or corrupt. Its
 // message names the file and says what is wrong.
@@ -69,5 +80,13 @@ void write_resume_file(const std::filesystem::path& file, const RenderIdentity& 
 // difference ("... was written for seed 3, not 7") or the damage.
 RenderState read_resume_file(const std::filesystem::path& file, const RenderIdentity& expected,
                              const RenderSettings& settings);
+
+// A render's saved identity and state, read without knowing which render it is (a part file,
+// to merge); throws ResumeError naming the damage.
+struct SavedRender {
+    RenderIdentity identity;
+    RenderState state;
+};
+SavedRender read_saved_render(const std::filesystem::path& file);
 
 }  // namespace glint
