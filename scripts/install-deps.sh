@@ -14,6 +14,7 @@ packages=(
     python3-dev pybind11-dev python3-numpy python3-pytest  # the Python module and its tests
     jupyter-nbconvert python3-ipykernel python3-matplotlib  # the notebooks, run as tests
     povray-includes  # POV-Ray's standard include files, which .pov scenes #include
+    libopenmpi-dev openmpi-bin  # glint-mpi, rendering across machines
 )
 [ "${1:-}" = "--bench" ] && packages+=(povray blender)
 

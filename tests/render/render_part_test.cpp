@@ -11,46 +11,13 @@
 #include <string>
 #include <vector>
 
-#include "glint/scene/yaml/yaml_scene_loader.h"
+#include "common/every_integrator.h"
 
 namespace glint {
 namespace {
 
-Scene load(const std::string& file, int width, int height, int spp) {
-    Scene scene = load_yaml_scene(std::string(GLINT_SOURCE_DIR) + "/scenes/" + file);
-    scene.settings.width = width;
-    scene.settings.height = height;
-    scene.settings.samples_per_pixel = spp;
-    return scene;
-}
-
-struct Case {
-    std::string name;
-    Scene scene;
-};
-
-// Every integrator, on a scene it renders, small: the one-pixel box (Whitted's film), filters
-// that reach across tiles, particles splatted anywhere (light), photon maps of each pass.
-std::vector<Case> cases() {
-    std::vector<Case> all;
-    all.push_back({"whitted", load("showcase.yaml", 40, 30, 9)});
-    Scene distributed = load("distributed-showcase.yaml", 40, 24, 8);
-    all.push_back({"distributed", distributed});
-    Scene adaptive = distributed;
-    adaptive.settings.samples_per_pixel = 24;
-    adaptive.settings.adaptive = AdaptiveSampling{0.05f, 4};
-    all.push_back({"distributed adaptive", adaptive});
-    for (const IntegratorKind kind :
-         {IntegratorKind::path, IntegratorKind::light, IntegratorKind::photon}) {
-        Scene scene = load("features/cornell-box.yaml", 24, 24, 6);
-        scene.settings.integrator = kind;
-        scene.settings.photons.per_pass = 2000;
-        all.push_back({std::string(integrator_name(kind)), scene});
-    }
-    all.push_back({"cone", load("features/cone-tracing.yaml", 32, 24, 4)});
-    all.push_back({"beam", load("features/beam-tracing.yaml", 32, 24, 4)});
-    return all;
-}
+using testing::every_integrator;
+using testing::load_small;
 
 RenderOptions options() {
     RenderOptions o;
@@ -87,7 +54,7 @@ bool same_bits(const Image& a, const Image& b) {
 }
 
 TEST(RenderPart, TileQuartersMergeIntoTheWholeRenderBitForBit) {
-    for (const Case& c : cases()) {
+    for (const auto& c : every_integrator()) {
         SCOPED_TRACE(c.name);
         const World world(c.scene);
         RenderState whole = initial_state(world.settings(), options());
@@ -102,7 +69,7 @@ TEST(RenderPart, TileQuartersMergeIntoTheWholeRenderBitForBit) {
 }
 
 TEST(RenderPart, SamplePassPartsMergeIntoTheWholeRender) {
-    for (const Case& c : cases()) {
+    for (const auto& c : every_integrator()) {
         if (c.scene.settings.adaptive) continue;
         SCOPED_TRACE(c.name);
         const World world(c.scene);
@@ -126,7 +93,7 @@ TEST(RenderPart, SamplePassPartsMergeIntoTheWholeRender) {
 }
 
 TEST(RenderPart, ASplitThatCannotWorkIsRefusedSayingWhy) {
-    Scene scene = load("distributed-showcase.yaml", 16, 16, 8);  // 4 tiles, 4 passes of 2
+    Scene scene = load_small("distributed-showcase.yaml", 16, 16, 8);  // 4 tiles, 4 passes of 2
     const RenderState state = initial_state(scene.settings, options());
     const auto refusal = [&](RenderPart part) {
         return part_refusal(part, scene.settings, state).value_or("accepted");
@@ -153,7 +120,7 @@ TEST(RenderPart, PartsAreReadAsIOverN) {
 }
 
 TEST(RenderPart, SamplePassPartsTakeRunsOfPassesThatCoverTheRenderOnce) {
-    Scene scene = load("distributed-showcase.yaml", 16, 16, 14);  // 7 passes of 2
+    Scene scene = load_small("distributed-showcase.yaml", 16, 16, 14);  // 7 passes of 2
     const int passes = 7;
     std::vector<int> taken(passes, 0);
     for (int index = 1; index <= 3; ++index) {

@@ -187,7 +187,13 @@ bool render_work(const World& world, const RenderOptions& options, const std::ve
     tbb::task_arena arena(options.threads > 0 ? options.threads : tbb::task_arena::automatic);
     // In the arena: what an integrator prepares in parallel (beam tracing's shadow polygons)
     // keeps to the render's threads.
-    typename Integrator::Shared shared = arena.execute([&] { return Integrator::prepare(world); });
+    using Shared = typename Integrator::Shared;
+    IntegratorCache own_cache;
+    IntegratorCache& cache = options.integrator_cache ? *options.integrator_cache : own_cache;
+    if (!cache.shared)
+        cache.shared =
+            std::make_shared<Shared>(arena.execute([&] { return Integrator::prepare(world); }));
+    Shared& shared = *static_cast<Shared*>(cache.shared.get());
     std::mutex own_mutex;
     std::mutex& state_mutex = options.state_mutex ? *options.state_mutex : own_mutex;
     const RenderInputs<Integrator> inputs{
@@ -203,12 +209,17 @@ bool render_work(const World& world, const RenderOptions& options, const std::ve
         // The rays the pass's preparation traced (photon maps): counted once, with tile 0's
         // piece of the pass, though a pass continued after a stop, or rendered in parts on
         // several machines, prepares again.
-        RayStats prepared;
         arena.execute([&] {
             if constexpr (requires(RayStats & r) {
                               Integrator::begin_pass(shared, world, 0, std::uint64_t(0), r);
-                          })
-                Integrator::begin_pass(shared, world, pass.begin, options.seed, prepared);
+                          }) {
+                if (cache.pass != pass_index) {
+                    cache.pass_rays = RayStats{};
+                    Integrator::begin_pass(shared, world, pass.begin, options.seed,
+                                           cache.pass_rays);
+                    cache.pass = pass_index;
+                }
+            }
             // One tile per task: tiles are large enough to amortise scheduling.
             tbb::parallel_for(
                 tbb::blocked_range<std::size_t>(first, last, 1),
@@ -226,7 +237,7 @@ bool render_work(const World& world, const RenderOptions& options, const std::ve
                         else
                             render_tile<Integrator, true>(tiles[std::size_t(tile)], pass, inputs,
                                                           state, totals);
-                        if (tile == 0) totals.rays += prepared;
+                        if (tile == 0) totals.rays += cache.pass_rays;
                         {
                             const std::lock_guard lock(state_mutex);
                             state.rays += totals.rays;
@@ -296,50 +307,61 @@ Image resolve_image(const RenderState& state) {
     return image;
 }
 
-RenderResult render(const World& world, const RenderOptions& options, RenderProgress* progress,
-                    RenderState* state, std::span<const WorkPiece> work) {
+bool render_pieces(const World& world, const RenderOptions& options, RenderState& state,
+                   std::span<const WorkPiece> work, RenderProgress* progress) {
     const auto start = std::chrono::steady_clock::now();
     const RenderSettings& settings = world.settings();
     const std::vector<Tile> tiles = make_tiles(settings.width, settings.height, options.tile_size);
-    std::optional<RenderState> fresh;
-    if (!state) state = &fresh.emplace(initial_state(settings, options));
-    if (state->width != settings.width || state->height != settings.height ||
-        state->tile_passes.size() != tiles.size() ||
-        state->pass_size != pass_size_of(settings, options) || state->aovs.set() != options.aovs)
+    if (state.width != settings.width || state.height != settings.height ||
+        state.tile_passes.size() != tiles.size() ||
+        state.pass_size != pass_size_of(settings, options) || state.aovs.set() != options.aovs)
         throw std::invalid_argument(
             "render: the state is of another image, tile or pass size, or other output variables");
-    const int passes = pass_count(settings.samples_per_pixel, state->pass_size);
+    const int passes = pass_count(settings.samples_per_pixel, state.pass_size);
     const std::vector<WorkPiece> pieces =
-        work.empty() ? remaining_work(*state, passes) : ordered_work(work, *state, passes);
+        work.empty() ? remaining_work(state, passes) : ordered_work(work, state, passes);
     if (progress) {
         int done = 0;
         if (work.empty())  // the whole render: what earlier calls did counts too
-            for (const int tile : state->tile_passes) done += tile;
+            for (const int tile : state.tile_passes) done += tile;
         // Done before total: a watcher that sees the total sees the count it starts from.
         progress->tiles_done = done;
-        progress->passes_done = state->passes_done();
+        progress->passes_done = state.passes_done();
         progress->passes_total = passes;
         progress->tiles_total = done + int(pieces.size());
     }
-
-    RenderResult result;
-    result.complete = with_integrator(settings.integrator, [&]<class Integrator>() {
-        return render_work<Integrator>(world, options, tiles, pieces, progress, *state);
+    const bool complete = with_integrator(settings.integrator, [&]<class Integrator>() {
+        return render_work<Integrator>(world, options, tiles, pieces, progress, state);
     });
-    result.image = resolve_image(*state);
-    if (options.record_samples_taken) result.samples_taken = samples_image(*state);
-    result.aovs = state->aovs.resolve();
+    state.seconds +=
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    return complete;
+}
+
+RenderResult render_result(const RenderState& state, const RenderOptions& options) {
+    RenderResult result;
+    result.image = resolve_image(state);
+    if (options.record_samples_taken) result.samples_taken = samples_image(state);
+    result.aovs = state.aovs.resolve();
     if (options.aovs.has(Aov::samples)) {
         // In Aov order: before the traversal counts, the only variables after it.
         auto at = result.aovs.begin();
         while (at != result.aovs.end() && at->aov < Aov::samples) ++at;
-        result.aovs.insert(at, {Aov::samples, samples_image(*state)});
+        result.aovs.insert(at, {Aov::samples, samples_image(state)});
     }
-    result.rays = state->rays;
-    result.bad_samples = state->bad_samples;
-    state->seconds +=
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    result.seconds = state->seconds;
+    result.rays = state.rays;
+    result.bad_samples = state.bad_samples;
+    result.seconds = state.seconds;
+    return result;
+}
+
+RenderResult render(const World& world, const RenderOptions& options, RenderProgress* progress,
+                    RenderState* state, std::span<const WorkPiece> work) {
+    std::optional<RenderState> fresh;
+    if (!state) state = &fresh.emplace(initial_state(world.settings(), options));
+    const bool complete = render_pieces(world, options, *state, work, progress);
+    RenderResult result = render_result(*state, options);
+    result.complete = complete;
     return result;
 }
 

@@ -7,6 +7,7 @@
 #include <atomic>
 #include <cstdint>
 #include <functional>
+#include <memory>
 #include <mutex>
 #include <span>
 #include <vector>
@@ -25,6 +26,16 @@ struct WorkPiece {
     int pass = 0;
     int tile = 0;
     bool operator==(const WorkPiece&) const = default;
+};
+
+// What an integrator prepares for a render (beam tracing's shadow polygons) and for the pass in
+// flight (a photon map), kept between the calls of render_pieces a front end makes for pieces of
+// one render and options (a rank of a cluster, asked for a few tiles at a time): built once, and
+// once a pass, as one call builds them.
+struct IntegratorCache {
+    std::shared_ptr<void> shared;  // the integrator's Shared
+    int pass = -1;                 // the pass its begin_pass prepared; -1: none
+    RayStats pass_rays;            // the rays that preparation traced
 };
 
 struct RenderOptions {
@@ -47,6 +58,8 @@ struct RenderOptions {
     // threads may read those while the render runs (RenderJob::image_so_far). Null: the
     // render's own.
     std::mutex* state_mutex = nullptr;
+    // Kept between calls for one world and these options; null: each call prepares its own.
+    IntegratorCache* integrator_cache = nullptr;
 };
 
 // Shared with a watcher thread (a progress bar) while render() runs.
@@ -95,5 +108,14 @@ std::vector<WorkPiece> remaining_work(const RenderState& state, int passes);
 RenderResult render(const World& world, const RenderOptions& options,
                     RenderProgress* progress = nullptr, RenderState* state = nullptr,
                     std::span<const WorkPiece> work = {});
+
+// As render() into `state`, without resolving an image at the end: for a front end that renders
+// a few pieces at a time. Returns whether every piece asked for was done.
+bool render_pieces(const World& world, const RenderOptions& options, RenderState& state,
+                   std::span<const WorkPiece> work, RenderProgress* progress = nullptr);
+
+// What render() returns for the state it reached: the image, the output variables and the counts
+// (`complete` left true).
+RenderResult render_result(const RenderState& state, const RenderOptions& options);
 
 }  // namespace glint

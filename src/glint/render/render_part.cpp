@@ -11,6 +11,7 @@
 #include <stdexcept>
 #include <utility>
 
+#include "glint/render/state_sums.h"
 #include "glint/render/tiles.h"
 
 namespace glint {
@@ -104,7 +105,6 @@ RenderState merge_parts(std::vector<RenderState> parts, PartSplit split, int til
     if (parts.empty()) throw std::invalid_argument("merge_parts: no parts");
     RenderState whole = std::move(parts.front());
     const int count = int(parts.size());
-    std::vector<PixelSum>& sums = whole.film.sums();
     std::vector<BoxSum>& box_sums = whole.film.box_sums();
     const std::vector<Tile> tiles = make_tiles(whole.width, whole.height, tile_size);
     if (tiles.size() != whole.tile_passes.size())
@@ -112,25 +112,13 @@ RenderState merge_parts(std::vector<RenderState> parts, PartSplit split, int til
     for (int i = 1; i < count; ++i) {
         RenderState& part = parts[std::size_t(i)];
         if (part.width != whole.width || part.height != whole.height ||
-            part.pass_size != whole.pass_size || part.film.sums().size() != sums.size() ||
+            part.pass_size != whole.pass_size ||
+            part.film.sums().size() != whole.film.sums().size() ||
             part.film.box_sums().size() != box_sums.size() ||
             part.errors.size() != whole.errors.size() ||
             part.splats.has_value() != whole.splats.has_value())
             throw std::invalid_argument("merge_parts: the parts are of different renders");
-        // Integer sums: exact in any order.
-        for (std::size_t p = 0; p < sums.size(); ++p) {
-            const PixelSum& s = part.film.sums()[p];
-            sums[p].r += s.r;
-            sums[p].g += s.g;
-            sums[p].b += s.b;
-            sums[p].weight += s.weight;
-        }
-        if (whole.splats) {
-            std::vector<std::int64_t> added = whole.splats->sums();
-            const std::vector<std::int64_t> more = part.splats->sums();
-            for (std::size_t k = 0; k < added.size(); ++k) added[k] += more[k];
-            whole.splats->set_sums(added);
-        }
+        add_sums(whole, part);  // integer sums: exact in any order
         whole.rays += part.rays;
         whole.bad_samples += part.bad_samples;
         whole.seconds += part.seconds;

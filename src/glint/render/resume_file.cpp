@@ -16,6 +16,8 @@
 #include "glint/image/atomic_file.h"
 #include "glint/image/file_io.h"
 #include "glint/image/image_error.h"
+#include "glint/render/byte_stream.h"
+#include "glint/render/counts_codec.h"
 #include "glint/scene/scene_limits.h"
 
 namespace glint {
@@ -28,51 +30,6 @@ constexpr char kMagic[8] = {'G', 'L', 'I', 'N', 'T', 'R', 'E', 'S'};
 // the light integrator's film of particles; 6: the photons stored; 8: the working space and the
 // part of the render.
 constexpr std::uint32_t kFormatVersion = 8;
-
-class ByteWriter {
-public:
-    ByteWriter() = default;
-    // Hands the bytes to `sink` in pieces of about a mebibyte as they come, instead of keeping
-    // them all: a render's state is as large as its film.
-    explicit ByteWriter(std::function<void(const std::string&)> sink) : sink_(std::move(sink)) {}
-
-    void u8(std::uint8_t v) {
-        bytes_.push_back(char(v));
-        if (sink_ && bytes_.size() >= kPiece) flush();
-    }
-    void u32(std::uint32_t v) {
-        for (int i = 0; i < 4; ++i) u8(std::uint8_t(v >> (8 * i)));
-    }
-    void u64(std::uint64_t v) {
-        for (int i = 0; i < 8; ++i) u8(std::uint8_t(v >> (8 * i)));
-    }
-    void i32(int v) { u32(std::uint32_t(v)); }
-    void f32(float v) { u32(std::bit_cast<std::uint32_t>(v)); }
-    void f64(double v) { u64(std::bit_cast<std::uint64_t>(v)); }
-    void i128(FixedSum v) {
-        u64(std::uint64_t(v));  // the low bits, then the high: two's complement
-        u64(std::uint64_t(v >> 64));
-    }
-    void text(std::string_view s) {
-        u32(std::uint32_t(s.size()));
-        raw(s.data(), s.size());
-    }
-    void raw(const void* data, std::size_t n) {
-        bytes_.append(static_cast<const char*>(data), n);
-        if (sink_ && bytes_.size() >= kPiece) flush();
-    }
-    // Hands what is left to the sink.
-    void flush() {
-        if (!bytes_.empty()) sink_(bytes_);
-        bytes_.clear();
-    }
-    std::string& bytes() { return bytes_; }
-
-private:
-    static constexpr std::size_t kPiece = std::size_t(1) << 20;
-    std::function<void(const std::string&)> sink_;
-    std::string bytes_;
-};
 
 // Deflates what it is given into a file as it comes, and sums the CRC-32 of what it was given.
 class DeflateToFile {
@@ -119,51 +76,6 @@ private:
     std::vector<Bytef> out_;
     uLong crc_ = crc32(0, nullptr, 0);
     std::uint64_t packed_ = 0;
-};
-
-// Reads what ByteWriter wrote; running past the end throws the error `truncated` makes.
-class ByteReader {
-public:
-    ByteReader(const unsigned char* data, std::size_t size, std::string truncated)
-        : data_(data), size_(size), truncated_(std::move(truncated)) {}
-
-    const unsigned char* take(std::size_t n) {
-        if (n > size_ - at_) throw ResumeError(truncated_);
-        const unsigned char* p = data_ + at_;
-        at_ += n;
-        return p;
-    }
-    std::uint8_t u8() { return *take(1); }
-    std::uint32_t u32() {
-        const unsigned char* p = take(4);
-        std::uint32_t v = 0;
-        for (int i = 0; i < 4; ++i) v |= std::uint32_t(p[i]) << (8 * i);
-        return v;
-    }
-    std::uint64_t u64() {
-        const unsigned char* p = take(8);
-        std::uint64_t v = 0;
-        for (int i = 0; i < 8; ++i) v |= std::uint64_t(p[i]) << (8 * i);
-        return v;
-    }
-    int i32() { return int(u32()); }
-    float f32() { return std::bit_cast<float>(u32()); }
-    double f64() { return std::bit_cast<double>(u64()); }
-    FixedSum i128() {
-        const std::uint64_t low = u64(), high = u64();
-        return FixedSum(std::int64_t(high)) * (FixedSum(1) << 64) + FixedSum(low);
-    }
-    std::string text() {
-        const std::uint32_t n = u32();
-        const unsigned char* p = take(n);
-        return {reinterpret_cast<const char*>(p), n};
-    }
-    std::size_t left() const { return size_ - at_; }
-
-private:
-    const unsigned char* data_;
-    std::size_t size_, at_ = 0;
-    std::string truncated_;
 };
 
 // `path` as it is now. A pipe or a device is not read: its bytes could not be read again.
@@ -251,7 +163,7 @@ void write_identity(ByteWriter& out, const RenderIdentity& id) {
 }
 
 // The identity after the magic and format version, as written.
-RenderIdentity read_identity(ByteReader& in) {
+RenderIdentity read_identity(ByteReader<ResumeError>& in) {
     RenderIdentity id;
     id.glint_version = in.text();
     id.scene_path = in.text();
@@ -367,18 +279,7 @@ namespace {
 void encode_state(const RenderState& s, ByteWriter& out) {
     out.u32(std::uint32_t(s.tile_passes.size()));
     for (const int passes : s.tile_passes) out.i32(passes);
-    for (const std::uint64_t n : s.rays.traced) out.u64(n);
-    out.u64(s.rays.primary_hits);
-    out.u64(s.rays.particles);
-    out.u64(s.rays.particles_seen);
-    out.u64(s.rays.photons_stored);
-    out.u64(s.rays.shadow_map_lookups);
-    out.u64(s.bad_samples.count);
-    const SampleLocation first = s.bad_samples.first.value_or(SampleLocation{});
-    out.u8(s.bad_samples.first ? 1 : 0);
-    out.i32(first.x);
-    out.i32(first.y);
-    out.i32(first.sample);
+    write_counts(out, s.rays, s.bad_samples);
     out.f64(s.seconds);
     for (const std::uint32_t n : s.samples) out.u32(n);
     for (const PixelError& e : s.errors) {
@@ -404,28 +305,16 @@ void encode_state(const RenderState& s, ByteWriter& out) {
 
 // The bytes encode_state writes for s, worked out without writing them.
 std::uint64_t encoded_size(const RenderState& s) {
-    return 4 + s.tile_passes.size() * 4 + kRayKindCount * 8 + 5 * 8 + 8 + 1 + 3 * 4 + 8 +
-           s.samples.size() * 4 + s.errors.size() * (4 + 8 + 8) + s.film.box_sums().size() * 4 * 4 +
+    return 4 + s.tile_passes.size() * 4 + kCountsSize + 8 + s.samples.size() * 4 +
+           s.errors.size() * (4 + 8 + 8) + s.film.box_sums().size() * 4 * 4 +
            s.film.sums().size() * 4 * 16 + (s.splats ? s.splats->size() * 8 : 0);
 }
 
 // Decodes into `s`, a fresh state of the expected image, whose sizes the data must have.
-void decode_state(ByteReader& in, RenderState& s, const std::string& corrupt) {
+void decode_state(ByteReader<ResumeError>& in, RenderState& s, const std::string& corrupt) {
     if (in.u32() != s.tile_passes.size()) throw ResumeError(corrupt);
     for (int& passes : s.tile_passes) passes = in.i32();
-    for (std::uint64_t& n : s.rays.traced) n = in.u64();
-    s.rays.primary_hits = in.u64();
-    s.rays.particles = in.u64();
-    s.rays.particles_seen = in.u64();
-    s.rays.photons_stored = in.u64();
-    s.rays.shadow_map_lookups = in.u64();
-    s.bad_samples.count = in.u64();
-    const bool has_first = in.u8() != 0;
-    SampleLocation first;
-    first.x = in.i32();
-    first.y = in.i32();
-    first.sample = in.i32();
-    if (has_first) s.bad_samples.first = first;
+    read_counts(in, s.rays, s.bad_samples);
     s.seconds = in.f64();
     for (std::uint32_t& n : s.samples) n = in.u32();
     for (PixelError& e : s.errors) {
@@ -546,7 +435,7 @@ SavedRender read_state_file(const std::filesystem::path& file, const std::string
     }
     const std::string truncated = prefix + "the file is truncated";
     const std::string corrupt = prefix + "the file is corrupt";
-    ByteReader in(bytes.data(), bytes.size(), truncated);
+    ByteReader<ResumeError> in(bytes.data(), bytes.size(), truncated);
     if (bytes.size() < sizeof kMagic || std::memcmp(in.take(sizeof kMagic), kMagic, 8) != 0)
         throw ResumeError(
             prefix + (expected ? "not a glint resume file" : "not a glint part or resume file"));
@@ -587,7 +476,7 @@ SavedRender read_state_file(const std::filesystem::path& file, const std::string
     if (uncompress(payload.data(), &unpacked, in.take(packed_size), uLong(packed_size)) != Z_OK ||
         unpacked != payload_size || crc32(0, payload.data(), uInt(payload.size())) != crc)
         throw ResumeError(corrupt);
-    ByteReader state_in(payload.data(), payload.size(), corrupt);
+    ByteReader<ResumeError> state_in(payload.data(), payload.size(), corrupt);
     decode_state(state_in, state, corrupt);
     const int passes = pass_count(settings->samples_per_pixel, state.pass_size);
     for (const int done : state.tile_passes)

@@ -54,6 +54,15 @@ public:
     // The variables in Aov order, but `samples`, which the render's state holds.
     std::vector<AovImage> resolve() const;
 
+    // The films, in Aov order, and the ids of each pixel's first sample (empty unless asked
+    // for): to add films up and to move a tile's pixels between processes.
+    std::vector<std::pair<Aov, Film>>& films() { return films_; }
+    const std::vector<std::pair<Aov, Film>>& films() const { return films_; }
+    std::vector<std::int32_t>& objects() { return objects_; }
+    const std::vector<std::int32_t>& objects() const { return objects_; }
+    std::vector<std::int32_t>& materials() { return materials_; }
+    const std::vector<std::int32_t>& materials() const { return materials_; }
+
 private:
     friend class AovTile;
     AovSet set_;

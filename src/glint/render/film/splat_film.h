@@ -35,6 +35,9 @@ public:
     std::vector<std::int64_t> sums() const;
     void set_sums(const std::vector<std::int64_t>& sums);
     std::size_t size() const { return sums_->size(); }
+    // One raw sum, and set: not concurrent with splat().
+    std::int64_t sum(std::size_t i) const { return (*sums_)[i].load(std::memory_order_relaxed); }
+    void set_sum(std::size_t i, std::int64_t v) { (*sums_)[i].store(v, std::memory_order_relaxed); }
 
 private:
     int width_, height_;
