@@ -34,6 +34,7 @@
 #include "glint/scene/load_scene.h"
 #include "output_path.h"
 #include "progress.h"
+#include "render_setup.h"
 #include "render_summary.h"
 #include "stats_json.h"
 #include "test_hold.h"
@@ -58,16 +59,6 @@ void ignore_stop_signals() {
 
 std::string default_output(const std::string& scene) {
     return std::filesystem::path(scene).stem().string() + ".png";
-}
-
-// Refuses a render whose structures, film and images would not fit, before building them.
-void check_memory(const Scene& scene, AccelKind accel, const RenderCommand& c, AovSet aovs) {
-    const MemoryEstimate need = estimate_render_memory(
-        scene, accel,
-        RenderExtras{
-            .samples_image = !c.samples_image.empty(), .resuming = c.resume, .aovs = aovs});
-    if (auto refusal = memory_refusal(scene, accel, need, c.max_memory, "--max-memory"))
-        throw UsageError{std::move(*refusal)};
 }
 
 std::string shell_quoted(const std::string& s) {
@@ -113,22 +104,6 @@ void write_stats(const std::string& file, const std::string& json) {
     });
 }
 
-// The output variables --aov asks for, refused where a render could not write them all.
-AovSet requested_aovs(const RenderCommand& c) {
-    if (c.aovs.empty()) return {};
-    AovSet set;
-    try {
-        set = parse_aov_list(c.aovs);
-    } catch (const std::invalid_argument& e) {
-        throw UsageError{std::string("--aov: ") + e.what()};
-    }
-    if (c.resume || c.checkpoint_minutes || !c.part.empty())
-        throw UsageError{
-            "--aov cannot be combined with --resume, --checkpoint or --part: a resume or part "
-            "file does not hold the output variables"};
-    return set;
-}
-
 // The part --part asks for; the whole render without it.
 RenderPart requested_part(const RenderCommand& c) {
     const PartSplit split = c.split == "passes" ? PartSplit::passes : PartSplit::tiles;
@@ -146,7 +121,7 @@ RenderPart requested_part(const RenderCommand& c) {
 
 }  // namespace
 
-int run_render(const RenderCommand& command) {
+int run_render(const RenderCommand& command, const RenderBackend& backend) {
     const std::string output =
         command.output.empty() ? default_output(command.scene) : command.output;
     return reporting_errors([&] {
@@ -172,33 +147,14 @@ int run_render(const RenderCommand& command) {
                 if (const auto reason =
                         unwritable_image_reason(aov_picture_path(output, a).string()))
                     throw UsageError{*reason};
-        Scene scene = load_scene(command.scene, command.reading.load_options());
-        for (const std::string& warning : scene.warnings)
-            std::fprintf(stderr, "glint: warning: %s\n", warning.c_str());
-        apply_image_options(command.image, scene.settings);
-        check_integrator_fits(scene);
-        if (const IntegratorKind k = scene.settings.integrator;
-            !aovs.list().empty() && !traces_rays(k)) {
-            const std::string name(integrator_name(k));
-            throw UsageError{"--aov: the output variables follow rays, and the " + name +
-                             " integrator traces " + name + "s"};
-        }
-        const auto accel = accel_from_name(command.accel);
-        if (!accel) throw UsageError{"unknown acceleration structure \"" + command.accel + "\""};
-        check_memory(scene, *accel, command, aovs);
-        const std::vector<std::filesystem::path> files_read = scene.sources.files_read;
-        ShadowAcceleration shadows;
-        shadows.light_buffer = command.shadow_accel != "none";
-        shadows.occluder_cache = command.shadow_accel == "light-buffer+cache";
-        const World world(std::move(scene), *accel, shadows);
-        for (const std::string& warning : world.warnings())
-            std::fprintf(stderr, "glint: warning: %s\n", warning.c_str());
-
-        RenderOptions options;
-        options.threads = command.threads;
-        options.seed = command.seed;
-        options.record_samples_taken = !command.samples_image.empty();
-        options.aovs = aovs;
+        RenderSetup setup =
+            set_up_render(command,
+                          backend.load ? backend.load(command)
+                                       : load_scene(command.scene, command.reading.load_options()),
+                          aovs, true);
+        const World& world = *setup.world;
+        RenderOptions& options = setup.options;
+        const std::vector<std::filesystem::path>& files_read = setup.files_read;
         const RenderSettings& s = world.settings();
         const RenderIdentity identity =
             identify_render(command.scene, files_read, s, options, GLINT_VERSION, part);
@@ -225,7 +181,9 @@ int run_render(const RenderCommand& command) {
                 checkpoint_hook({partial, resume, identity,
                                  std::chrono::duration<double>(*command.checkpoint_minutes * 60),
                                  command.ppm_ascii});
+        if (backend.check) backend.check(world, options);
         RenderJob job(world, options, std::move(saved));
+        if (backend.engine) job.set_engine(backend.engine);
         RenderProgress& progress = job.progress();
         // The tests' hold, after each piece of work when they set it.
         const std::function<void(int)> hold = test_hold_from_environment(progress);

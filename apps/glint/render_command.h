@@ -2,10 +2,13 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
 
+#include "glint/render/render_job.h"
+#include "glint/scene/scene.h"
 #include "image_options.h"
 #include "scene_read_options.h"
 
@@ -37,9 +40,17 @@ struct RenderCommand {
     std::string split = "tiles";  // what the parts are: "tiles" or sample "passes"
 };
 
+// How `glint render` loads and renders: on this process by default; glint-mpi's rank 0 shares
+// the scene's files, checks the other ranks, and renders across them.
+struct RenderBackend {
+    std::function<Scene(const RenderCommand&)> load;                // empty: load_scene
+    std::function<void(const World&, const RenderOptions&)> check;  // before the render
+    RenderEngine engine;                                            // empty: this process
+};
+
 // Exit status: 0 on success, 2 on bad input (scene, options, an unwritable output path, a resume
 // file of another render), 1 on any other failure, 130 when interrupted (after writing what was
 // done to partial_output_path() and the state to resume_path(), leaving the output alone).
-int run_render(const RenderCommand& command);
+int run_render(const RenderCommand& command, const RenderBackend& backend = {});
 
 }  // namespace glint::cli

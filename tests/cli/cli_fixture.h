@@ -42,10 +42,14 @@ protected:
 
     // `shell` runs first in the same shell, e.g. "ulimit -v 1000000 && ".
     Outcome run_glint(const std::string& args, const std::string& shell = "") const {
+        return run(shell, "'" GLINT_BINARY "' " + args);
+    }
+    // `command` run by the shell in the test's folder, after `shell`.
+    Outcome run(const std::string& shell, const std::string& command) const {
         const fs::path out = dir_ / "stdout.txt", err = dir_ / "stderr.txt";
-        const std::string command = shell + "cd '" + dir_.string() + "' && '" GLINT_BINARY "' " +
-                                    args + " > '" + out.string() + "' 2> '" + err.string() + "'";
-        const int status = std::system(command.c_str());
+        const std::string line = shell + "cd '" + dir_.string() + "' && " + command + " > '" +
+                                 out.string() + "' 2> '" + err.string() + "'";
+        const int status = std::system(line.c_str());
         return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, slurp(out), slurp(err)};
     }
 
@@ -54,6 +58,10 @@ protected:
     pid_t spawn_glint(std::vector<std::string> args,
                       std::vector<std::string> environment = {}) const {
         args.insert(args.begin(), GLINT_BINARY);
+        return spawn(std::move(args), std::move(environment));
+    }
+    // Starts args[0], found on the PATH, likewise.
+    pid_t spawn(std::vector<std::string> args, std::vector<std::string> environment = {}) const {
         std::vector<char*> argv;
         for (std::string& arg : args) argv.push_back(arg.data());
         argv.push_back(nullptr);
@@ -70,8 +78,7 @@ protected:
         posix_spawn_file_actions_addopen(&files, STDERR_FILENO, err.c_str(),
                                          O_WRONLY | O_CREAT | O_TRUNC, 0644);
         pid_t pid = -1;
-        const int error =
-            posix_spawn(&pid, GLINT_BINARY, &files, nullptr, argv.data(), envp.data());
+        const int error = posix_spawnp(&pid, argv[0], &files, nullptr, argv.data(), envp.data());
         posix_spawn_file_actions_destroy(&files);
         return error == 0 ? pid : -1;
     }

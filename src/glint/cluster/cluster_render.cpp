@@ -222,7 +222,8 @@ RenderResult render_as_root(const World& world, const RenderOptions& options, Tr
     };
 
     WorkDispatch dispatch(state.tile_passes, passes);
-    std::mutex book, state_mutex;
+    std::mutex book, own_state_mutex;
+    std::mutex& state_mutex = options.state_mutex ? *options.state_mutex : own_state_mutex;
     if (progress) {
         progress->tiles_done = 0;
         progress->passes_done = dispatch.passes_done();
@@ -373,6 +374,16 @@ RenderResult render_as_root(const World& world, const RenderOptions& options, Tr
     result.seconds = state.seconds;
     result.complete = dispatch.done();
     return result;
+}
+
+RenderEngine cluster_engine(Transport& transport, ClusterOptions cluster) {
+    return [&transport, cluster = std::move(cluster)](
+               const World& world, const RenderOptions& options, RenderProgress& progress,
+               RenderState& state, std::span<const WorkPiece> work) {
+        if (!work.empty())
+            throw std::invalid_argument("a render across ranks takes all that is left");
+        return render_as_root(world, options, transport, state, cluster, &progress);
+    };
 }
 
 void render_as_worker(const World& world, const RenderOptions& options, Transport& transport) {

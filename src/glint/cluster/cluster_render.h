@@ -14,6 +14,7 @@
 
 #include "glint/cluster/transport.h"
 #include "glint/render/render.h"
+#include "glint/render/render_job.h"
 
 namespace glint {
 
@@ -32,12 +33,17 @@ struct ClusterOptions {
 
 // Rank 0: renders what is left of `state` (a fresh render's, or one resumed) with the other
 // ranks, and returns the result as render() does; `progress` counts the pieces and its stop
-// flags stop the job (the ranks finish the pieces they hold). options.after_pass is called with
+// flags stop the job (the ranks finish the pieces they hold); options.state_mutex, if given, is
+// held while results merge into the state. options.after_pass is called with
 // the whole render's state (every rank's films summed) after each pass but the last, and
 // options.after_piece on this thread for every piece, wherever it was rendered.
 RenderResult render_as_root(const World& world, const RenderOptions& options, Transport& transport,
                             RenderState& state, const ClusterOptions& cluster,
                             RenderProgress* progress = nullptr);
+
+// render_as_root as a render job's engine (render_job.h), on `transport`; it renders all that
+// is left, and refuses a list of pieces (std::invalid_argument).
+RenderEngine cluster_engine(Transport& transport, ClusterOptions cluster);
 
 // Every other rank: renders what rank 0 hands out until it says the job is over.
 void render_as_worker(const World& world, const RenderOptions& options, Transport& transport);

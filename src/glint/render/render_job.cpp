@@ -28,6 +28,7 @@ RenderResult RenderJob::run(std::span<const WorkPiece> work,
             observer(WorkPiece{pass, tile});
         };
     }
+    if (engine_) return engine_(world_, options, progress_, state_, work);
     return render(world_, options, &progress_, &state_, work);
 }
 

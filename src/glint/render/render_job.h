@@ -9,10 +9,19 @@
 #include <functional>
 #include <mutex>
 #include <optional>
+#include <span>
+#include <utility>
 
 #include "glint/render/render.h"
 
 namespace glint {
+
+// How a job's pieces are rendered: on this process (render()), or across the ranks of a cluster
+// (cluster_render.h). Renders `work` (all that is left when empty) from `state`, counting in
+// `progress` and stopping at its flags, as render() does.
+using RenderEngine = std::function<RenderResult(const World& world, const RenderOptions& options,
+                                                RenderProgress& progress, RenderState& state,
+                                                std::span<const WorkPiece> work)>;
 
 class RenderJob {
 public:
@@ -43,6 +52,8 @@ public:
     const RenderState& state() const { return state_; }
     // Whether every pass is done.
     bool done() const;
+    // Renders with `engine` from now on; render() by default.
+    void set_engine(RenderEngine engine) { engine_ = std::move(engine); }
 
 private:
     const World& world_;
@@ -50,6 +61,7 @@ private:
     RenderState state_;
     RenderProgress progress_;
     mutable std::mutex state_mutex_;  // held while tiles merge into state_ (RenderOptions)
+    RenderEngine engine_;
 };
 
 }  // namespace glint

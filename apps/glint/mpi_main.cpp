@@ -1,0 +1,195 @@
+// glint-mpi: `glint render` across the ranks of an MPI job,
+//   mpirun -np N glint-mpi render SCENE -o OUT [the options of glint render]
+// Rank 0 checks that every rank runs the same glint, loads the scene in its sandbox and sends the
+// scene's files to the others, checks that they made the same render of it, renders with them
+// (cluster/cluster_render.h), and writes the image as glint render would.
+#include <mpi.h>
+#include <stdlib.h>
+
+#include <CLI/CLI.hpp>
+#include <csignal>
+#include <cstdio>
+#include <filesystem>
+#include <sstream>
+#include <string>
+
+#include "command_errors.h"
+#include "glint/cluster/cluster_render.h"
+#include "glint/scene/load_scene.h"
+#include "mpi_transport.h"
+#include "render_cli.h"
+#include "render_command.h"
+#include "render_setup.h"
+#include "scene_broadcast.h"
+#include "usage_error.h"
+
+#ifndef GLINT_VERSION
+#define GLINT_VERSION "unknown"
+#endif
+
+namespace glint::cli {
+namespace {
+
+constexpr const char* kExamples = R"(
+Examples:
+  mpirun -np 4 glint-mpi render scenes/showcase.yaml -o showcase.exr
+  mpirun --hostfile hosts -np 32 glint-mpi render big.yaml -o big.exr --checkpoint 10
+  srun glint-mpi render big.yaml -o big.exr --threads 8
+)";
+
+// What decides each rank's share of the render: ranks whose texts differ did not load the same
+// scene with the same options.
+std::string render_text(const World& world, const RenderOptions& options) {
+    const RenderSettings& s = world.settings();
+    const FilterSpec f = filter_of(s);
+    std::ostringstream out;
+    out << s.width << 'x' << s.height << ' ' << s.samples_per_pixel << " spp, "
+        << integrator_name(s.integrator) << ", sampler " << int(sampler_of(s)) << ", filter "
+        << int(f.kind) << ' ' << f.radius << ", depth " << s.max_depth << ", adaptive "
+        << (s.adaptive ? s.adaptive->threshold : 0) << ", seed " << options.seed << ", tiles "
+        << options.tile_size << ", passes " << pass_size_of(s, options) << ", aovs "
+        << options.aovs.list().size() << ", " << world.primitives().size() << " primitives, "
+        << world.lights().size() << " lights, " << world.object_lights().size()
+        << " emitting objects";
+    return out.str();
+}
+
+// Rank 0: glint render, its scene shared and its render across the ranks. A failure after the
+// others have the scene ends the whole job.
+int run_root(const RenderCommand& command, MpiTransport& transport, double rank_timeout) {
+    ClusterOptions cluster;
+    cluster.rank_timeout = std::chrono::duration<double>(rank_timeout);
+    cluster.describe_rank = describe_rank;
+    // shared: the others have the scene and wait for the render; told: they were told to end
+    // (loading failed) or the render released them.
+    bool shared = false, told = false;
+    RenderBackend backend;
+    backend.load = [&](const RenderCommand& c) {
+        const LoadOptions options = c.reading.load_options();
+        Scene scene;
+        try {
+            scene = load_scene(c.scene, options);
+        } catch (...) {
+            share_failure();
+            told = true;
+            throw;
+        }
+        {
+            const Watchdog watchdog(cluster.rank_timeout, "the sending of the scene's files");
+            share_scene(c.scene, scene, options);
+        }
+        shared = true;
+        return scene;
+    };
+    backend.check = [&](const World& world, const RenderOptions& options) {
+        if (const int r = first_different(render_text(world, options), cluster.rank_timeout); r > 0)
+            throw UsageError{describe_rank(r) +
+                             " made another render of the scene than rank 0 (another glint "
+                             "build, or other options): every rank must be given the same "
+                             "command"};
+    };
+    const RenderEngine engine = cluster_engine(transport, cluster);
+    backend.engine = [&](const World& world, const RenderOptions& options, RenderProgress& progress,
+                         RenderState& state, std::span<const WorkPiece> work) {
+        RenderResult result = engine(world, options, progress, state, work);
+        told = true;
+        return result;
+    };
+    if (!command.part.empty()) {
+        share_failure();
+        std::fprintf(stderr,
+                     "glint: error: --part: glint-mpi renders the whole image across its ranks; "
+                     "parts are for glint render\n");
+        return kExitBadInput;
+    }
+    const int code = run_render(command, backend);
+    if (!shared && !told) share_failure();  // it failed before loading: the others just end
+    if (shared && !told) {
+        std::fflush(stderr);
+        MPI_Abort(MPI_COMM_WORLD, code == 0 ? kExitFailure : code);
+    }
+    return code;
+}
+
+// Every other rank: the scene from rank 0, the same setup, and whatever rank 0 hands out.
+int run_worker(const RenderCommand& command, MpiTransport& transport, double rank_timeout) {
+    std::string pattern = (std::filesystem::temp_directory_path() / "glint-mpi-XXXXXX").string();
+    const char* made = mkdtemp(pattern.data());
+    const int code = reporting_errors([&] {
+        if (!made) throw std::runtime_error("cannot make a folder for the scene's files");
+        const std::filesystem::path folder(made);
+        std::optional<Scene> scene = receive_scene(folder, command.reading.load_options());
+        if (!scene) return 0;  // rank 0 says why
+        RenderSetup setup =
+            set_up_render(command, std::move(*scene), requested_aovs(command), false);
+        std::filesystem::remove_all(folder);
+        first_different(render_text(*setup.world, setup.options),
+                        std::chrono::duration<double>(rank_timeout));
+        render_as_worker(*setup.world, setup.options, transport);
+        return 0;
+    });
+    if (made) std::filesystem::remove_all(made);
+    if (code != 0) {
+        std::fprintf(stderr, "glint-mpi: the error above is %s's: ending the job\n",
+                     describe_rank(transport.rank()).c_str());
+        std::fflush(stderr);
+        MPI_Abort(MPI_COMM_WORLD, code);
+    }
+    return 0;
+}
+
+}  // namespace
+}  // namespace glint::cli
+
+int main(int argc, char** argv) {
+    using namespace glint::cli;
+    std::signal(SIGXFSZ, SIG_IGN);
+    int provided = 0;
+    MPI_Init_thread(&argc, &argv, MPI_THREAD_FUNNELED, &provided);
+    int rank = 0;
+    MPI_Comm_rank(MPI_COMM_WORLD, &rank);
+
+    CLI::App app{"glint-mpi: glint render across the ranks of an MPI job (mpirun, srun)"};
+    app.footer(kExamples);
+    app.set_version_flag("--version", std::string("glint ") + GLINT_VERSION + " (glint-mpi)");
+    app.require_subcommand(1);
+    RenderCommand render;
+    CLI::App* render_app = add_render_command(app, render);
+    double rank_timeout = 300;
+    render_app
+        ->add_option("--rank-timeout", rank_timeout,
+                     "How long rank 0 waits for a rank that holds work before ending the job "
+                     "(seconds; default 300)")
+        ->check(CLI::PositiveNumber);
+    try {
+        app.parse(argc, argv);
+    } catch (const CLI::ParseError& e) {
+        // Every rank reads the same command: rank 0 alone says what is wrong.
+        std::ostringstream quiet;
+        const int code = rank == 0 ? app.exit(e) : app.exit(e, quiet, quiet);
+        MPI_Finalize();
+        return code == 0 ? 0 : kExitBadInput;
+    }
+    int code = 0;
+    {
+        MpiTransport transport;
+        transport.set_sum_timeout(std::chrono::duration<double>(rank_timeout));
+        std::string refusal;
+        int status = kExitBadInput;
+        try {
+            refusal = check_versions(GLINT_VERSION, std::chrono::duration<double>(rank_timeout));
+        } catch (const glint::ClusterError& e) {
+            refusal = e.what();
+            status = kExitFailure;
+        }
+        if (rank == 0 && !refusal.empty()) {
+            std::fprintf(stderr, "glint-mpi: error: %s\n", refusal.c_str());
+            std::fflush(stderr);
+            MPI_Abort(MPI_COMM_WORLD, status);
+        }
+        code = rank == 0 ? run_root(render, transport, rank_timeout)
+                         : run_worker(render, transport, rank_timeout);
+    }
+    MPI_Finalize();
+    return code;
+}

@@ -1,0 +1,25 @@
+// glint-mpi's scene on every rank without a shared file system: rank 0 loads it (in its sandbox)
+// and sends the scene file and every file it read; each other rank writes them under a folder of
+// its own, at their absolute paths, and loads the scene from there.
+#pragma once
+
+#include <filesystem>
+#include <optional>
+
+#include "glint/scene/load_scene.h"
+#include "glint/scene/scene.h"
+
+namespace glint::cli {
+
+// Rank 0: sends the scene file, the files `scene` read and the folders it may read.
+void share_scene(const std::filesystem::path& scene_file, const Scene& scene,
+                 const LoadOptions& options);
+// Rank 0: tells the other ranks that loading failed.
+void share_failure();
+
+// Every other rank: the scene as rank 0 loaded it, its files written under `folder` (which must
+// exist, and is the ranks' own); none when rank 0 failed. `options` are the command's, its
+// folders moved under `folder`.
+std::optional<Scene> receive_scene(const std::filesystem::path& folder, LoadOptions options);
+
+}  // namespace glint::cli

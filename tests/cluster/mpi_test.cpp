@@ -1,0 +1,198 @@
+// glint-mpi under mpirun with three ranks on this machine: the image of one glint render, bit for
+// bit, for every integrator and with output variables; a stopped job that resumes; a rank given
+// another command refused at the start; a rank killed or stopped ends the job in bounded time,
+// named.
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <csignal>
+#include <fstream>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "cli/cli_fixture.h"
+#include "common/under_sanitizer.h"
+
+namespace glint {
+namespace {
+
+// mpirun as root needs leave; Open MPI's own allocations are not the sanitizer's business.
+const std::string kEnvironment =
+    "export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 "
+    "ASAN_OPTIONS=detect_leaks=0; ";
+
+class Mpi : public Cli {
+protected:
+    // mpirun with three ranks of glint-mpi render `args`, each rank on one thread.
+    Outcome mpirun(const std::string& args, int ranks = 3) const {
+        return run(kEnvironment, "mpirun --oversubscribe -np " + std::to_string(ranks) +
+                                     " '" GLINT_MPI_BINARY "' render --threads 1 " + args);
+    }
+    // The process of the rank of mpirun `parent`: its child whose environment names the rank.
+    static pid_t rank_process(pid_t parent, int rank) {
+        std::ifstream children("/proc/" + std::to_string(parent) + "/task/" +
+                               std::to_string(parent) + "/children");
+        pid_t child = 0;
+        while (children >> child) {
+            std::ifstream environ("/proc/" + std::to_string(child) + "/environ");
+            const std::string all((std::istreambuf_iterator<char>(environ)), {});
+            if (all.find("OMPI_COMM_WORLD_RANK=" + std::to_string(rank) + '\0') !=
+                std::string::npos)
+                return child;
+        }
+        return 0;
+    }
+    std::vector<std::string> mpirun_args(const std::vector<std::string>& more) const {
+        std::vector<std::string> a = {"mpirun",         "--oversubscribe", "-np",       "3",
+                                      GLINT_MPI_BINARY, "render",          "--threads", "1"};
+        a.insert(a.end(), more.begin(), more.end());
+        return a;
+    }
+    static std::vector<std::string> environment() {
+        return {"OMPI_ALLOW_RUN_AS_ROOT=1", "OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1",
+                "ASAN_OPTIONS=detect_leaks=0"};
+    }
+};
+
+TEST_F(Mpi, ThreeRanksWriteTheImageOfOneProcessForEveryIntegrator) {
+    struct Case {
+        std::string scene, options;
+    };
+    const std::string small = " --width 48 --height 32 --seed 5";
+    for (const Case& c : std::vector<Case>{
+             {"showcase.yaml", ""},
+             {"distributed-showcase.yaml", " --spp 8"},
+             {"features/adaptive.yaml", " --spp 32"},
+             {"features/cornell-box.yaml", " --integrator path --spp 4"},
+             {"features/cornell-box.yaml", " --integrator light --spp 4"},
+             {"features/caustics.yaml", " --integrator photon --spp 2"},
+             {"features/cone-tracing.yaml", ""},
+             {"features/beam-tracing.yaml", ""},
+             {"features/textures.yaml", " --aov depth,normal,object,diffuse,samples"}}) {
+        SCOPED_TRACE(c.scene + c.options);
+        const std::string args = scene(c.scene) + small + c.options + " -q";
+        const Outcome one = run_glint("render " + args + " -o one.exr");
+        ASSERT_EQ(one.exit_code, 0) << one.err;
+        const Outcome three = mpirun(args + " -o three.exr");
+        ASSERT_EQ(three.exit_code, 0) << three.err;
+        EXPECT_TRUE(slurp(dir_ / "one.exr") == slurp(dir_ / "three.exr"));
+    }
+    // The summary adds up every rank's rays.
+    const std::string args = scene("showcase.yaml") + small;
+    const Outcome one = run_glint("render " + args + " -o one.png");
+    const Outcome three = mpirun(args + " -o three.png");
+    ASSERT_EQ(three.exit_code, 0) << three.err;
+    const auto rays = [](const std::string& out) { return out.substr(out.find("  rays")); };
+    EXPECT_EQ(rays(three.out).substr(0, 30), rays(one.out).substr(0, 30)) << three.out;
+}
+
+TEST_F(Mpi, AStoppedJobResumesToTheImageOfOneRun) {
+    const std::vector<std::string> options = {
+        std::string(GLINT_SOURCE_DIR) + "/scenes/distributed-showcase.yaml",
+        "--width",
+        "64",
+        "--height",
+        "48",
+        "--spp",
+        "32",
+        "--seed",
+        "3",
+        "-q"};
+    std::string line;
+    for (const std::string& o : options) line += "'" + o + "' ";
+    ASSERT_EQ(run_glint("render --threads 1 " + line + " -o whole.exr").exit_code, 0);
+    std::vector<std::string> environment = this->environment();
+    environment.push_back("GLINT_TEST_HOLD_AFTER_TILES=3");
+    std::vector<std::string> args = options;
+    args.insert(args.end(), {"-o", (dir_ / "out.exr").string()});
+    const pid_t pid = spawn(mpirun_args(args), environment);
+    ASSERT_GT(pid, 0);
+    for (int waited = 0; !holding() && waited < 120000; waited += 10)
+        std::this_thread::sleep_for(std::chrono::milliseconds(10));
+    ASSERT_TRUE(holding()) << slurp(dir_ / "stderr.txt");
+    const pid_t root = rank_process(pid, 0);
+    ASSERT_GT(root, 0);
+    kill(root, SIGINT);  // as Ctrl-C on rank 0's terminal
+    int status = 0;
+    waitpid(pid, &status, 0);
+    const std::string err = slurp(dir_ / "stderr.txt");
+    EXPECT_NE(err.find("--resume"), std::string::npos) << err;
+    ASSERT_TRUE(fs::exists(dir_ / "out.exr.resume")) << err;
+    EXPECT_FALSE(fs::exists(dir_ / "out.exr"));
+
+    const Outcome resumed = mpirun(line + "-o out.exr --resume");
+    ASSERT_EQ(resumed.exit_code, 0) << resumed.err;
+    EXPECT_TRUE(slurp(dir_ / "out.exr") == slurp(dir_ / "whole.exr"));
+    EXPECT_FALSE(fs::exists(dir_ / "out.exr.resume"));
+}
+
+TEST_F(Mpi, ARankGivenAnotherCommandIsRefusedAtTheStart) {
+    const std::string mpi = "'" GLINT_MPI_BINARY "' render --threads 1 " + scene("showcase.yaml") +
+                            " --width 32 --height 24 -q -o x.png";
+    const Outcome o =
+        run(kEnvironment, "mpirun --oversubscribe -np 2 " + mpi + " : -np 1 " + mpi + " --spp 4");
+    EXPECT_NE(o.exit_code, 0);
+    EXPECT_NE(o.err.find("rank 2 ("), std::string::npos) << o.err;
+    EXPECT_NE(o.err.find("made another render of the scene than rank 0"), std::string::npos)
+        << o.err;
+    EXPECT_FALSE(fs::exists(dir_ / "x.png"));
+}
+
+TEST_F(Mpi, BadInputIsReportedOnceByRankZero) {
+    std::ofstream(dir_ / "bad.yaml") << "camera: {from: [0, 0, -5], at: [0, 0, 0]\nobjects: [\n";
+    const Outcome bad = mpirun("bad.yaml -o x.png");
+    EXPECT_EQ(bad.exit_code, 2);
+    EXPECT_NE(bad.err.find("bad.yaml:2:1: error:"), std::string::npos) << bad.err;
+    EXPECT_EQ(bad.err.find("MPI_ABORT"), std::string::npos) << bad.err;
+    const Outcome part = mpirun(scene("showcase.yaml") + " --part 1/2 -o x.png");
+    EXPECT_EQ(part.exit_code, 2);
+    EXPECT_NE(part.err.find("parts are for glint render"), std::string::npos) << part.err;
+}
+
+// A rank killed outright: mpirun ends the job and names it; a rank stopped (a host that hangs):
+// rank 0 gives up after --rank-timeout and names it. Neither hangs.
+TEST_F(Mpi, ARankKilledOrStoppedEndsTheJobNamingIt) {
+    for (const int signal : {SIGKILL, SIGSTOP}) {
+        SCOPED_TRACE(signal == SIGKILL ? "killed" : "stopped");
+        const pid_t pid =
+            spawn(mpirun_args({std::string(GLINT_SOURCE_DIR) + "/scenes/distributed-showcase.yaml",
+                               "--width", "320", "--height", "240", "--spp", "256",
+                               "--rank-timeout", "2", "-o", (dir_ / "out.exr").string()}),
+                  environment());
+        ASSERT_GT(pid, 0);
+        // Once the render is under way: its first progress line.
+        for (int waited = 0; waited < 120000; waited += 10) {
+            if (slurp(dir_ / "stderr.txt").find("% done") != std::string::npos) break;
+            std::this_thread::sleep_for(std::chrono::milliseconds(10));
+        }
+        const pid_t victim = rank_process(pid, 2);
+        ASSERT_GT(victim, 0) << slurp(dir_ / "stderr.txt");
+        const auto start = std::chrono::steady_clock::now();
+        kill(victim, signal);
+        int status = 0;
+        while (waitpid(pid, &status, WNOHANG) == 0 &&
+               std::chrono::steady_clock::now() - start < std::chrono::seconds(60))
+            std::this_thread::sleep_for(std::chrono::milliseconds(20));
+        const bool ended = waitpid(pid, &status, WNOHANG) != 0 || WIFEXITED(status);
+        if (!ended) {
+            kill(victim, SIGKILL);
+            kill(pid, SIGKILL);
+            waitpid(pid, &status, 0);
+        }
+        EXPECT_TRUE(ended) << "the job did not end in a minute";
+        EXPECT_LT(std::chrono::steady_clock::now() - start, std::chrono::seconds(60));
+        const std::string err = slurp(dir_ / "stderr.txt");
+        if (signal == SIGKILL)
+            EXPECT_NE(err.find("rank 2"), std::string::npos) << err;
+        else
+            EXPECT_NE(err.find("rank 2 ("), std::string::npos) << err;
+        EXPECT_NE(err.find(signal == SIGKILL ? "signal 9" : "has not answered"), std::string::npos)
+            << err;
+        EXPECT_FALSE(fs::exists(dir_ / "out.exr"));
+        kill(victim, SIGCONT);
+    }
+}
+
+}  // namespace
+}  // namespace glint
