@@ -57,9 +57,13 @@ std::string render_text(const World& world, const RenderOptions& options) {
 // Rank 0: glint render, its scene shared and its render across the ranks. A failure after the
 // others have the scene ends the whole job.
 int run_root(const RenderCommand& command, MpiTransport& transport, double rank_timeout) {
+    ClusterStats stats;
     ClusterOptions cluster;
     cluster.rank_timeout = std::chrono::duration<double>(rank_timeout);
     cluster.describe_rank = describe_rank;
+    cluster.stats = &stats;
+    double share_seconds = 0;
+    std::uint64_t share_bytes = 0;
     // shared: the others have the scene and wait for the render; told: they were told to end
     // (loading failed) or the render released them.
     bool shared = false, told = false;
@@ -75,8 +79,11 @@ int run_root(const RenderCommand& command, MpiTransport& transport, double rank_
             throw;
         }
         {
+            const auto start = std::chrono::steady_clock::now();
             const Watchdog watchdog(cluster.rank_timeout, "the sending of the scene's files");
-            share_scene(c.scene, scene, options);
+            share_bytes = share_scene(c.scene, scene, options);
+            share_seconds =
+                std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         }
         shared = true;
         return scene;
@@ -103,6 +110,15 @@ int run_root(const RenderCommand& command, MpiTransport& transport, double rank_
         return kExitBadInput;
     }
     const int code = run_render(command, backend);
+    if (told && shared && !command.quiet) {
+        std::printf("  ranks %d: pieces", transport.ranks());
+        for (const int n : stats.pieces) std::printf(" %d", n);
+        std::printf(
+            "; scene's files sent (%.1f MB) in %.3f s; films summed %d times in %.3f s; "
+            "%.1f MB of messages\n",
+            double(share_bytes) / 1e6, share_seconds, stats.sums, stats.sum_seconds,
+            double(stats.bytes) / 1e6);
+    }
     if (!shared && !told) share_failure();  // it failed before loading: the others just end
     if (shared && !told) {
         std::fflush(stderr);

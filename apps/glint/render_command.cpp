@@ -30,7 +30,6 @@
 #include "glint/render/render_part.h"
 #include "glint/render/resume_file.h"
 #include "glint/render/world.h"
-#include "glint/scene/integrator_fit.h"
 #include "glint/scene/load_scene.h"
 #include "output_path.h"
 #include "progress.h"

@@ -47,8 +47,9 @@ std::filesystem::path under(const std::filesystem::path& folder, const std::stri
 
 }  // namespace
 
-void share_scene(const std::filesystem::path& scene_file, const Scene& scene,
-                 const LoadOptions& options) {
+std::uint64_t share_scene(const std::filesystem::path& scene_file, const Scene& scene,
+                          const LoadOptions& options) {
+    std::uint64_t sent = 0;
     send_u64(1);
     const std::string own = resolve_path(scene_file).value_or(scene_file).string();
     send_text(own);
@@ -65,7 +66,9 @@ void share_scene(const std::filesystem::path& scene_file, const Scene& scene,
         send_u64(bytes.size());
         broadcast_bytes(reinterpret_cast<char*>(const_cast<unsigned char*>(bytes.data())),
                         bytes.size());
+        sent += bytes.size();
     }
+    return sent;
 }
 
 void share_failure() { send_u64(0); }

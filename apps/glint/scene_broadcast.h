@@ -3,6 +3,7 @@
 // its own, at their absolute paths, and loads the scene from there.
 #pragma once
 
+#include <cstdint>
 #include <filesystem>
 #include <optional>
 
@@ -11,9 +12,10 @@
 
 namespace glint::cli {
 
-// Rank 0: sends the scene file, the files `scene` read and the folders it may read.
-void share_scene(const std::filesystem::path& scene_file, const Scene& scene,
-                 const LoadOptions& options);
+// Rank 0: sends the scene file, the files `scene` read and the folders it may read; returns the
+// bytes of the files.
+std::uint64_t share_scene(const std::filesystem::path& scene_file, const Scene& scene,
+                          const LoadOptions& options);
 // Rank 0: tells the other ranks that loading failed.
 void share_failure();
 

@@ -232,8 +232,9 @@ RenderResult render_as_root(const World& world, const RenderOptions& options, Tr
     }
     std::vector<Peer> peers(std::size_t(transport.ranks()));
     for (Peer& peer : peers) peer.since = start;
-    LocalRenderer local(world, options, state, dispatch, book, state_mutex);
     int passes_done = dispatch.passes_done();
+    // From here on the dispatch is the book's lock's: the local renderer takes from it.
+    LocalRenderer local(world, options, state, dispatch, book, state_mutex);
     bool stopping = false, checkpoint_due = false;
 
     const auto all_idle = [&] {  // under the book's lock
@@ -241,6 +242,9 @@ RenderResult render_as_root(const World& world, const RenderOptions& options, Tr
             if (!peers[r].waiting) return false;
         return !local.busy();
     };
+    ClusterStats own_stats;
+    ClusterStats& stats = cluster.stats ? *cluster.stats : own_stats;
+    stats.pieces.assign(peers.size(), 0);
     const auto report = [&](const std::vector<WorkPiece>& finished) {
         for (const WorkPiece& piece : finished) {
             if (progress) ++progress->tiles_done;
@@ -254,7 +258,10 @@ RenderResult render_as_root(const World& world, const RenderOptions& options, Tr
             peers[r].waiting = false;
             peers[r].since = Clock::now();
         }
+        const auto sum_start = Clock::now();
         sum_films(transport, state, false);
+        ++stats.sums;
+        stats.sum_seconds += std::chrono::duration<double>(Clock::now() - sum_start).count();
     };
 
     for (;;) {
@@ -270,6 +277,7 @@ RenderResult render_as_root(const World& world, const RenderOptions& options, Tr
         }
         if (std::optional<Message> message = transport.receive(std::chrono::milliseconds(2))) {
             const int r = message->from;
+            stats.bytes += message->bytes.size();
             if (r <= 0 || r >= int(peers.size()) || peers[std::size_t(r)].waiting)
                 throw ClusterError("a message came from " + name(r) + " out of turn");
             Peer& peer = peers[std::size_t(r)];
@@ -307,6 +315,7 @@ RenderResult render_as_root(const World& world, const RenderOptions& options, Tr
                     local.wake();
                 }
                 report(finished);
+                stats.pieces[std::size_t(r)] += int(finished.size());
             } catch (const std::runtime_error& e) {
                 throw ClusterError("a message from " + name(r) + " makes no sense: " + e.what());
             }
@@ -319,6 +328,7 @@ RenderResult render_as_root(const World& world, const RenderOptions& options, Tr
         const bool done = dispatch.done();
         lock.unlock();
         report(finished);
+        stats.pieces[0] += int(finished.size());
         if (progress) progress->passes_done = now_done;
         if (now_done > passes_done) {
             passes_done = now_done;
@@ -349,6 +359,7 @@ RenderResult render_as_root(const World& world, const RenderOptions& options, Tr
                     bytes = work_message(pieces, state, tiles);
                 }
                 transport.send(int(r), bytes);
+                stats.bytes += bytes.size();
                 peer.held = std::move(pieces);
                 peer.waiting = false;
                 peer.since = Clock::now();

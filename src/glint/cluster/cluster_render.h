@@ -8,9 +8,11 @@
 #pragma once
 
 #include <chrono>
+#include <cstdint>
 #include <functional>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include "glint/cluster/transport.h"
 #include "glint/render/render.h"
@@ -23,12 +25,21 @@ struct ClusterError : std::runtime_error {
     using std::runtime_error::runtime_error;
 };
 
+// What a render across ranks did, for its summary and the benchmarks.
+struct ClusterStats {
+    std::vector<int> pieces;  // rendered by each rank
+    int sums = 0;             // times the films were summed (checkpoints and the end)
+    double sum_seconds = 0;   // the time those took
+    std::uint64_t bytes = 0;  // sent and received by rank 0 in messages
+};
+
 struct ClusterOptions {
     // How long rank 0 waits for a rank that holds work, or that it needs for a sum, before it
     // gives the job up.
     std::chrono::duration<double> rank_timeout{300};
     // "rank 2 (node7)", for messages; "rank 2" without it.
     std::function<std::string(int rank)> describe_rank;
+    ClusterStats* stats = nullptr;  // filled in when given
 };
 
 // Rank 0: renders what is left of `state` (a fresh render's, or one resumed) with the other

@@ -13,6 +13,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <map>
 #include <mutex>
 #include <optional>
 #include <stdexcept>
@@ -151,19 +152,23 @@ std::vector<WorkPiece> ordered_work(std::span<const WorkPiece> work, const Rende
         return a.pass != b.pass ? a.pass < b.pass : a.tile < b.tile;
     });
     const int tiles = int(state.tile_passes.size());
-    std::vector<int> next(state.tile_passes);  // each tile's next pass, as the list goes
+    // Each listed tile's next pass, as the list goes. Only the listed tiles' entries are read:
+    // others may be written meanwhile (the pieces a cluster's rank 0 takes back from others).
+    std::map<int, int> next;
     for (const WorkPiece& piece : ordered) {
         if (piece.tile < 0 || piece.tile >= tiles || piece.pass < 0 || piece.pass >= passes)
             throw std::invalid_argument("render: piece (pass " + std::to_string(piece.pass) +
                                         ", tile " + std::to_string(piece.tile) +
                                         ") is outside the render's " + std::to_string(passes) +
                                         " passes of " + std::to_string(tiles) + " tiles");
-        if (piece.pass != next[std::size_t(piece.tile)])
-            throw std::invalid_argument(
-                "render: tile " + std::to_string(piece.tile) + " is at pass " +
-                std::to_string(next[std::size_t(piece.tile)]) + ", not " +
-                std::to_string(piece.pass) + ": each tile's passes come one after another, once");
-        ++next[std::size_t(piece.tile)];
+        int& at =
+            next.try_emplace(piece.tile, state.tile_passes[std::size_t(piece.tile)]).first->second;
+        if (piece.pass != at)
+            throw std::invalid_argument("render: tile " + std::to_string(piece.tile) +
+                                        " is at pass " + std::to_string(at) + ", not " +
+                                        std::to_string(piece.pass) +
+                                        ": each tile's passes come one after another, once");
+        ++at;
     }
     return ordered;
 }
