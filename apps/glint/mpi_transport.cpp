@@ -4,6 +4,7 @@
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -89,16 +90,32 @@ MpiTransport::MpiTransport() {
 }
 
 MpiTransport::~MpiTransport() {
+    for (Outgoing& out : outgoing_) MPI_Wait(&out.request, MPI_STATUS_IGNORE);
     MPI_Op_free(&add_);
     MPI_Type_free(&sum_type_);
 }
 
 void MpiTransport::send(int to, const std::string& bytes) {
-    MPI_Send(bytes.data(), int(bytes.size()), MPI_BYTE, to, kTag, MPI_COMM_WORLD);
+    // Not waited for: a blocking send of a large message spins until the other rank takes it,
+    // taking a core from the renderers. The bytes are kept until MPI is done with them.
+    reap_sends();
+    Outgoing& out = outgoing_.emplace_back(Outgoing{bytes, MPI_REQUEST_NULL});
+    MPI_Isend(out.bytes.data(), int(out.bytes.size()), MPI_BYTE, to, kTag, MPI_COMM_WORLD,
+              &out.request);
+}
+
+void MpiTransport::reap_sends() {
+    for (auto it = outgoing_.begin(); it != outgoing_.end();) {
+        int done = 0;
+        MPI_Test(&it->request, &done, MPI_STATUS_IGNORE);
+        it = done ? outgoing_.erase(it) : std::next(it);
+    }
 }
 
 std::optional<Message> MpiTransport::receive(std::chrono::milliseconds wait) {
     const auto deadline = std::chrono::steady_clock::now() + wait;
+    std::chrono::microseconds pause(20);
+    reap_sends();
     for (;;) {
         int flag = 0;
         MPI_Status status;
@@ -112,7 +129,10 @@ std::optional<Message> MpiTransport::receive(std::chrono::milliseconds wait) {
             return message;
         }
         if (std::chrono::steady_clock::now() >= deadline) return std::nullopt;
-        std::this_thread::sleep_for(std::chrono::microseconds(200));
+        // Sleeps from 20 us, doubling to 1 ms while nothing comes: a quick answer when messages
+        // flow, and the cores left to the renderers when they do not.
+        std::this_thread::sleep_for(pause);
+        pause = std::min(2 * pause, std::chrono::microseconds(1000));
     }
 }
 

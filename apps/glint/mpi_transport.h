@@ -7,6 +7,7 @@
 
 #include <chrono>
 #include <condition_variable>
+#include <list>
 #include <mutex>
 #include <string>
 #include <thread>
@@ -32,7 +33,14 @@ public:
     void set_sum_timeout(std::chrono::duration<double> timeout) { sum_timeout_ = timeout; }
 
 private:
+    struct Outgoing {
+        std::string bytes;
+        MPI_Request request;
+    };
+    void reap_sends();  // forgets the sends MPI is done with
+
     int rank_ = 0, ranks_ = 1;
+    std::list<Outgoing> outgoing_;  // sends in flight: a list, so that their bytes stay put
     MPI_Datatype sum_type_{};
     MPI_Op add_{};
     std::chrono::duration<double> sum_timeout_{300};

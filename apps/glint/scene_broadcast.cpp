@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -76,9 +77,15 @@ void share_failure() { send_u64(0); }
 std::optional<Scene> receive_scene(const std::filesystem::path& folder, LoadOptions options) {
     if (receive_u64() == 0) return std::nullopt;
     const std::string scene_file = receive_text();
+    // The folders it may read, under `folder`, and as they are on this host: a scene that names
+    // a file by its absolute path reads it from this host's disk (checked below).
     options.allow_read.clear();
-    for (std::uint64_t n = receive_u64(); n > 0; --n)
-        options.allow_read.push_back(under(folder, receive_text()));
+    std::vector<std::filesystem::path> own_disk;
+    for (std::uint64_t n = receive_u64(); n > 0; --n) {
+        const std::string allowed = receive_text();
+        options.allow_read.push_back(under(folder, allowed));
+        if (std::filesystem::is_directory(allowed)) own_disk.push_back(allowed);
+    }
     for (std::uint64_t n = receive_u64(); n > 0; --n) {
         const std::filesystem::path path = under(folder, receive_text());
         std::string bytes(receive_u64(), '\0');
@@ -90,7 +97,19 @@ std::optional<Scene> receive_scene(const std::filesystem::path& folder, LoadOpti
     }
     for (const std::filesystem::path& allowed : options.allow_read)
         std::filesystem::create_directories(allowed);
-    return load_scene(under(folder, scene_file), options);
+    options.allow_read.insert(options.allow_read.end(), own_disk.begin(), own_disk.end());
+    Scene scene = load_scene(under(folder, scene_file), options);
+    // A file read from this host's disk must be the one rank 0 read.
+    for (const std::filesystem::path& read : scene.sources.files_read) {
+        if (is_inside(read, folder)) continue;
+        const std::filesystem::path sent = under(folder, read.string());
+        std::error_code error;
+        if (!std::filesystem::exists(sent, error) || read_whole_file(read) != read_whole_file(sent))
+            throw std::runtime_error("the scene reads " + read.string() +
+                                     " on this host, and it is not the file rank 0 read: give "
+                                     "every host the same file, or a path relative to the scene");
+    }
+    return scene;
 }
 
 }  // namespace glint::cli

@@ -127,6 +127,21 @@ TEST_F(Mpi, AStoppedJobResumesToTheImageOfOneRun) {
     EXPECT_FALSE(fs::exists(dir_ / "out.exr.resume"));
 }
 
+// A scene in the test's folder naming a mesh by its absolute path in a folder it may read: the
+// other ranks read the mesh from their own disk, checked against the one rank 0 sent.
+TEST_F(Mpi, AFileNamedByItsAbsolutePathIsReadOnEveryHostAndChecked) {
+    const std::string meshes = std::string(GLINT_SOURCE_DIR) + "/tests/data/meshes";
+    std::ofstream(dir_ / "mesh.yaml") << "camera: {from: [0, 0.1, 0.4], at: [0, 0.1, 0], fov: 40}\n"
+                                         "lights: [{type: point, position: [1, 1, 1]}]\n"
+                                         "objects: [{type: mesh, file: "
+                                      << meshes << "/bunny_npm.obj}]\n";
+    const std::string args = "mesh.yaml --width 32 --height 24 -q --allow-read '" + meshes + "'";
+    ASSERT_EQ(run_glint("render " + args + " -o one.exr").exit_code, 0);
+    const Outcome three = mpirun(args + " -o three.exr");
+    ASSERT_EQ(three.exit_code, 0) << three.err;
+    EXPECT_TRUE(slurp(dir_ / "one.exr") == slurp(dir_ / "three.exr"));
+}
+
 TEST_F(Mpi, ARankGivenAnotherCommandIsRefusedAtTheStart) {
     const std::string mpi = "'" GLINT_MPI_BINARY "' render --threads 1 " + scene("showcase.yaml") +
                             " --width 32 --height 24 -q -o x.png";
