@@ -15,6 +15,7 @@
 
 #include "command_errors.h"
 #include "glint/cluster/cluster_render.h"
+#include "glint/scene/animation.h"
 #include "glint/scene/load_scene.h"
 #include "mpi_transport.h"
 #include "render_cli.h"
@@ -64,9 +65,10 @@ int run_root(const RenderCommand& command, MpiTransport& transport, double rank_
     cluster.stats = &stats;
     double share_seconds = 0;
     std::uint64_t share_bytes = 0;
-    // shared: the others have the scene and wait for the render; told: they were told to end
-    // (loading failed) or the render released them.
-    bool shared = false, told = false;
+    // What the other ranks wait for: the scene (or word that loading failed), the next frame's
+    // number (or word that there is none), or the end of a frame's render.
+    enum class Others { scene, frame, render, released } others = Others::scene;
+    bool rendered = false;
     RenderBackend backend;
     backend.load = [&](const RenderCommand& c) {
         const LoadOptions options = c.reading.load_options();
@@ -75,7 +77,7 @@ int run_root(const RenderCommand& command, MpiTransport& transport, double rank_
             scene = load_scene(c.scene, options);
         } catch (...) {
             share_failure();
-            told = true;
+            others = Others::released;
             throw;
         }
         {
@@ -85,8 +87,12 @@ int run_root(const RenderCommand& command, MpiTransport& transport, double rank_
             share_seconds =
                 std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         }
-        shared = true;
+        others = Others::frame;
         return scene;
+    };
+    backend.begin_frame = [&](int frame) {
+        share_frame(frame);
+        others = Others::render;
     };
     backend.check = [&](const World& world, const RenderOptions& options) {
         if (const int r = first_different(render_text(world, options), cluster.rank_timeout); r > 0)
@@ -99,7 +105,8 @@ int run_root(const RenderCommand& command, MpiTransport& transport, double rank_
     backend.engine = [&](const World& world, const RenderOptions& options, RenderProgress& progress,
                          RenderState& state, std::span<const WorkPiece> work) {
         RenderResult result = engine(world, options, progress, state, work);
-        told = true;
+        others = Others::frame;
+        rendered = true;
         return result;
     };
     if (!command.part.empty()) {
@@ -110,7 +117,7 @@ int run_root(const RenderCommand& command, MpiTransport& transport, double rank_
         return kExitBadInput;
     }
     const int code = run_render(command, backend);
-    if (told && shared && !command.quiet) {
+    if (rendered && !command.quiet) {
         std::printf("  ranks %d: pieces", transport.ranks());
         for (const int n : stats.pieces) std::printf(" %d", n);
         std::printf(
@@ -119,8 +126,9 @@ int run_root(const RenderCommand& command, MpiTransport& transport, double rank_
             double(share_bytes) / 1e6, share_seconds, stats.sums, stats.sum_seconds,
             double(stats.bytes) / 1e6);
     }
-    if (!shared && !told) share_failure();  // it failed before loading: the others just end
-    if (shared && !told) {
+    if (others == Others::scene) share_failure();  // it failed before loading: the others end
+    if (others == Others::frame) share_end_of_frames();
+    if (others == Others::render) {  // they may be anywhere in the frame's set-up or render
         std::fflush(stderr);
         MPI_Abort(MPI_COMM_WORLD, code == 0 ? kExitFailure : code);
     }
@@ -134,14 +142,16 @@ int run_worker(const RenderCommand& command, MpiTransport& transport, double ran
     const int code = reporting_errors([&] {
         if (!made) throw std::runtime_error("cannot make a folder for the scene's files");
         const std::filesystem::path folder(made);
-        std::optional<Scene> scene = receive_scene(folder, command.reading.load_options());
+        const std::optional<Scene> scene = receive_scene(folder, command.reading.load_options());
         if (!scene) return 0;  // rank 0 says why
-        RenderSetup setup =
-            set_up_render(command, std::move(*scene), requested_aovs(command), false);
         std::filesystem::remove_all(folder);
-        first_different(render_text(*setup.world, setup.options),
-                        std::chrono::duration<double>(rank_timeout));
-        render_as_worker(*setup.world, setup.options, transport);
+        while (const std::optional<int> frame = receive_frame()) {
+            RenderSetup setup = set_up_render(command, scene_at_frame(*scene, *frame),
+                                              requested_aovs(command), false);
+            first_different(render_text(*setup.world, setup.options),
+                            std::chrono::duration<double>(rank_timeout));
+            render_as_worker(*setup.world, setup.options, transport);
+        }
         return 0;
     });
     if (made) std::filesystem::remove_all(made);

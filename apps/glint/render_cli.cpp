@@ -19,7 +19,13 @@ CLI::App* add_render_command(CLI::App& app, RenderCommand& c) {
     render->add_option("scene", c.scene, "Scene file: " + scene_formats_text())->required();
     render->add_option("-o,--output", c.output,
                        "Image to write: .png (sRGB, 8-bit), .ppm, .pfm or .exr (linear float); "
-                       "default: the scene's name with .png");
+                       "an animation's frames where # stand (out.####.png); default: the "
+                       "scene's name with .png (.####.png for an animation)");
+    render
+        ->add_option("--frames", c.frames,
+                     "Frames of an animated scene to render, A..B or A, counted from 0; "
+                     "default: all of them when the output names frames with #")
+        ->type_name("A..B");
     add_image_options(*render, c.image);
     render->add_option("--threads", c.threads, "Worker threads; 0 uses every core")
         ->check(whole_number(0, 4096));

@@ -19,6 +19,7 @@
 #include <vector>
 
 #include "command_errors.h"
+#include "frame_sequence.h"
 #include "glint/image/atomic_file.h"
 #include "glint/image/file_io.h"
 #include "glint/image/image_io.h"
@@ -30,6 +31,7 @@
 #include "glint/render/render_part.h"
 #include "glint/render/resume_file.h"
 #include "glint/render/world.h"
+#include "glint/scene/animation.h"
 #include "glint/scene/load_scene.h"
 #include "output_path.h"
 #include "progress.h"
@@ -56,8 +58,16 @@ void ignore_stop_signals() {
     std::signal(SIGTERM, SIG_IGN);
 }
 
-std::string default_output(const std::string& scene) {
-    return std::filesystem::path(scene).stem().string() + ".png";
+// Between frames, as before a still's render, Ctrl-C and SIGTERM end glint at once: the frames
+// written stay, and the next has not started.
+void default_stop_signals() {
+    std::signal(SIGINT, SIG_DFL);
+    std::signal(SIGTERM, SIG_DFL);
+}
+
+// The scene's name with .png, in the current directory; an animation's frames numbered in it.
+std::string default_output(const std::string& file, const Scene& scene) {
+    return std::filesystem::path(file).stem().string() + (scene.animation ? ".####.png" : ".png");
 }
 
 std::string shell_quoted(const std::string& s) {
@@ -118,155 +128,227 @@ RenderPart requested_part(const RenderCommand& c) {
     return *part;
 }
 
+// The names one image goes by in what glint prints.
+struct ImageNames {
+    std::string continuing;  // the command that continues it when stopped
+    std::string note;        // the summary's note: "frame 7"; empty for a still
+};
+
+// A bad output path fails before anything is rendered.
+void check_outputs(const RenderCommand& c, const std::string& output) {
+    if (const auto reason = unwritable_image_reason(output)) throw UsageError{*reason};
+    if (!c.stats_file.empty())
+        if (const auto reason = unwritable_reason(c.stats_file)) throw UsageError{*reason};
+    if (!c.samples_image.empty())
+        if (const auto reason = unwritable_image_reason(c.samples_image)) throw UsageError{*reason};
+}
+
+// The command that continues a stopped render of `output` (frames from `frames` on).
+std::string continuing(const RenderCommand& c, const std::string& output,
+                       std::optional<FrameRange> frames) {
+    std::string command = "glint render " + shell_quoted(c.scene) + " -o " + shell_quoted(output);
+    if (frames)
+        command +=
+            " --frames " + std::to_string(frames->first) + ".." + std::to_string(frames->last);
+    return command + " --resume";
+}
+
+// One image, a still or a frame: the render of `scene` to command.output, its files written.
+int render_image(const RenderCommand& command, const RenderBackend& backend, Scene scene,
+                 const ImageNames& names) {
+    const std::string& output = command.output;
+    check_outputs(command, output);
+    const AovSet aovs = requested_aovs(command);
+    const RenderPart part = requested_part(command);
+    // A part's state goes to its own file beside the output, which glint merge writes.
+    const std::filesystem::path part_file =
+        part.whole() ? std::filesystem::path() : part_file_path(output, part.index, part.count);
+    if (!part.whole())
+        if (const auto reason = unwritable_reason(part_file)) throw UsageError{*reason};
+    if (!holds_aov_layers(output))
+        for (const Aov a : aovs.list())
+            if (const auto reason = unwritable_image_reason(aov_picture_path(output, a).string()))
+                throw UsageError{*reason};
+    RenderSetup setup = set_up_render(command, std::move(scene), aovs, true);
+    const World& world = *setup.world;
+    RenderOptions& options = setup.options;
+    const std::vector<std::filesystem::path>& files_read = setup.files_read;
+    const RenderSettings& s = world.settings();
+    const RenderIdentity identity =
+        identify_render(command.scene, files_read, s, options, GLINT_VERSION, part);
+    // A part leaves no image of its own when stopped: its state alone.
+    const std::filesystem::path resume = resume_path(part.whole() ? std::filesystem::path(output)
+                                                                  : part_file),
+                                partial = part.whole() ? partial_output_path(output)
+                                                       : std::filesystem::path();
+    const int passes = pass_count(s.samples_per_pixel, pass_size_of(s, options));
+    std::optional<RenderState> saved;
+    if (command.resume) {
+        saved = read_resume_file(resume, identity, s);
+    } else {
+        saved = initial_state(s, options);
+        if (const auto refusal = part_refusal(part, s, *saved))
+            throw UsageError{"--part " + command.part + ": " + *refusal};
+        start_part(*saved, part, passes);
+    }
+    const std::vector<WorkPiece> work = part_work(*saved, part, passes);
+    if (!part.whole() && work.empty())
+        throw UsageError{"--part " + command.part + ": the resume file holds the part done"};
+    if (command.checkpoint_minutes)
+        options.after_pass = checkpoint_hook(
+            {partial, resume, identity,
+             std::chrono::duration<double>(*command.checkpoint_minutes * 60), command.ppm_ascii});
+    if (backend.check) backend.check(world, options);
+    RenderJob job(world, options, std::move(saved));
+    if (backend.engine) job.set_engine(backend.engine);
+    RenderProgress& progress = job.progress();
+    // The tests' hold, after each piece of work when they set it.
+    const std::function<void(int)> hold = test_hold_from_environment(progress);
+    std::atomic<int> pieces_done{0};
+    std::function<void(const WorkPiece&)> observer;
+    if (hold) observer = [&](const WorkPiece&) { hold(++pieces_done); };
+    RenderResult result;
+    // Once the samples are in, a Ctrl-C or SIGTERM (a second one sent just as the render
+    // ends) would only lose them halfway through writing the files, or turn a written
+    // render's exit status into a kill: it is ignored until glint exits. The watcher handles
+    // them while it renders, and puts back what it found.
+    ignore_stop_signals();
+    {
+        const ProgressWatcher watcher(progress, !command.quiet);
+        result = part.whole() ? job.run(observer) : job.run(work, observer);
+    }
+    report_bad_samples(result.bad_samples, command);
+
+    // An interrupted image goes beside the target, never over it, so a good image from an
+    // earlier run survives a Ctrl-C; a finished one makes the files of the stopped render
+    // stale.
+    const std::string written = !result.complete ? partial.string()
+                                : part.whole()   ? output
+                                                 : part_file.string();
+    if (result.complete && !part.whole()) {
+        write_resume_file(part_file, identity, job.state());
+        std::error_code ignored;
+        std::filesystem::remove(resume, ignored);
+    } else if (result.complete) {
+        write_image_and_aovs(output, result, command.ppm_ascii);
+        std::error_code ignored;
+        std::filesystem::remove(resume, ignored);
+        std::filesystem::remove(partial, ignored);
+    } else {
+        save_progress(partial, resume, identity, job.state(), result.image, command.ppm_ascii);
+    }
+    if (!command.samples_image.empty())
+        write_samples_image(command.samples_image, result.samples_taken, s.samples_per_pixel);
+    if (!command.stats_file.empty()) {
+        const int threads =
+            command.threads > 0 ? command.threads : tbb::info::default_concurrency();
+        write_stats(command.stats_file, stats_json({command.scene, written, s.width, s.height,
+                                                    s.samples_per_pixel, threads, &result}));
+    }
+    if (!result.complete && !part.whole()) {
+        std::fprintf(stderr,
+                     "glint: interrupted: %s of %s was not finished\n"
+                     "glint: to continue, with the same options: glint render %s -o %s "
+                     "--part %s%s --resume (the state is in %s)\n",
+                     describe(part).c_str(), output.c_str(), shell_quoted(command.scene).c_str(),
+                     shell_quoted(output).c_str(), command.part.c_str(),
+                     part.split == PartSplit::passes ? " --split passes" : "", resume.c_str());
+        return kExitInterrupted;
+    }
+    if (!result.complete) {
+        const int passes_total = progress.passes_total;
+        const int next_pass = job.state().passes_done();
+        if (next_pass == 0)
+            std::fprintf(stderr,
+                         "glint: interrupted in the first pass%s: the image so far is in %s "
+                         "(the tiles not yet rendered are black)",
+                         passes_total > 1 ? (" of " + std::to_string(passes_total)).c_str() : "",
+                         written.c_str());
+        else
+            std::fprintf(stderr,
+                         "glint: interrupted after %d of %d passes: the image so far is in %s",
+                         next_pass, passes_total, written.c_str());
+        std::fprintf(stderr,
+                     "; %s was not written\n"
+                     "glint: to continue, with the same options: %s (the state is in %s)\n",
+                     output.c_str(), names.continuing.c_str(), resume.c_str());
+        return kExitInterrupted;
+    }
+    if (!command.quiet) {
+        if (part.whole())
+            print_summary(output, s, result, names.note);
+        else
+            print_summary(part_file.string(), s, result, describe(part) + " of " + output);
+    }
+    return 0;
+}
+
+// The frames of a sequence, each the scene at its moment, to output's frame files. With
+// --resume, a frame with a resume file continues from it, and one whose image is written (with
+// no resume file beside it) is done: the sequence goes on at the frame in flight.
+int render_frames(const RenderCommand& command, const RenderBackend& backend, const Scene& scene,
+                  FrameRange frames) {
+    if (!command.part.empty())
+        throw UsageError{
+            "--part renders a part of one image: share a sequence out by --frames "
+            "ranges instead (docs/cluster.md)"};
+    for (const auto& [option, path] : {std::pair{"--stats", command.stats_file},
+                                       std::pair{"--samples-image", command.samples_image}})
+        if (!path.empty() && !names_frames(path))
+            throw UsageError{std::string(option) +
+                             ": a sequence writes one file a frame: name where the frame's "
+                             "number goes with '#' (e.g. stats.####.json)"};
+    for (int f = frames.first; f <= frames.last; ++f) {
+        RenderCommand frame = command;
+        frame.output = frame_file(command.output, f);
+        if (!frame.stats_file.empty()) frame.stats_file = frame_file(frame.stats_file, f);
+        if (!frame.samples_image.empty()) frame.samples_image = frame_file(frame.samples_image, f);
+        if (command.resume && !std::filesystem::exists(resume_path(frame.output))) {
+            if (std::filesystem::exists(frame.output)) {
+                if (!command.quiet)
+                    std::fprintf(stderr, "glint: frame %d is done (%s)\n", f, frame.output.c_str());
+                continue;
+            }
+            frame.resume = false;
+        }
+        default_stop_signals();
+        if (backend.begin_frame) backend.begin_frame(f);
+        const int code =
+            render_image(frame, backend, scene_at_frame(scene, f),
+                         {continuing(command, command.output, FrameRange{f, frames.last}),
+                          "frame " + std::to_string(f)});
+        if (code != 0) return code;
+    }
+    return 0;
+}
+
 }  // namespace
 
 int run_render(const RenderCommand& command, const RenderBackend& backend) {
-    const std::string output =
-        command.output.empty() ? default_output(command.scene) : command.output;
     return reporting_errors([&] {
-        // Before loading: a bad output path should fail at once, not after the whole render.
-        if (const auto reason = unwritable_image_reason(output)) throw UsageError{*reason};
-        if (!command.stats_file.empty()) {
-            if (const auto reason = unwritable_reason(command.stats_file))
-                throw UsageError{*reason};
-        }
-        if (!command.samples_image.empty()) {
-            if (const auto reason = unwritable_image_reason(command.samples_image))
-                throw UsageError{*reason};
-        }
-        const AovSet aovs = requested_aovs(command);
-        const RenderPart part = requested_part(command);
-        // A part's state goes to its own file beside the output, which glint merge writes.
-        const std::filesystem::path part_file =
-            part.whole() ? std::filesystem::path() : part_file_path(output, part.index, part.count);
-        if (!part.whole())
-            if (const auto reason = unwritable_reason(part_file)) throw UsageError{*reason};
-        if (!holds_aov_layers(output))
-            for (const Aov a : aovs.list())
-                if (const auto reason =
-                        unwritable_image_reason(aov_picture_path(output, a).string()))
-                    throw UsageError{*reason};
-        RenderSetup setup =
-            set_up_render(command,
-                          backend.load ? backend.load(command)
-                                       : load_scene(command.scene, command.reading.load_options()),
-                          aovs, true);
-        const World& world = *setup.world;
-        RenderOptions& options = setup.options;
-        const std::vector<std::filesystem::path>& files_read = setup.files_read;
-        const RenderSettings& s = world.settings();
-        const RenderIdentity identity =
-            identify_render(command.scene, files_read, s, options, GLINT_VERSION, part);
-        // A part leaves no image of its own when stopped: its state alone.
-        const std::filesystem::path resume = resume_path(
-                                        part.whole() ? std::filesystem::path(output) : part_file),
-                                    partial = part.whole() ? partial_output_path(output)
-                                                           : std::filesystem::path();
-        const int passes = pass_count(s.samples_per_pixel, pass_size_of(s, options));
-        std::optional<RenderState> saved;
-        if (command.resume) {
-            saved = read_resume_file(resume, identity, s);
-        } else {
-            saved = initial_state(s, options);
-            if (const auto refusal = part_refusal(part, s, *saved))
-                throw UsageError{"--part " + command.part + ": " + *refusal};
-            start_part(*saved, part, passes);
-        }
-        const std::vector<WorkPiece> work = part_work(*saved, part, passes);
-        if (!part.whole() && work.empty())
-            throw UsageError{"--part " + command.part + ": the resume file holds the part done"};
-        if (command.checkpoint_minutes)
-            options.after_pass =
-                checkpoint_hook({partial, resume, identity,
-                                 std::chrono::duration<double>(*command.checkpoint_minutes * 60),
-                                 command.ppm_ascii});
-        if (backend.check) backend.check(world, options);
-        RenderJob job(world, options, std::move(saved));
-        if (backend.engine) job.set_engine(backend.engine);
-        RenderProgress& progress = job.progress();
-        // The tests' hold, after each piece of work when they set it.
-        const std::function<void(int)> hold = test_hold_from_environment(progress);
-        std::atomic<int> pieces_done{0};
-        std::function<void(const WorkPiece&)> observer;
-        if (hold) observer = [&](const WorkPiece&) { hold(++pieces_done); };
-        RenderResult result;
-        // Once the samples are in, a Ctrl-C or SIGTERM (a second one sent just as the render
-        // ends) would only lose them halfway through writing the files, or turn a written
-        // render's exit status into a kill: it is ignored until glint exits. The watcher handles
-        // them while it renders, and puts back what it found.
-        ignore_stop_signals();
-        {
-            const ProgressWatcher watcher(progress, !command.quiet);
-            result = part.whole() ? job.run(observer) : job.run(work, observer);
-        }
-        report_bad_samples(result.bad_samples, command);
-
-        // An interrupted image goes beside the target, never over it, so a good image from an
-        // earlier run survives a Ctrl-C; a finished one makes the files of the stopped render
-        // stale.
-        const std::string written = !result.complete ? partial.string()
-                                    : part.whole()   ? output
-                                                     : part_file.string();
-        if (result.complete && !part.whole()) {
-            write_resume_file(part_file, identity, job.state());
-            std::error_code ignored;
-            std::filesystem::remove(resume, ignored);
-        } else if (result.complete) {
-            write_image_and_aovs(output, result, command.ppm_ascii);
-            std::error_code ignored;
-            std::filesystem::remove(resume, ignored);
-            std::filesystem::remove(partial, ignored);
-        } else {
-            save_progress(partial, resume, identity, job.state(), result.image, command.ppm_ascii);
-        }
-        if (!command.samples_image.empty())
-            write_samples_image(command.samples_image, result.samples_taken, s.samples_per_pixel);
-        if (!command.stats_file.empty()) {
-            const int threads =
-                command.threads > 0 ? command.threads : tbb::info::default_concurrency();
-            write_stats(command.stats_file, stats_json({command.scene, written, s.width, s.height,
-                                                        s.samples_per_pixel, threads, &result}));
-        }
-        if (!result.complete && !part.whole()) {
-            std::fprintf(stderr,
-                         "glint: interrupted: %s of %s was not finished\n"
-                         "glint: to continue, with the same options: glint render %s -o %s "
-                         "--part %s%s --resume (the state is in %s)\n",
-                         describe(part).c_str(), output.c_str(),
-                         shell_quoted(command.scene).c_str(), shell_quoted(output).c_str(),
-                         command.part.c_str(),
-                         part.split == PartSplit::passes ? " --split passes" : "", resume.c_str());
-            return kExitInterrupted;
-        }
-        if (!result.complete) {
-            const int passes_total = progress.passes_total;
-            const int next_pass = job.state().passes_done();
-            if (next_pass == 0)
-                std::fprintf(
-                    stderr,
-                    "glint: interrupted in the first pass%s: the image so far is in %s "
-                    "(the tiles not yet rendered are black)",
-                    passes_total > 1 ? (" of " + std::to_string(passes_total)).c_str() : "",
-                    written.c_str());
-            else
+        // Before loading, what can be checked: a bad output path should fail at once, not after
+        // the whole render.
+        if (!command.output.empty())
+            check_outputs(command, names_frames(command.output) ? frame_file(command.output, 0)
+                                                                : command.output);
+        requested_aovs(command);
+        requested_part(command);
+        Scene scene = backend.load ? backend.load(command)
+                                   : load_scene(command.scene, command.reading.load_options());
+        RenderCommand image = command;
+        if (image.output.empty()) image.output = default_output(command.scene, scene);
+        const auto frames = frames_to_render(command.frames, scene, image.output);
+        if (!frames) {
+            if (scene.animation && !command.quiet)
                 std::fprintf(stderr,
-                             "glint: interrupted after %d of %d passes: the image so far is in %s",
-                             next_pass, passes_total, written.c_str());
-            std::fprintf(stderr,
-                         "; %s was not written\n"
-                         "glint: to continue, with the same options: glint render %s -o %s "
-                         "--resume (the state is in %s)\n",
-                         output.c_str(), shell_quoted(command.scene).c_str(),
-                         shell_quoted(output).c_str(), resume.c_str());
-            return kExitInterrupted;
+                             "glint: note: the scene is an animation of %d frames: this renders "
+                             "frame 0 (name the output with #, as out.####.png, for them all)\n",
+                             scene.animation->frames);
+            if (backend.begin_frame) backend.begin_frame(0);
+            return render_image(image, backend, std::move(scene),
+                                {continuing(command, image.output, std::nullopt), ""});
         }
-        if (!command.quiet) {
-            if (part.whole())
-                print_summary(output, s, result);
-            else
-                print_summary(part_file.string(), s, result, describe(part) + " of " + output);
-        }
-        return 0;
+        return render_frames(image, backend, scene, *frames);
     });
 }
 

@@ -38,6 +38,9 @@ struct RenderCommand {
     // "I/N": render part I of N into <output>.partIofN, for glint merge; empty: the whole.
     std::string part;
     std::string split = "tiles";  // what the parts are: "tiles" or sample "passes"
+    // "A..B": the frames of an animated scene to render, to an output named with '#'; empty: all
+    // of them when the output is so named, else frame 0 as a still.
+    std::string frames;
 };
 
 // How `glint render` loads and renders: on this process by default; glint-mpi's rank 0 shares
@@ -46,8 +49,11 @@ struct RenderBackend {
     std::function<Scene(const RenderCommand&)> load;                // empty: load_scene
     std::function<void(const World&, const RenderOptions&)> check;  // before the render
     RenderEngine engine;                                            // empty: this process
+    // Before each image's set-up: the frame it is (0 for a still).
+    std::function<void(int frame)> begin_frame;
 };
 
+// Renders a still, or an animation's frames one after the other (frame_sequence.h).
 // Exit status: 0 on success, 2 on bad input (scene, options, an unwritable output path, a resume
 // file of another render), 1 on any other failure, 130 when interrupted (after writing what was
 // done to partial_output_path() and the state to resume_path(), leaving the output alone).

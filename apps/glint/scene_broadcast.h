@@ -19,6 +19,13 @@ std::uint64_t share_scene(const std::filesystem::path& scene_file, const Scene& 
 // Rank 0: tells the other ranks that loading failed.
 void share_failure();
 
+// Rank 0: tells the others the frame to set up next (0 for a still), or that there is none.
+void share_frame(int frame);
+void share_end_of_frames();
+
+// Every other rank: the frame rank 0 sets up next; none when it has rendered them all.
+std::optional<int> receive_frame();
+
 // Every other rank: the scene as rank 0 loaded it, its files written under `folder` (which must
 // exist, and is the ranks' own); none when rank 0 failed. `options` are the command's, its
 // folders moved under `folder`.

@@ -87,6 +87,26 @@ TEST_F(Mpi, ThreeRanksWriteTheImageOfOneProcessForEveryIntegrator) {
     EXPECT_EQ(rays(three.out).substr(0, 30), rays(one.out).substr(0, 30)) << three.out;
 }
 
+// An animation's frames, each across the ranks, as one process renders them; the frames a
+// resumed sequence skips are skipped by every rank.
+TEST_F(Mpi, ThreeRanksRenderAnAnimationsFramesAsOneProcess) {
+    const std::string args =
+        scene("features/animation.yaml") + " --width 32 --height 24 --spp 4 --seed 5 -q";
+    const Outcome one = run_glint("render " + args + " --frames 2..4 -o 'one.#.exr'");
+    ASSERT_EQ(one.exit_code, 0) << one.err;
+    const Outcome three = mpirun(args + " --frames 2..4 -o 'three.#.exr'");
+    ASSERT_EQ(three.exit_code, 0) << three.err;
+    for (const std::string f : {"2", "3", "4"}) {
+        ASSERT_TRUE(fs::exists(dir_ / ("three." + f + ".exr"))) << f;
+        EXPECT_TRUE(slurp(dir_ / ("one." + f + ".exr")) == slurp(dir_ / ("three." + f + ".exr")))
+            << f;
+    }
+    fs::remove(dir_ / "three.3.exr");
+    const Outcome resumed = mpirun(args + " --frames 2..4 -o 'three.#.exr' --resume");
+    ASSERT_EQ(resumed.exit_code, 0) << resumed.err;
+    EXPECT_TRUE(slurp(dir_ / "one.3.exr") == slurp(dir_ / "three.3.exr"));
+}
+
 TEST_F(Mpi, AStoppedJobResumesToTheImageOfOneRun) {
     const std::vector<std::string> options = {
         std::string(GLINT_SOURCE_DIR) + "/scenes/distributed-showcase.yaml",

@@ -72,7 +72,7 @@ float turn_at(Point3 p) {
 }  // namespace
 
 ShadowMap ShadowMap::cube(Point3 light, float light_radius, const Aggregate& aggregate,
-                          const ShadowMapSettings& settings) {
+                          const ShadowMapSettings& settings, float time) {
     ShadowMap map;
     map.origin_ = light;
     map.light_radius_ = light_radius;
@@ -90,14 +90,14 @@ ShadowMap ShadowMap::cube(Point3 light, float light_radius, const Aggregate& agg
             const Vector3 w = face_direction(face, u, v);
             const float length_w = length(w);
             map.depth_[(std::size_t(face) * r + j) * r + i] =
-                nearest(aggregate, Ray{light, w / length_w}) / length_w;
+                nearest(aggregate, Ray{light, w / length_w, time}) / length_w;
         }
     });
     return map;
 }
 
 ShadowMap ShadowMap::parallel(Vector3 direction, const Bounds3& bounds, const Aggregate& aggregate,
-                              const ShadowMapSettings& settings) {
+                              const ShadowMapSettings& settings, float time) {
     ShadowMap map;
     map.parallel_ = true;
     map.resolution_ = settings.resolution;
@@ -113,7 +113,7 @@ ShadowMap ShadowMap::parallel(Vector3 direction, const Bounds3& bounds, const Ag
         for (int i = 0; i < r; ++i) {
             const float a = ((float(i) + 0.5f) * 2 / float(r) - 1) * map.half_extent_;
             const float b = ((float(j) + 0.5f) * 2 / float(r) - 1) * map.half_extent_;
-            const Ray ray{map.origin_ + map.s_ * a + map.t_ * b, direction};
+            const Ray ray{map.origin_ + map.s_ * a + map.t_ * b, direction, time};
             map.depth_[std::size_t(j) * r + i] = nearest(aggregate, ray);
         }
     });

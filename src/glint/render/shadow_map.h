@@ -22,13 +22,14 @@ namespace glint {
 class ShadowMap {
 public:
     // Six faces around `light`; light_radius > 0 for an area light (its soft shadows), seen from
-    // its centre. Rendered against the primitives visible to shadow rays, on all threads.
+    // its centre. Rendered against the primitives visible to shadow rays, on all threads, with
+    // moving shapes where they are at `time`.
     static ShadowMap cube(Point3 light, float light_radius, const Aggregate& aggregate,
-                          const ShadowMapSettings& settings);
+                          const ShadowMapSettings& settings, float time = 0);
     // An orthographic map across the sphere round `bounds`, for light travelling along the unit
     // `direction`.
     static ShadowMap parallel(Vector3 direction, const Bounds3& bounds, const Aggregate& aggregate,
-                              const ShadowMapSettings& settings);
+                              const ShadowMapSettings& settings, float time = 0);
 
     // The fraction of the light that reaches p, whose geometric normal towards the light is n;
     // nothing where the map does not cover p (beyond a directional map's extent, or at the

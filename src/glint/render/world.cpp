@@ -136,22 +136,24 @@ World::World(Scene scene, AccelKind accel, ShadowAcceleration shadows)
 
 void World::build_shadow_maps() {
     const ShadowMapSettings& s = settings_.shadow_map;
+    // Moving shapes cast their shadows where they are as the shutter opens.
+    const float time = camera_.shutter_open();
     for (const Light& light : lights_) {
         std::optional<ShadowMap> map;
         if (const auto* point = std::get_if<PointLight>(&light))
-            map = ShadowMap::cube(point->position, 0, *aggregate_, s);
+            map = ShadowMap::cube(point->position, 0, *aggregate_, s, time);
         else if (const auto* spot = std::get_if<SpotLight>(&light))
-            map = ShadowMap::cube(spot->position, 0, *aggregate_, s);
+            map = ShadowMap::cube(spot->position, 0, *aggregate_, s, time);
         else if (const auto* area = std::get_if<AreaLight>(&light))
             // Seen from its centre, as wide as the disk of its area.
             map = ShadowMap::cube(
                 area->center,
                 std::visit([](const auto& shape) { return std::sqrt(shape.area() / kPi); },
                            area->shape),
-                *aggregate_, s);
+                *aggregate_, s, time);
         else if (const auto* sun = std::get_if<DirectionalLight>(&light);
                  sun && !aggregate_->bounds().is_empty())
-            map = ShadowMap::parallel(sun->direction, aggregate_->bounds(), *aggregate_, s);
+            map = ShadowMap::parallel(sun->direction, aggregate_->bounds(), *aggregate_, s, time);
         shadow_maps_.push_back(std::move(map));
     }
 }

@@ -4,6 +4,7 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <memory>
 #include <optional>
 #include <span>
 #include <string>
@@ -12,6 +13,7 @@
 
 #include "glint/camera/camera_spec.h"
 #include "glint/geometry/shape.h"
+#include "glint/math/animated_transform.h"
 #include "glint/math/color.h"
 #include "glint/math/huge_page_allocator.h"
 #include "glint/sampling/filter.h"
@@ -98,6 +100,21 @@ struct RenderSettings {
 SamplerKind sampler_of(const RenderSettings& settings);
 FilterSpec filter_of(const RenderSettings& settings);
 
+// A scene with frames: frame f (from 0) shows the scene at the moment f / fps, the camera's
+// shutter an interval from it (scene/animation.h).
+struct Animation {
+    int frames = 1;
+    float fps = 24;
+};
+
+// A light that moves from frame to frame: at_rest as the file gives it, placed at a moment by its
+// keyframes' transform then (place_lights in scene/animation.h).
+struct MovingLight {
+    std::uint32_t index = 0;  // into Scene::lights
+    Light at_rest;
+    std::shared_ptr<const AnimatedTransform> motion;
+};
+
 struct SceneObject {
     Shape shape;
     std::uint32_t material = 0;  // index into Scene::materials
@@ -142,6 +159,8 @@ struct Scene {
     std::vector<Fog> fogs;
     // Participating media filling the space outside objects (and inside hollow ones).
     std::vector<Medium> atmosphere;
+    std::optional<Animation> animation;      // none: a still
+    std::vector<MovingLight> moving_lights;  // placed at the shutter's opening
     // What the loader accepted but the user should know ("3 degenerate triangles dropped").
     std::vector<std::string> warnings;
     SceneSources sources;

@@ -23,6 +23,8 @@ inline constexpr int kMaxShadowRays = 4096;
 inline constexpr int kMaxPhotonsPerPass = 1 << 24;
 // A shadow map's texels along a face's edge: six faces of 4096^2 floats are 400 MB a light.
 inline constexpr int kMaxShadowMapResolution = 4096;
+// An animation's frames: a frame number fills out.########.png's eight digits.
+inline constexpr int kMaxFrames = 99999999;
 
 struct SceneLimits {
     std::int64_t image_pixels = kMaxImagePixels;  // of the render, and of every image read

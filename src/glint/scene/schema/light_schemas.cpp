@@ -33,6 +33,8 @@ const KeySchema kInMedia{"in_media", "bool", "true",
                          "whether the light scatters in participating media ([participating "
                          "media](#participating-media)); POV-Ray's `media_interaction`",
                          ""};
+const KeySchema kMotion{"motion", "list of keyframes", "none",
+                        "moves the light from frame to frame: see [animation](#animation)", ""};
 const KeySchema kAreaAttenuation{"attenuation", "`[constant, linear, quadratic]`",
                                  "`[1, 0, 0]` (none)",
                                  "intensity at distance d is `color / (constant + linear·d + "
@@ -41,8 +43,8 @@ const KeySchema kAreaAttenuation{"attenuation", "`[constant, linear, quadratic]`
 
 // An area light: its shape's keys, then those every area light takes.
 EntitySchema area_light(std::string_view name, std::vector<KeySchema> keys) {
-    keys.insert(keys.end(),
-                {kShadowRays, kVisible, kColor, kIntensity, kAreaAttenuation, kShadows, kInMedia});
+    keys.insert(keys.end(), {kShadowRays, kVisible, kColor, kIntensity, kAreaAttenuation, kShadows,
+                             kInMedia, kMotion});
     return {EntityFamily::light, name, std::move(keys)};
 }
 
@@ -59,6 +61,7 @@ std::vector<EntitySchema> light_schemas() {
              kAttenuation,
              kShadows,
              kInMedia,
+             kMotion,
          }},
         {EntityFamily::light,
          "directional",
@@ -69,6 +72,7 @@ std::vector<EntitySchema> light_schemas() {
              kIntensity,
              kShadows,
              kInMedia,
+             kMotion,
          }},
         {EntityFamily::light,
          "spot",
@@ -93,6 +97,7 @@ std::vector<EntitySchema> light_schemas() {
              kAttenuation,
              kShadows,
              kInMedia,
+             kMotion,
          }},
         area_light("sphere",
                    {

@@ -4,10 +4,14 @@
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
 #include <vector>
 
+#include "glint/geometry/moving.h"
 #include "glint/math/constants.h"
+#include "glint/scene/animation.h"
 #include "glint/scene/scene.h"
+#include "glint/scene/yaml/yaml_transform.h"
 
 namespace glint {
 
@@ -164,8 +168,22 @@ LightEntry read_light(const YamlSource& source, const YAML::Node& node, const Fi
     const std::string name = read_type(source, node, entries, "light", names);
     const LightType& type = *std::find_if(std::begin(kLightTypes), std::end(kLightTypes),
                                           [&](const LightType& t) { return t.name == name; });
-    return type.parse(MapReader(source, node, std::move(entries), name + " light",
-                                entity_schema(EntityFamily::light, name), {"type"}));
+    const MapReader map(source, node, std::move(entries), name + " light",
+                        entity_schema(EntityFamily::light, name), {"type"});
+    LightEntry entry = type.parse(map);
+    if (const MapEntry* motion = map.find("motion")) {
+        entry.motion = read_motion(source, motion->value, map.field("motion"));
+        const auto& keyframes = entry.motion->keyframes();
+        for (std::size_t i = 0; i < keyframes.size(); ++i)
+            if (!keeps_shapes(keyframes[i].world_from_object))
+                throw source.error_at(motion->value[i],
+                                      "a light's keyframes may move, turn and scale it evenly, "
+                                      "not stretch or shear it");
+        if (entry.visible_shape)
+            entry.visible_shape = Moving{
+                entry.motion, std::make_shared<const Shape>(std::move(*entry.visible_shape))};
+    }
+    return entry;
 }
 
 }  // namespace glint

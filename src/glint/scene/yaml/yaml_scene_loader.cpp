@@ -14,6 +14,7 @@
 #include <new>
 #include <sstream>
 
+#include "glint/scene/animation.h"
 #include "glint/scene/yaml/yaml_fog.h"
 #include "glint/scene/yaml/yaml_lights.h"
 #include "glint/scene/yaml/yaml_map_reader.h"
@@ -87,8 +88,8 @@ void add_light_face(LightEntry& entry, std::size_t index, TextPosition where,
 
 Scene read_scene(const YamlSource& source, const ReadSandbox& sandbox, const YAML::Node& root) {
     const MapReader scene(source, root, Field("", "scene"), "scene",
-                          {"image", "camera", "ambient", "sky", "fog", "atmosphere", "materials",
-                           "lights", "define", "objects"});
+                          {"image", "camera", "animation", "ambient", "sky", "fog", "atmosphere",
+                           "materials", "lights", "define", "objects"});
     Scene result;
     if (const MapEntry* image = section(scene, "image")) {
         result.settings = read_image(source, image->value, scene.field("image"), sandbox.limits);
@@ -100,6 +101,8 @@ Scene read_scene(const YamlSource& source, const ReadSandbox& sandbox, const YAM
     std::vector<std::string> warnings;
     result.camera =
         read_camera(source, scene.require("camera").value, scene.field("camera"), warnings);
+    if (const MapEntry* animation = section(scene, "animation"))
+        result.animation = read_animation(source, animation->value, scene.field("animation"));
     result.ambient = scene.color("ambient", result.ambient);
     if (const MapEntry* sky = section(scene, "sky")) {
         const MapEntry* image = scene.find("image");
@@ -131,6 +134,9 @@ Scene read_scene(const YamlSource& source, const ReadSandbox& sandbox, const YAM
             LightEntry entry = read_light(source, items[i], {"", indexed("lights", i)});
             const TextPosition where = text_position(items[i].Mark());
             if (entry.visible_shape) add_light_face(entry, i, where, materials, result);
+            if (entry.motion)
+                result.moving_lights.push_back(
+                    {std::uint32_t(result.lights.size()), entry.light, entry.motion});
             result.lights.push_back(std::move(entry.light));
             result.sources.lights.push_back(where);
         }
@@ -153,6 +159,7 @@ Scene read_scene(const YamlSource& source, const ReadSandbox& sandbox, const YAM
     warnings.insert(warnings.end(), result.warnings.begin(), result.warnings.end());
     warnings.insert(warnings.end(), shapes.warnings().begin(), shapes.warnings().end());
     result.warnings = std::move(warnings);
+    place_lights(result, result.camera.shutter_open);
     return result;
 }
 

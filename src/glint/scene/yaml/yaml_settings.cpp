@@ -302,6 +302,14 @@ void read_shutter(const MapReader& map, CameraSpec& camera) {
 
 }  // namespace
 
+Animation read_animation(const YamlSource& source, const YAML::Node& node, const Field& field) {
+    const MapReader map(source, node, field, "animation", {"frames", "fps"});
+    Animation a;
+    a.frames = map.integer("frames", {1, kMaxFrames});
+    a.fps = map.number("fps", kPositive, a.fps);
+    return a;
+}
+
 CameraSpec read_camera(const YamlSource& source, const YAML::Node& node, const Field& field,
                        std::vector<std::string>& warnings) {
     auto entries = read_map(source, node, field);
