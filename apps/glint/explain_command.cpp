@@ -6,11 +6,13 @@
 #include <limits>
 
 #include "command_errors.h"
+#include "frame_sequence.h"
 #include "glint/image/atomic_file.h"
 #include "glint/image/file_io.h"
 #include "glint/render/explain/explain.h"
 #include "glint/render/explain/ray_tree_formats.h"
 #include "glint/render/world.h"
+#include "glint/scene/animation.h"
 #include "glint/scene/integrator_fit.h"
 #include "glint/scene/load_scene.h"
 #include "output_path.h"
@@ -61,6 +63,10 @@ CLI::App* add_explain_command(CLI::App& app, ExplainCommand& c) {
         ->required();
     explain->add_option("--sample", c.sample, "Which of the pixel's samples (from 0)")
         ->check(whole_number(0, kMaxSamplesPerPixel - 1));
+    explain
+        ->add_option("--frame", c.frame,
+                     "The frame of an animated scene, as glint render names it (from 0)")
+        ->check(whole_number(0, kMaxFrames - 1));
     explain->add_option("--seed", c.seed, "Seed of the random numbers, as given to glint render")
         ->check(whole_number<std::uint64_t>(0, std::numeric_limits<std::uint64_t>::max()));
     explain->add_option("--format", c.format, "text (an indented tree), json or dot (Graphviz)")
@@ -78,6 +84,10 @@ int run_explain(const ExplainCommand& command) {
             if (const auto reason = unwritable_reason(command.output)) throw UsageError{*reason};
         }
         Scene scene = load_scene(command.scene, command.reading.load_options());
+        if (command.frame > 0) {
+            check_frame(scene, command.frame, "--frame");
+            scene = scene_at_frame(scene, command.frame);
+        }
         for (const std::string& warning : scene.warnings)
             std::fprintf(stderr, "glint: warning: %s\n", warning.c_str());
         apply_image_options(command.image, scene.settings);

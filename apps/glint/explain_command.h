@@ -18,6 +18,7 @@ struct ExplainCommand {
     std::uint64_t seed = 0;
     std::string format = "text";  // text, json or dot
     std::string output;           // empty: standard output
+    int frame = 0;                // of an animated scene
     ImageOptions image;           // as given to the render explained
     SceneReadOptions reading;
 };

@@ -46,30 +46,34 @@ std::string frame_file(const std::string& pattern, int frame) {
     return pattern.substr(0, start) + number + pattern.substr(end);
 }
 
+void check_frame(const Scene& scene, int frame, const std::string& option) {
+    if (!scene.animation)
+        throw UsageError{option + ": the scene is a still (it has no animation: {frames, fps})"};
+    if (frame >= scene.animation->frames)
+        throw UsageError{option + ": the scene's animation has frames 0.." +
+                         std::to_string(scene.animation->frames - 1)};
+}
+
 std::optional<FrameRange> frames_to_render(const std::string& frames, const Scene& scene,
                                            const std::string& output) {
     const bool sequence = names_frames(output);
     if (!scene.animation) {
-        if (!frames.empty())
-            throw UsageError{"--frames: the scene is a still (it has no animation: {frames, fps})"};
+        if (!frames.empty()) check_frame(scene, 0, "--frames");
         if (sequence)
             throw UsageError{"the output \"" + output +
                              "\" names frames with '#', but the scene is a still (it has no "
                              "animation: {frames, fps})"};
         return std::nullopt;
     }
-    const int count = scene.animation->frames;
     if (frames.empty()) {
         if (!sequence) return std::nullopt;  // frame 0 as a still
-        return FrameRange{0, count - 1};
+        return FrameRange{0, scene.animation->frames - 1};
     }
     const auto range = parse_frame_range(frames);
     if (!range)
         throw UsageError{"--frames: expected A..B (frames A to B, A <= B) or A, got \"" + frames +
                          "\""};
-    if (range->last >= count)
-        throw UsageError{"--frames " + frames + ": the scene's animation has frames 0.." +
-                         std::to_string(count - 1)};
+    check_frame(scene, range->last, "--frames " + frames);
     if (!sequence)
         throw UsageError{"--frames: the output \"" + output +
                          "\" must name where each frame's number goes with '#' (e.g. " +

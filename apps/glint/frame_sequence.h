@@ -24,6 +24,9 @@ bool names_frames(const std::string& path);
 // zeros to the run's length: out.####.png, 7 -> out.0007.png; 12345 -> out.12345.png.
 std::string frame_file(const std::string& pattern, int frame);
 
+// Throws UsageError, naming `option`, unless the scene is an animation with frame `frame`.
+void check_frame(const Scene& scene, int frame, const std::string& option);
+
 // The frames a render of `scene` to `output` is: those --frames names (`frames`, may be empty),
 // or every frame when the output names frames; none for a still. Throws UsageError for frames
 // the scene does not have, or a sequence without '#' in the output's name (or the reverse).

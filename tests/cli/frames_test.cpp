@@ -118,6 +118,25 @@ TEST_F(Frames, AStoppedSequenceResumesAtTheFrameInFlight) {
     }
 }
 
+TEST_F(Frames, ExplainShowsAFramesSampleAsTheStillsAtItsMoment) {
+    const std::string sample = " --pixel 20,12 --sample 3 --seed 5 --format json";
+    const Outcome frame = run_glint("explain anim.yaml --frame 2" + sample);
+    ASSERT_EQ(frame.exit_code, 0) << frame.err;
+    still_of_frame(2);
+    const Outcome still = run_glint("explain still.yaml" + sample);
+    ASSERT_EQ(still.exit_code, 0) << still.err;
+    EXPECT_EQ(frame.out, still.out);
+    EXPECT_NE(frame.out, run_glint("explain anim.yaml" + sample).out);
+    const Outcome past = run_glint("explain anim.yaml --frame 4" + sample);
+    EXPECT_EQ(past.exit_code, 2);
+    EXPECT_NE(past.err.find("--frame: the scene's animation has frames 0..3"), std::string::npos)
+        << past.err;
+    const Outcome of_still = run_glint("explain still.yaml --frame 1" + sample);
+    EXPECT_EQ(of_still.exit_code, 2);
+    EXPECT_NE(of_still.err.find("--frame: the scene is a still"), std::string::npos)
+        << of_still.err;
+}
+
 TEST_F(Frames, BadFrameOptionsAreUsageErrors) {
     write_scene("still.yaml", animated_scene("", "[0, 0]"));
     const struct {
