@@ -8,6 +8,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <csignal>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -90,6 +91,18 @@ protected:
     }
     bool holding() const {
         return slurp(dir_ / "stderr.txt").find("glint: holding after") != std::string::npos;
+    }
+    // Waits (a minute at most) for glint `pid`, started with hold_after, to hold, stops it with
+    // SIGINT, and returns how it ended: its exit status (-1 when it never held or was killed)
+    // and its standard error.
+    Outcome stop_when_held(pid_t pid) const {
+        for (int waited = 0; !holding() && waited < 60000; waited += 5) usleep(5000);
+        const bool held = holding();
+        kill(pid, held ? SIGINT : SIGKILL);
+        int status = 0;
+        waitpid(pid, &status, 0);
+        const int code = held && WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+        return {code, slurp(dir_ / "stdout.txt"), slurp(dir_ / "stderr.txt")};
     }
 
     fs::path write_scene(const std::string& name, const std::string& text) const {

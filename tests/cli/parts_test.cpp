@@ -74,13 +74,9 @@ TEST_F(Parts, AStoppedPartResumesToTheSamePart) {
         if (a == "out.exr") a = (dir_ / "out.exr").string();
     const pid_t pid = spawn_glint(args, hold_after(1));
     ASSERT_GT(pid, 0);
-    for (int waited = 0; !holding() && waited < 60000; waited += 5) usleep(5000);
-    ASSERT_TRUE(holding()) << slurp(dir_ / "stderr.txt");
-    kill(pid, SIGINT);
-    int status = 0;
-    waitpid(pid, &status, 0);
-    const std::string err = slurp(dir_ / "stderr.txt");
-    ASSERT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 130) << err;
+    const Outcome stopped = stop_when_held(pid);
+    const std::string& err = stopped.err;
+    ASSERT_EQ(stopped.exit_code, 130) << err;
     EXPECT_NE(err.find("part 1 of 2 (tiles) of"), std::string::npos) << err;
     EXPECT_NE(err.find("--part 1/2 --resume"), std::string::npos) << err;
     EXPECT_TRUE(fs::exists(dir_ / "out.exr.part1of2.resume"));
