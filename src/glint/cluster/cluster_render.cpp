@@ -13,7 +13,7 @@
 #include <thread>
 #include <vector>
 
-#include "glint/cluster/tile_carry.h"
+#include "glint/render/tile_carry.h"
 #include "glint/cluster/work_dispatch.h"
 #include "glint/render/byte_stream.h"
 #include "glint/render/counts_codec.h"

@@ -12,6 +12,7 @@
 #include <utility>
 
 #include "glint/render/state_sums.h"
+#include "glint/render/tile_carry.h"
 #include "glint/render/tiles.h"
 
 namespace glint {
@@ -134,18 +135,10 @@ RenderState merge_parts(std::vector<RenderState> parts, PartSplit split, int til
                 whole.tile_passes[t] = std::max(whole.tile_passes[t], part.tile_passes[t]);
             continue;
         }
-        // The tiles this part rendered: their pixels' own sums, samples and errors are its.
+        // The tiles this part rendered: their carries (pixels' samples, errors, sums) are its.
         for (std::size_t t = std::size_t(i); t < tiles.size(); t += std::size_t(count)) {
             whole.tile_passes[t] = part.tile_passes[t];
-            const Tile& tile = tiles[t];
-            for (int y = tile.y0; y < tile.y1; ++y)
-                for (int x = tile.x0; x < tile.x1; ++x) {
-                    const std::size_t p =
-                        std::size_t(y) * std::size_t(whole.width) + std::size_t(x);
-                    whole.samples[p] = part.samples[p];
-                    if (!whole.errors.empty()) whole.errors[p] = part.errors[p];
-                    if (!box_sums.empty()) box_sums[p] = part.film.box_sums()[p];
-                }
+            put_carry(whole, tiles[t], take_carry(part, tiles[t], int(t)));
         }
     }
     return whole;

@@ -1,6 +1,6 @@
 // A tile's carry holds exactly its own pixels' per-pixel state, survives bytes exactly, and a
 // carry of the wrong shape is refused.
-#include "glint/cluster/tile_carry.h"
+#include "glint/render/tile_carry.h"
 
 #include <gtest/gtest.h>
 

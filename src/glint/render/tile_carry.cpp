@@ -1,5 +1,5 @@
 // A tile's carry: its pixels' entries of each per-pixel array of the state, row by row.
-#include "glint/cluster/tile_carry.h"
+#include "glint/render/tile_carry.h"
 
 #include <stdexcept>
 
