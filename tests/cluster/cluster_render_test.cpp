@@ -23,20 +23,9 @@ namespace {
 
 using testing::ThreadCluster;
 
-RenderOptions options() {
-    RenderOptions o;
-    o.threads = 1;
-    o.tile_size = 8;
-    o.pass_size = 2;
-    o.seed = 11;
-    o.record_samples_taken = true;
-    return o;
-}
+RenderOptions options() { return testing::small_pieces(1); }
 
-bool same_bits(const Image& a, const Image& b) {
-    return a.width == b.width && a.height == b.height &&
-           std::memcmp(a.pixels.data(), b.pixels.data(), a.pixels.size() * sizeof(Color)) == 0;
-}
+using testing::same_bits;
 
 // Rank 0 and ranks - 1 workers, each a thread, from `state`.
 RenderResult render_on_ranks(const World& world, const RenderOptions& o, int ranks,

@@ -4,9 +4,12 @@
 // split a render and check it adds up to one process's.
 #pragma once
 
+#include <cstring>
 #include <string>
 #include <vector>
 
+#include "glint/image/image.h"
+#include "glint/render/render.h"
 #include "glint/scene/yaml/yaml_scene_loader.h"
 
 namespace glint::testing {
@@ -43,6 +46,22 @@ inline std::vector<IntegratorCase> every_integrator() {
     all.push_back({"cone", load_small("features/cone-tracing.yaml", 32, 24, 4)});
     all.push_back({"beam", load_small("features/beam-tracing.yaml", 32, 24, 4)});
     return all;
+}
+
+// Small tiles and passes, so that a small image has many pieces to split.
+inline RenderOptions small_pieces(int threads = 0) {
+    RenderOptions o;
+    o.threads = threads;
+    o.tile_size = 8;
+    o.pass_size = 2;
+    o.seed = 11;
+    o.record_samples_taken = true;
+    return o;
+}
+
+inline bool same_bits(const Image& a, const Image& b) {
+    return a.width == b.width && a.height == b.height &&
+           std::memcmp(a.pixels.data(), b.pixels.data(), a.pixels.size() * sizeof(Color)) == 0;
 }
 
 }  // namespace glint::testing

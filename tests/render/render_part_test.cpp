@@ -19,14 +19,7 @@ namespace {
 using testing::every_integrator;
 using testing::load_small;
 
-RenderOptions options() {
-    RenderOptions o;
-    o.tile_size = 8;
-    o.pass_size = 2;
-    o.seed = 11;
-    o.record_samples_taken = true;
-    return o;
-}
+RenderOptions options() { return testing::small_pieces(); }
 
 // The parts rendered one after another, each into a state of its own, and merged.
 RenderState render_in_parts(const World& world, int count, PartSplit split) {
@@ -48,10 +41,7 @@ RenderState render_in_parts(const World& world, int count, PartSplit split) {
     return merge_parts(std::move(parts), split, options().tile_size);
 }
 
-bool same_bits(const Image& a, const Image& b) {
-    return a.width == b.width && a.height == b.height &&
-           std::memcmp(a.pixels.data(), b.pixels.data(), a.pixels.size() * sizeof(Color)) == 0;
-}
+using testing::same_bits;
 
 TEST(RenderPart, TileQuartersMergeIntoTheWholeRenderBitForBit) {
     for (const auto& c : every_integrator()) {
