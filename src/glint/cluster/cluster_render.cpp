@@ -13,11 +13,11 @@
 #include <thread>
 #include <vector>
 
-#include "glint/render/tile_carry.h"
 #include "glint/cluster/work_dispatch.h"
 #include "glint/render/byte_stream.h"
 #include "glint/render/counts_codec.h"
 #include "glint/render/state_sums.h"
+#include "glint/render/tile_carry.h"
 #include "glint/render/tiles.h"
 
 namespace glint {
@@ -264,6 +264,88 @@ RenderResult render_as_root(const World& world, const RenderOptions& options, Tr
         stats.sum_seconds += std::chrono::duration<double>(Clock::now() - sum_start).count();
     };
 
+    // A rank's answer: the carries and counts of the pieces it held; then it waits for more.
+    const auto take_answer = [&](const Message& message) {
+        const int r = message.from;
+        stats.bytes += message.bytes.size();
+        if (r <= 0 || r >= int(peers.size()) || peers[std::size_t(r)].waiting)
+            throw ClusterError("a message came from " + name(r) + " out of turn");
+        Peer& peer = peers[std::size_t(r)];
+        try {
+            ByteReader<> in(reinterpret_cast<const unsigned char*>(message.bytes.data()),
+                            message.bytes.size(), "a message was cut short");
+            if (in.u8() != std::uint8_t(Kind::ask)) throw std::runtime_error("not a request");
+            peer.capacity = std::clamp(in.i32(), 1, 1 << 16);
+            const std::uint32_t n = in.u32();
+            if (n != peer.held.size())
+                throw std::runtime_error("results of pieces it was not given");
+            std::vector<WorkPiece> finished;
+            for (std::uint32_t i = 0; i < n; ++i) {
+                const WorkPiece piece = read_piece(in, tiles.size());
+                if (std::find(peer.held.begin(), peer.held.end(), piece) == peer.held.end())
+                    throw std::runtime_error("results of pieces it was not given");
+                const Tile& tile = tiles[std::size_t(piece.tile)];
+                const TileCarry carry = read_carry(in, state, tile);
+                const std::lock_guard lock(state_mutex);
+                put_carry(state, tile, carry);
+                state.tile_passes[std::size_t(piece.tile)] = piece.pass + 1;
+                finished.push_back(piece);
+            }
+            RayStats rays;
+            BadSamples bad;
+            read_counts(in, rays, bad);
+            {
+                const std::lock_guard lock(state_mutex);
+                state.rays += rays;
+                state.bad_samples += bad;
+            }
+            {
+                const std::lock_guard lock(book);
+                for (const WorkPiece& piece : finished) dispatch.finish(piece);
+                local.wake();
+            }
+            report(finished);
+            stats.pieces[std::size_t(r)] += int(finished.size());
+        } catch (const std::runtime_error& e) {
+            throw ClusterError("a message from " + name(r) + " makes no sense: " + e.what());
+        }
+        peer.held.clear();
+        peer.waiting = true;
+    };
+    // Pieces to each waiting rank, as many as it asked for; under the book's lock.
+    const auto hand_out = [&] {
+        for (std::size_t r = 1; r < peers.size(); ++r) {
+            Peer& peer = peers[r];
+            if (!peer.waiting) continue;
+            std::vector<WorkPiece> pieces = dispatch.take(peer.capacity);
+            if (pieces.empty()) break;
+            std::string bytes;
+            {
+                const std::lock_guard state_lock(state_mutex);
+                bytes = work_message(pieces, state, tiles);
+            }
+            transport.send(int(r), bytes);
+            stats.bytes += bytes.size();
+            peer.held = std::move(pieces);
+            peer.waiting = false;
+            peer.since = Clock::now();
+        }
+    };
+    // A rank that holds work and has not answered within the timeout ends the render.
+    const auto check_answers_come = [&] {
+        const auto now = Clock::now();
+        for (std::size_t r = 1; r < peers.size(); ++r)
+            if (!peers[r].waiting && now - peers[r].since > cluster.rank_timeout)
+                throw ClusterError(
+                    name(int(r)) + " has not answered for " +
+                    std::to_string(
+                        int(std::chrono::duration<double>(now - peers[r].since).count())) +
+                    " s (the limit is " +
+                    std::to_string(
+                        int(std::chrono::duration<double>(cluster.rank_timeout).count())) +
+                    " s): it stopped, or its host is unreachable");
+    };
+
     for (;;) {
         if (const std::exception_ptr error = [&] {
                 const std::lock_guard lock(book);
@@ -275,53 +357,8 @@ RenderResult render_as_root(const World& world, const RenderOptions& options, Tr
             stopping = true;
             local.allow(false);
         }
-        if (std::optional<Message> message = transport.receive(std::chrono::milliseconds(2))) {
-            const int r = message->from;
-            stats.bytes += message->bytes.size();
-            if (r <= 0 || r >= int(peers.size()) || peers[std::size_t(r)].waiting)
-                throw ClusterError("a message came from " + name(r) + " out of turn");
-            Peer& peer = peers[std::size_t(r)];
-            try {
-                ByteReader<> in(reinterpret_cast<const unsigned char*>(message->bytes.data()),
-                                message->bytes.size(), "a message was cut short");
-                if (in.u8() != std::uint8_t(Kind::ask)) throw std::runtime_error("not a request");
-                peer.capacity = std::clamp(in.i32(), 1, 1 << 16);
-                const std::uint32_t n = in.u32();
-                if (n != peer.held.size())
-                    throw std::runtime_error("results of pieces it was not given");
-                std::vector<WorkPiece> finished;
-                for (std::uint32_t i = 0; i < n; ++i) {
-                    const WorkPiece piece = read_piece(in, tiles.size());
-                    if (std::find(peer.held.begin(), peer.held.end(), piece) == peer.held.end())
-                        throw std::runtime_error("results of pieces it was not given");
-                    const Tile& tile = tiles[std::size_t(piece.tile)];
-                    const TileCarry carry = read_carry(in, state, tile);
-                    const std::lock_guard lock(state_mutex);
-                    put_carry(state, tile, carry);
-                    state.tile_passes[std::size_t(piece.tile)] = piece.pass + 1;
-                    finished.push_back(piece);
-                }
-                RayStats rays;
-                BadSamples bad;
-                read_counts(in, rays, bad);
-                {
-                    const std::lock_guard lock(state_mutex);
-                    state.rays += rays;
-                    state.bad_samples += bad;
-                }
-                {
-                    const std::lock_guard lock(book);
-                    for (const WorkPiece& piece : finished) dispatch.finish(piece);
-                    local.wake();
-                }
-                report(finished);
-                stats.pieces[std::size_t(r)] += int(finished.size());
-            } catch (const std::runtime_error& e) {
-                throw ClusterError("a message from " + name(r) + " makes no sense: " + e.what());
-            }
-            peer.held.clear();
-            peer.waiting = true;
-        }
+        if (const std::optional<Message> message = transport.receive(std::chrono::milliseconds(2)))
+            take_answer(*message);
         std::unique_lock lock(book);
         const std::vector<WorkPiece> finished = local.take_finished();
         const int now_done = dispatch.passes_done();
@@ -347,35 +384,9 @@ RenderResult render_as_root(const World& world, const RenderOptions& options, Tr
             checkpoint_due = false;
             local.allow(!stopping);
         }
-        if (!checkpoint_due && !stopping)
-            for (std::size_t r = 1; r < peers.size(); ++r) {
-                Peer& peer = peers[r];
-                if (!peer.waiting) continue;
-                std::vector<WorkPiece> pieces = dispatch.take(peer.capacity);
-                if (pieces.empty()) break;
-                std::string bytes;
-                {
-                    const std::lock_guard state_lock(state_mutex);
-                    bytes = work_message(pieces, state, tiles);
-                }
-                transport.send(int(r), bytes);
-                stats.bytes += bytes.size();
-                peer.held = std::move(pieces);
-                peer.waiting = false;
-                peer.since = Clock::now();
-            }
+        if (!checkpoint_due && !stopping) hand_out();
         lock.unlock();
-        const auto now = Clock::now();
-        for (std::size_t r = 1; r < peers.size(); ++r)
-            if (!peers[r].waiting && now - peers[r].since > cluster.rank_timeout)
-                throw ClusterError(
-                    name(int(r)) + " has not answered for " +
-                    std::to_string(
-                        int(std::chrono::duration<double>(now - peers[r].since).count())) +
-                    " s (the limit is " +
-                    std::to_string(
-                        int(std::chrono::duration<double>(cluster.rank_timeout).count())) +
-                    " s): it stopped, or its host is unreachable");
+        check_answers_come();
     }
     local.end();
     if (const std::exception_ptr error = local.error()) std::rethrow_exception(error);
