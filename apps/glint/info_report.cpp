@@ -136,6 +136,11 @@ std::string info_text(const InfoReport& r) {
     append(out, "Triangles    %zu\n", s.triangles);
     append(out, "Materials    %zu\n", s.materials);
     append(out, "Lights       %s\n", lights_text(s).c_str());
+    if (s.animation)
+        append(out, "Animation    %d frames at %g fps (%g s; frame 0 is described here); %zu %s\n",
+               s.animation->frames, double(s.animation->fps),
+               double(s.animation->frames) / double(s.animation->fps), s.moving_lights,
+               s.moving_lights == 1 ? "light moves" : "lights move");
     if (s.sky_width > 0)
         append(out, "Sky          an image of %dx%d pixels: %s\n", s.sky_width, s.sky_height,
                integrator_info(image.integrator).physically_based
@@ -193,6 +198,11 @@ std::string info_json(const InfoReport& r) {
            "  \"lights\": {\"point\": %zu, \"spot\": %zu, \"directional\": %zu, \"area\": %zu, "
            "\"emitting_objects\": %zu},\n",
            s.point_lights, s.spot_lights, s.directional_lights, s.area_lights, s.emitting_objects);
+    if (s.animation)
+        append(out, "  \"animation\": {\"frames\": %d, \"fps\": %.9g, \"moving_lights\": %zu},\n",
+               s.animation->frames, double(s.animation->fps), s.moving_lights);
+    else
+        out += "  \"animation\": null,\n";
     if (s.sky_width > 0)
         append(out, "  \"sky\": {\"width\": %d, \"height\": %d},\n", s.sky_width, s.sky_height);
     else

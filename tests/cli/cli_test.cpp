@@ -335,6 +335,20 @@ TEST_F(Cli, InfoDescribesTheSky) {
         << json.out;
 }
 
+// An animation's frames and moving lights are described.
+TEST_F(Cli, InfoDescribesAnAnimation) {
+    const Outcome r = run_glint("info " + scene("features/animation.yaml"));
+    EXPECT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_NE(r.out.find("Animation    24 frames at 8 fps (3 s; frame 0 is described here); 2 "
+                         "lights move\n"),
+              std::string::npos)
+        << r.out;
+    const Outcome json = run_glint("info " + scene("features/animation.yaml") + " --json");
+    EXPECT_NE(json.out.find("\"animation\": {\"frames\": 24, \"fps\": 8, \"moving_lights\": 2},"),
+              std::string::npos)
+        << json.out;
+}
+
 // The same as one JSON object with the documented keys, one a line where they are numbers.
 TEST_F(Cli, InfoJsonHasTheDocumentedKeys) {
     const Outcome r = run_glint("info " + scene("showcase.yaml") + " --json --accel kdtree");
@@ -354,6 +368,7 @@ TEST_F(Cli, InfoJsonHasTheDocumentedKeys) {
           "\"materials\": 5,",
           "\"lights\": {\"point\": 2, \"spot\": 0, \"directional\": 0, \"area\": 0, "
           "\"emitting_objects\": 0}",
+          "\"animation\": null,",
           "\"sky\": null,",
           "\"bounds\": {\"min\": [-4.2, 0, -3.05], \"max\": [2.9, 2.6, 4.9], "
           "\"unbounded_objects\": 1}",

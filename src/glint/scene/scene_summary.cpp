@@ -32,6 +32,8 @@ SceneSummary summarize_scene(const Scene& scene) {
     SceneSummary s;
     s.objects = scene.objects.size();
     s.materials = scene.materials.size();
+    s.animation = scene.animation;
+    s.moving_lights = scene.moving_lights.size();
     if (scene.sky) {
         s.sky_width = scene.sky->image->width;
         s.sky_height = scene.sky->image->height;

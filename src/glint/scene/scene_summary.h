@@ -4,6 +4,7 @@
 
 #include <cstddef>
 #include <map>
+#include <optional>
 #include <string>
 
 #include "glint/math/bounds.h"
@@ -22,9 +23,11 @@ struct SceneSummary {
     // Objects whose material emits and that light the scene (SceneObject::emits_light); an area
     // light's visible face is its light's, not one of these.
     std::size_t emitting_objects = 0;
-    int sky_width = 0, sky_height = 0;  // the sky image's size; 0 for a background colour
-    Bounds3 bounds;                     // of the bounded objects; empty when there are none
-    std::size_t unbounded_objects = 0;  // planes, and shapes built on them
+    int sky_width = 0, sky_height = 0;   // the sky image's size; 0 for a background colour
+    Bounds3 bounds;                      // of the bounded objects; empty when there are none
+    std::size_t unbounded_objects = 0;   // planes, and shapes built on them
+    std::optional<Animation> animation;  // none: a still
+    std::size_t moving_lights = 0;       // lights that move from frame to frame
 };
 
 SceneSummary summarize_scene(const Scene& scene);
