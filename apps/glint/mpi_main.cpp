@@ -7,6 +7,7 @@
 #include <stdlib.h>
 
 #include <CLI/CLI.hpp>
+#include <algorithm>
 #include <csignal>
 #include <cstdio>
 #include <filesystem>
@@ -15,6 +16,7 @@
 
 #include "command_errors.h"
 #include "glint/cluster/cluster_render.h"
+#include "glint/cluster/frame_share.h"
 #include "glint/scene/animation.h"
 #include "glint/scene/load_scene.h"
 #include "mpi_transport.h"
@@ -22,6 +24,7 @@
 #include "render_command.h"
 #include "render_setup.h"
 #include "scene_broadcast.h"
+#include "test_hold.h"
 #include "usage_error.h"
 
 #ifndef GLINT_VERSION
@@ -41,18 +44,15 @@ Examples:
 // What decides each rank's share of the render: ranks whose texts differ did not load the same
 // scene with the same options.
 std::string render_text(const World& world, const RenderOptions& options) {
-    const RenderSettings& s = world.settings();
-    const FilterSpec f = filter_of(s);
-    std::ostringstream out;
-    out << s.width << 'x' << s.height << ' ' << s.samples_per_pixel << " spp, "
-        << integrator_name(s.integrator) << ", sampler " << int(sampler_of(s)) << ", filter "
-        << int(f.kind) << ' ' << f.radius << ", depth " << s.max_depth << ", adaptive "
-        << (s.adaptive ? s.adaptive->threshold : 0) << ", seed " << options.seed << ", tiles "
-        << options.tile_size << ", passes " << pass_size_of(s, options) << ", aovs "
-        << options.aovs.list().size() << ", " << world.primitives().size() << " primitives, "
-        << world.lights().size() << " lights, " << world.object_lights().size()
-        << " emitting objects";
-    return out.str();
+    return settings_text(world.settings(), options) + ", " +
+           std::to_string(world.primitives().size()) + " primitives, " +
+           std::to_string(world.lights().size()) + " lights, " +
+           std::to_string(world.object_lights().size()) + " emitting objects";
+}
+
+// How often a rank rendering a frame alone says it is alive: well within the rank timeout.
+std::chrono::duration<double> heartbeat_of(double rank_timeout) {
+    return std::chrono::duration<double>(std::min(rank_timeout / 4, 10.0));
 }
 
 // Rank 0: glint render, its scene shared and its render across the ranks. A failure after the
@@ -101,6 +101,18 @@ int run_root(const RenderCommand& command, MpiTransport& transport, double rank_
                              "build, or other options): every rank must be given the same "
                              "command"};
     };
+    std::vector<int> frames_by_rank;
+    backend.ranks = transport.ranks();
+    backend.share_frames = [&](const std::vector<int>& frames, const FrameRendering& rendering,
+                               const FrameBook& book, RenderProgress& progress) {
+        share_frame(kWholeFrames);
+        others = Others::render;
+        const bool done = share_frames_as_root(transport, frames, rendering, book, cluster,
+                                               progress, &frames_by_rank);
+        others = Others::frame;
+        rendered = true;
+        return done;
+    };
     const RenderEngine engine = cluster_engine(transport, cluster);
     backend.engine = [&](const World& world, const RenderOptions& options, RenderProgress& progress,
                          RenderState& state, std::span<const WorkPiece> work) {
@@ -120,6 +132,10 @@ int run_root(const RenderCommand& command, MpiTransport& transport, double rank_
     if (rendered && !command.quiet) {
         std::printf("  ranks %d: pieces", transport.ranks());
         for (const int n : stats.pieces) std::printf(" %d", n);
+        if (!frames_by_rank.empty()) {
+            std::printf("; whole frames");
+            for (const int n : frames_by_rank) std::printf(" %d", n);
+        }
         std::printf(
             "; scene's files sent (%.1f MB) in %.3f s; films summed %d times in %.3f s; "
             "%.1f MB of messages\n",
@@ -146,6 +162,16 @@ int run_worker(const RenderCommand& command, MpiTransport& transport, double ran
         if (!scene) return 0;  // rank 0 says why
         std::filesystem::remove_all(folder);
         while (const std::optional<int> frame = receive_frame()) {
+            if (*frame == kWholeFrames) {
+                FrameRendering rendering =
+                    frame_rendering(command, *scene, requested_aovs(command));
+                rendering.hold = [](const RenderProgress& progress) {
+                    return test_hold_from_environment(progress);
+                };
+                rendering.heartbeat = heartbeat_of(rank_timeout);
+                share_frames_as_worker(transport, rendering);
+                continue;
+            }
             RenderSetup setup = set_up_render(command, scene_at_frame(*scene, *frame),
                                               requested_aovs(command), false);
             first_different(render_text(*setup.world, setup.options),

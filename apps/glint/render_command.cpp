@@ -5,6 +5,7 @@
 
 #include <tbb/info.h>
 
+#include <algorithm>
 #include <atomic>
 #include <chrono>
 #include <cmath>
@@ -12,7 +13,9 @@
 #include <cstdio>
 #include <filesystem>
 #include <functional>
+#include <map>
 #include <optional>
+#include <set>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -113,6 +116,18 @@ void write_stats(const std::string& file, const std::string& json) {
     });
 }
 
+// The samples image and the stats a command asks for, of the image `written`.
+void write_extras(const RenderCommand& c, const RenderSettings& s, const RenderResult& result,
+                  const std::string& written) {
+    if (!c.samples_image.empty())
+        write_samples_image(c.samples_image, result.samples_taken, s.samples_per_pixel);
+    if (!c.stats_file.empty()) {
+        const int threads = c.threads > 0 ? c.threads : tbb::info::default_concurrency();
+        write_stats(c.stats_file, stats_json({c.scene, written, s.width, s.height,
+                                              s.samples_per_pixel, threads, &result}));
+    }
+}
+
 // The part --part asks for; the whole render without it.
 RenderPart requested_part(const RenderCommand& c) {
     const PartSplit split = c.split == "passes" ? PartSplit::passes : PartSplit::tiles;
@@ -143,6 +158,14 @@ void check_outputs(const RenderCommand& c, const std::string& output) {
         if (const auto reason = unwritable_image_reason(c.samples_image)) throw UsageError{*reason};
 }
 
+// The output variables' pictures beside the output, when it holds no layers.
+void check_aov_outputs(const std::string& output, const AovSet& aovs) {
+    if (holds_aov_layers(output)) return;
+    for (const Aov a : aovs.list())
+        if (const auto reason = unwritable_image_reason(aov_picture_path(output, a).string()))
+            throw UsageError{*reason};
+}
+
 // The command that continues a stopped render of `output` (frames from `frames` on).
 std::string continuing(const RenderCommand& c, const std::string& output,
                        std::optional<FrameRange> frames) {
@@ -165,10 +188,7 @@ int render_image(const RenderCommand& command, const RenderBackend& backend, Sce
         part.whole() ? std::filesystem::path() : part_file_path(output, part.index, part.count);
     if (!part.whole())
         if (const auto reason = unwritable_reason(part_file)) throw UsageError{*reason};
-    if (!holds_aov_layers(output))
-        for (const Aov a : aovs.list())
-            if (const auto reason = unwritable_image_reason(aov_picture_path(output, a).string()))
-                throw UsageError{*reason};
+    check_aov_outputs(output, aovs);
     RenderSetup setup = set_up_render(command, std::move(scene), aovs, true);
     const World& world = *setup.world;
     RenderOptions& options = setup.options;
@@ -237,14 +257,7 @@ int render_image(const RenderCommand& command, const RenderBackend& backend, Sce
     } else {
         save_progress(partial, resume, identity, job.state(), result.image, command.ppm_ascii);
     }
-    if (!command.samples_image.empty())
-        write_samples_image(command.samples_image, result.samples_taken, s.samples_per_pixel);
-    if (!command.stats_file.empty()) {
-        const int threads =
-            command.threads > 0 ? command.threads : tbb::info::default_concurrency();
-        write_stats(command.stats_file, stats_json({command.scene, written, s.width, s.height,
-                                                    s.samples_per_pixel, threads, &result}));
-    }
+    write_extras(command, s, result, written);
     if (!result.complete && !part.whole()) {
         std::fprintf(stderr,
                      "glint: interrupted: %s of %s was not finished\n"
@@ -283,9 +296,119 @@ int render_image(const RenderCommand& command, const RenderBackend& backend, Sce
     return 0;
 }
 
+// Frame f's command: its files named by their frame.
+RenderCommand frame_command(const RenderCommand& command, int f) {
+    RenderCommand frame = command;
+    frame.output = frame_file(command.output, f);
+    if (!frame.stats_file.empty()) frame.stats_file = frame_file(frame.stats_file, f);
+    if (!frame.samples_image.empty()) frame.samples_image = frame_file(frame.samples_image, f);
+    return frame;
+}
+
+// Frames rendered whole, each on one rank (backend.share_frames): rank 0 writes each as it comes
+// back, as render_image does, and a stop leaves every frame in flight its partial image and
+// resume file. `last` is the sequence's last frame, for the command that continues it.
+int render_whole_frames(const RenderCommand& command, const RenderBackend& backend,
+                        const Scene& scene, const std::map<int, RenderCommand>& frames, int last) {
+    const AovSet aovs = requested_aovs(command);
+    for (const auto& [f, c] : frames) {
+        check_outputs(c, c.output);
+        check_aov_outputs(c.output, aovs);
+    }
+    // What rank 0 knows of a frame's render without building its world.
+    struct Plan {
+        RenderSettings settings;
+        RenderOptions options;
+        RenderIdentity identity;
+    };
+    std::map<int, Plan> plans;
+    bool warned = false;
+    const auto plan = [&](int f) -> Plan& {
+        if (const auto found = plans.find(f); found != plans.end()) return found->second;
+        PreparedRender p = prepare_render(frames.at(f), scene_at_frame(scene, f), aovs, !warned);
+        warned = true;
+        RenderIdentity identity = identify_render(command.scene, p.scene.sources.files_read,
+                                                  p.scene.settings, p.options, GLINT_VERSION);
+        return plans.emplace(f, Plan{p.scene.settings, p.options, std::move(identity)})
+            .first->second;
+    };
+    plan(frames.begin()->first);  // the scene's warnings, and its errors, before any render
+
+    FrameRendering rendering = frame_rendering(command, scene, aovs);
+    rendering.hold = [](const RenderProgress& progress) {
+        return test_hold_from_environment(progress);
+    };
+    std::set<int> done, stopped;
+    FrameBook book;
+    book.fresh_state = [&](int f) { return initial_state(plan(f).settings, plan(f).options); };
+    book.text = [&](int f) { return settings_text(plan(f).settings, plan(f).options); };
+    book.saved = [&](int f) -> std::optional<RenderState> {
+        const RenderCommand& c = frames.at(f);
+        if (!c.resume) return std::nullopt;
+        return read_resume_file(resume_path(c.output), plan(f).identity, plan(f).settings);
+    };
+    book.checkpoint = [&](int f, const RenderState& state) {
+        const RenderCommand& c = frames.at(f);
+        save_progress(partial_output_path(c.output), resume_path(c.output), plan(f).identity, state,
+                      resolve_image(state), c.ppm_ascii);
+    };
+    book.finished = [&](int f, int rank, const RenderState& state, bool complete) {
+        const RenderCommand& c = frames.at(f);
+        const Plan& p = plan(f);
+        RenderResult result = render_result(state, p.options);
+        result.complete = complete;
+        report_bad_samples(result.bad_samples, command);
+        const std::filesystem::path partial = partial_output_path(c.output);
+        const std::filesystem::path resume = resume_path(c.output);
+        if (complete) {
+            write_image_and_aovs(c.output, result, c.ppm_ascii);
+            std::error_code ignored;
+            std::filesystem::remove(resume, ignored);
+            std::filesystem::remove(partial, ignored);
+            done.insert(f);
+        } else {
+            save_progress(partial, resume, p.identity, state, result.image, c.ppm_ascii);
+            stopped.insert(f);
+        }
+        write_extras(c, p.settings, result, complete ? c.output : partial.string());
+        if (complete && !command.quiet)
+            print_summary(c.output, p.settings, result,
+                          "frame " + std::to_string(f) + ", rank " + std::to_string(rank));
+        plans.erase(f);
+    };
+
+    std::vector<int> list;
+    for (const auto& [f, c] : frames) list.push_back(f);
+    RenderProgress progress;
+    bool all_done = false;
+    ignore_stop_signals();
+    {
+        const ProgressWatcher watcher(progress, false);
+        all_done = backend.share_frames(list, rendering, book, progress);
+    }
+    if (all_done) return 0;
+    const auto first_left =
+        std::find_if(list.begin(), list.end(), [&](int f) { return done.count(f) == 0; });
+    const int first = first_left == list.end() ? last : *first_left;
+    std::string names;
+    for (const int f : stopped) names += (names.empty() ? "" : ", ") + std::to_string(f);
+    if (stopped.empty())
+        std::fprintf(stderr, "glint: interrupted between frames\n");
+    else
+        std::fprintf(stderr,
+                     "glint: interrupted: %s %s stopped; each has its image so far beside its "
+                     "output (.partial) and its state in a resume file\n",
+                     stopped.size() == 1 ? "frame" : "frames", names.c_str());
+    std::fprintf(stderr, "glint: to continue, with the same options: %s\n",
+                 continuing(command, command.output, FrameRange{first, last}).c_str());
+    return kExitInterrupted;
+}
+
 // The frames of a sequence, each the scene at its moment, to output's frame files. With
 // --resume, a frame with a resume file continues from it, and one whose image is written (with
-// no resume file beside it) is done: the sequence goes on at the frame in flight.
+// no resume file beside it) is done: the sequence goes on at the frame in flight. A backend that
+// shares frames out whole takes the frames that fill whole rounds of its ranks; the rest (fewer
+// than the ranks) are rendered one after another, each as a still is.
 int render_frames(const RenderCommand& command, const RenderBackend& backend, const Scene& scene,
                   FrameRange frames) {
     if (!command.part.empty())
@@ -298,11 +421,9 @@ int render_frames(const RenderCommand& command, const RenderBackend& backend, co
             throw UsageError{std::string(option) +
                              ": a sequence writes one file a frame: name where the frame's "
                              "number goes with '#' (e.g. stats.####.json)"};
+    std::map<int, RenderCommand> todo;
     for (int f = frames.first; f <= frames.last; ++f) {
-        RenderCommand frame = command;
-        frame.output = frame_file(command.output, f);
-        if (!frame.stats_file.empty()) frame.stats_file = frame_file(frame.stats_file, f);
-        if (!frame.samples_image.empty()) frame.samples_image = frame_file(frame.samples_image, f);
+        RenderCommand frame = frame_command(command, f);
         if (command.resume && !std::filesystem::exists(resume_path(frame.output))) {
             if (std::filesystem::exists(frame.output)) {
                 if (!command.quiet)
@@ -311,6 +432,18 @@ int render_frames(const RenderCommand& command, const RenderBackend& backend, co
             }
             frame.resume = false;
         }
+        todo.emplace(f, std::move(frame));
+    }
+    const std::size_t whole =
+        backend.share_frames ? todo.size() - todo.size() % std::size_t(backend.ranks) : 0;
+    if (whole > 0) {
+        std::map<int, RenderCommand> shared;
+        while (shared.size() < whole) shared.insert(todo.extract(todo.begin()));
+        if (const int code = render_whole_frames(command, backend, scene, shared, frames.last);
+            code != 0)
+            return code;
+    }
+    for (const auto& [f, frame] : todo) {
         default_stop_signals();
         if (backend.begin_frame) backend.begin_frame(f);
         const int code =

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "glint/cluster/frame_share.h"
 #include "glint/render/render_job.h"
 #include "glint/scene/scene.h"
 #include "image_options.h"
@@ -51,6 +52,13 @@ struct RenderBackend {
     RenderEngine engine;                                            // empty: this process
     // Before each image's set-up: the frame it is (0 for a still).
     std::function<void(int frame)> begin_frame;
+    // Renders frames of a sequence whole, each on one of `ranks` ranks (frame_share.h), and
+    // returns whether every one was done. Empty: a sequence's frames are rendered one after
+    // another, each as a still is.
+    std::function<bool(const std::vector<int>& frames, const FrameRendering& rendering,
+                       const FrameBook& book, RenderProgress& progress)>
+        share_frames;
+    int ranks = 1;
 };
 
 // Renders a still, or an animation's frames one after the other (frame_sequence.h).

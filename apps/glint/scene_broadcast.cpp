@@ -74,13 +74,14 @@ std::uint64_t share_scene(const std::filesystem::path& scene_file, const Scene& 
 
 void share_failure() { send_u64(0); }
 
-void share_frame(int frame) { send_u64(std::uint64_t(frame) + 1); }
+// 0 says there is none; kWholeFrames (-1) and the frames' numbers follow.
+void share_frame(int frame) { send_u64(std::uint64_t(frame + 2)); }
 void share_end_of_frames() { send_u64(0); }
 
 std::optional<int> receive_frame() {
     const std::uint64_t v = receive_u64();
     if (v == 0) return std::nullopt;
-    return int(v - 1);
+    return int(v) - 2;
 }
 
 std::optional<Scene> receive_scene(const std::filesystem::path& folder, LoadOptions options) {

@@ -19,11 +19,17 @@ std::uint64_t share_scene(const std::filesystem::path& scene_file, const Scene& 
 // Rank 0: tells the other ranks that loading failed.
 void share_failure();
 
-// Rank 0: tells the others the frame to set up next (0 for a still), or that there is none.
+// What rank 0 tells the others instead of a frame when it shares frames out whole next
+// (cluster/frame_share.h).
+constexpr int kWholeFrames = -1;
+
+// Rank 0: tells the others the frame to set up next (0 for a still), kWholeFrames, or that there
+// is none.
 void share_frame(int frame);
 void share_end_of_frames();
 
-// Every other rank: the frame rank 0 sets up next; none when it has rendered them all.
+// Every other rank: the frame rank 0 sets up next, or kWholeFrames; none when it has rendered
+// them all.
 std::optional<int> receive_frame();
 
 // Every other rank: the scene as rank 0 loaded it, its files written under `folder` (which must

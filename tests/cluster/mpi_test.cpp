@@ -1,7 +1,7 @@
 // glint-mpi under mpirun with three ranks on this machine: the image of one glint render, bit for
-// bit, for every integrator and with output variables; a stopped job that resumes; a rank given
-// another command refused at the start; a rank killed or stopped ends the job in bounded time,
-// named.
+// bit, for every integrator and with output variables; an animation's frames, whole and shared;
+// a stopped job or sequence that resumes; a rank given another command refused; a rank killed or
+// stopped ends the job in bounded time, named.
 #include <gtest/gtest.h>
 
 #include <chrono>
@@ -87,24 +87,94 @@ TEST_F(Mpi, ThreeRanksWriteTheImageOfOneProcessForEveryIntegrator) {
     EXPECT_EQ(rays(three.out).substr(0, 30), rays(one.out).substr(0, 30)) << three.out;
 }
 
-// An animation's frames, each across the ranks, as one process renders them; the frames a
-// resumed sequence skips are skipped by every rank.
+// An animation's frames as one process renders them, output variables included: the three that
+// fill a round of the ranks whole, a frame to a rank, and the last two each across the ranks. The
+// frames a resumed sequence skips are skipped by every rank.
 TEST_F(Mpi, ThreeRanksRenderAnAnimationsFramesAsOneProcess) {
-    const std::string args =
-        scene("features/animation.yaml") + " --width 32 --height 24 --spp 4 --seed 5 -q";
-    const Outcome one = run_glint("render " + args + " --frames 2..4 -o 'one.#.exr'");
+    const std::string args = scene("features/animation.yaml") +
+                             " --width 32 --height 24 --spp 4 --seed 5 --aov depth,object";
+    const Outcome one = run_glint("render " + args + " -q --frames 0..4 -o 'one.#.exr'");
     ASSERT_EQ(one.exit_code, 0) << one.err;
-    const Outcome three = mpirun(args + " --frames 2..4 -o 'three.#.exr'");
+    const Outcome three = mpirun(args + " --frames 0..4 -o 'three.#.exr'");
     ASSERT_EQ(three.exit_code, 0) << three.err;
-    for (const std::string f : {"2", "3", "4"}) {
+    EXPECT_NE(three.out.find("whole frames 1 1 1;"), std::string::npos) << three.out;
+    EXPECT_NE(three.out.find("(frame 2, rank "), std::string::npos) << three.out;
+    EXPECT_NE(three.out.find("(frame 4; "), std::string::npos) << three.out;
+    for (const std::string f : {"0", "1", "2", "3", "4"}) {
         ASSERT_TRUE(fs::exists(dir_ / ("three." + f + ".exr"))) << f;
         EXPECT_TRUE(slurp(dir_ / ("one." + f + ".exr")) == slurp(dir_ / ("three." + f + ".exr")))
             << f;
     }
-    fs::remove(dir_ / "three.3.exr");
-    const Outcome resumed = mpirun(args + " --frames 2..4 -o 'three.#.exr' --resume");
+    // A resume file holds no output variables: resumed without them.
+    const std::string plain = scene("features/animation.yaml") +
+                              " --width 32 --height 24 --spp 4 --seed 5 -q --frames 0..4";
+    ASSERT_EQ(run_glint("render " + plain + " -o 'one.#.png'").exit_code, 0);
+    ASSERT_EQ(mpirun(plain + " -o 'three.#.png'").exit_code, 0);
+    fs::remove(dir_ / "three.3.png");
+    const auto written = fs::last_write_time(dir_ / "three.1.png");
+    const Outcome resumed = mpirun(plain + " -o 'three.#.png' --resume");
     ASSERT_EQ(resumed.exit_code, 0) << resumed.err;
-    EXPECT_TRUE(slurp(dir_ / "one.3.exr") == slurp(dir_ / "three.3.exr"));
+    EXPECT_TRUE(slurp(dir_ / "one.3.png") == slurp(dir_ / "three.3.png"));
+    EXPECT_EQ(fs::last_write_time(dir_ / "three.1.png"), written);
+}
+
+// Ctrl-C on rank 0 while every rank renders a frame of its own: each frame in flight leaves its
+// partial image and resume file, and the sequence resumes at them to one process's frames.
+TEST_F(Mpi, AStoppedSequenceResumesAtTheFramesInFlight) {
+    const std::vector<std::string> options = {
+        std::string(GLINT_SOURCE_DIR) + "/scenes/features/animation.yaml",
+        "--width",
+        "48",
+        "--height",
+        "32",
+        "--spp",
+        "8",
+        "--seed",
+        "3",
+        "-q",
+        "--frames",
+        "0..5"};
+    std::string line;
+    for (const std::string& o : options) line += "'" + o + "' ";
+    ASSERT_EQ(run_glint("render --threads 1 " + line + " -o 'one.#.png'").exit_code, 0);
+    std::vector<std::string> environment = this->environment();
+    environment.push_back("GLINT_TEST_HOLD_AFTER_TILES=2");
+    std::vector<std::string> args = options;
+    args.insert(args.end(), {"-o", (dir_ / "out.#.png").string()});
+    const pid_t pid = spawn(mpirun_args(args), environment);
+    ASSERT_GT(pid, 0);
+    // Every rank holding a frame of its own.
+    const auto holding_ranks = [&] {
+        const std::string err = slurp(dir_ / "stderr.txt");
+        int n = 0;
+        for (std::size_t at = 0; (at = err.find("glint: holding", at)) != std::string::npos; ++at)
+            ++n;
+        return n;
+    };
+    for (int waited = 0; holding_ranks() < 3 && waited < 120000; waited += 10)
+        std::this_thread::sleep_for(std::chrono::milliseconds(10));
+    ASSERT_EQ(holding_ranks(), 3) << slurp(dir_ / "stderr.txt");
+    const pid_t root = rank_process(pid, 0);
+    ASSERT_GT(root, 0);
+    kill(root, SIGINT);
+    int status = 0;
+    waitpid(pid, &status, 0);
+    const std::string err = slurp(dir_ / "stderr.txt");
+    EXPECT_NE(err.find("frames 0, 1, 2 stopped"), std::string::npos) << err;
+    EXPECT_NE(err.find("--frames 0..5 --resume"), std::string::npos) << err;
+    for (const std::string f : {"0", "1", "2"}) {
+        EXPECT_TRUE(fs::exists(dir_ / ("out." + f + ".png.resume"))) << f;
+        EXPECT_TRUE(fs::exists(dir_ / ("out." + f + ".partial.png"))) << f;
+        EXPECT_FALSE(fs::exists(dir_ / ("out." + f + ".png"))) << f;
+    }
+
+    const Outcome resumed = mpirun(line + "-o 'out.#.png' --resume");
+    ASSERT_EQ(resumed.exit_code, 0) << resumed.err;
+    for (const std::string f : {"0", "1", "2", "3", "4", "5"}) {
+        EXPECT_TRUE(slurp(dir_ / ("out." + f + ".png")) == slurp(dir_ / ("one." + f + ".png")))
+            << f;
+        EXPECT_FALSE(fs::exists(dir_ / ("out." + f + ".png.resume"))) << f;
+    }
 }
 
 TEST_F(Mpi, AStoppedJobResumesToTheImageOfOneRun) {
@@ -174,6 +244,19 @@ TEST_F(Mpi, ARankGivenAnotherCommandIsRefusedAtTheStart) {
     EXPECT_FALSE(fs::exists(dir_ / "x.png"));
 }
 
+// With frames shared out whole, the rank's own frame is checked against rank 0's.
+TEST_F(Mpi, ARankGivenAnotherCommandIsRefusedAtItsFirstFrame) {
+    const std::string mpi = "'" GLINT_MPI_BINARY "' render --threads 1 " +
+                            scene("features/animation.yaml") +
+                            " --width 32 --height 24 --frames 0..2 -q -o 'x.#.png'";
+    const Outcome o =
+        run(kEnvironment, "mpirun --oversubscribe -np 2 " + mpi + " : -np 1 " + mpi + " --spp 4");
+    EXPECT_NE(o.exit_code, 0);
+    EXPECT_NE(o.err.find("made another render of frame 2 than rank 0"), std::string::npos) << o.err;
+    EXPECT_NE(o.err.find("the error above is rank 2's"), std::string::npos) << o.err;
+    EXPECT_FALSE(fs::exists(dir_ / "x.2.png"));
+}
+
 TEST_F(Mpi, BadInputIsReportedOnceByRankZero) {
     std::ofstream(dir_ / "bad.yaml") << "camera: {from: [0, 0, -5], at: [0, 0, 0]\nobjects: [\n";
     const Outcome bad = mpirun("bad.yaml -o x.png");
@@ -227,6 +310,42 @@ TEST_F(Mpi, ARankKilledOrStoppedEndsTheJobNamingIt) {
         EXPECT_FALSE(fs::exists(dir_ / "out.exr"));
         kill(victim, SIGCONT);
     }
+}
+
+// A rank stopped while it renders a frame of its own: its heartbeats stop, and rank 0 gives up
+// after --rank-timeout, naming it and its frame.
+TEST_F(Mpi, ARankStoppedInItsOwnFrameEndsTheJobNamingIt) {
+    const pid_t pid =
+        spawn(mpirun_args({std::string(GLINT_SOURCE_DIR) + "/scenes/features/animation.yaml",
+                           "--width", "320", "--height", "240", "--spp", "256", "--frames", "0..2",
+                           "--rank-timeout", "2", "-o", (dir_ / "out.#.exr").string()}),
+              environment());
+    ASSERT_GT(pid, 0);
+    pid_t victim = 0;
+    for (int waited = 0; victim == 0 && waited < 120000; waited += 10) {
+        victim = rank_process(pid, 2);
+        std::this_thread::sleep_for(std::chrono::milliseconds(10));
+    }
+    ASSERT_GT(victim, 0);
+    std::this_thread::sleep_for(std::chrono::seconds(1));  // into its frame
+    const auto start = std::chrono::steady_clock::now();
+    kill(victim, SIGSTOP);
+    int status = 0;
+    while (waitpid(pid, &status, WNOHANG) == 0 &&
+           std::chrono::steady_clock::now() - start < std::chrono::seconds(60))
+        std::this_thread::sleep_for(std::chrono::milliseconds(20));
+    const bool ended = waitpid(pid, &status, WNOHANG) != 0 || WIFEXITED(status);
+    if (!ended) {
+        kill(victim, SIGKILL);
+        kill(pid, SIGKILL);
+        waitpid(pid, &status, 0);
+    }
+    EXPECT_TRUE(ended) << "the job did not end in a minute";
+    const std::string err = slurp(dir_ / "stderr.txt");
+    EXPECT_NE(err.find("rank 2 ("), std::string::npos) << err;
+    EXPECT_NE(err.find("while rendering frame 2"), std::string::npos) << err;
+    EXPECT_FALSE(fs::exists(dir_ / "out.2.exr"));
+    kill(victim, SIGCONT);
 }
 
 }  // namespace

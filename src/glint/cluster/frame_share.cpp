@@ -32,10 +32,12 @@ enum class Kind : std::uint8_t {
     done = 16,        // to rank 0: the frame's state, and whether every pass was done
 };
 
-std::string frame_message(int frame, const RenderState* saved, int tile_size) {
+std::string frame_message(int frame, const std::string& text, const RenderState* saved,
+                          int tile_size) {
     ByteWriter out;
     out.u8(std::uint8_t(Kind::frame));
     out.i32(frame);
+    out.text(text);
     out.u8(saved ? 1 : 0);
     if (saved) write_state(out, *saved, tile_size);
     return std::move(out.bytes());
@@ -96,7 +98,9 @@ public:
     }
     int frame() const { return frame_; }  // the last begun
 
-    void start(int frame, Load load) {
+    // Renders `frame`; with `text`, refuses to when the frame's own text (FrameRendering::text)
+    // is another.
+    void start(int frame, Load load, std::optional<std::string> text = std::nullopt) {
         if (thread_.joinable()) thread_.join();
         progress_.stop_after_pass = false;
         progress_.cancel = false;
@@ -105,7 +109,9 @@ public:
             const std::lock_guard lock(mutex_);
             busy_ = true;
         }
-        thread_ = std::thread([this, frame, load = std::move(load)] { run(frame, load); });
+        thread_ = std::thread([this, frame, load = std::move(load), text = std::move(text)] {
+            run(frame, load, text);
+        });
     }
     void stop(bool at_once) {
         progress_.stop_after_pass = true;
@@ -127,11 +133,16 @@ public:
     }
 
 private:
-    void run(int frame, const Load& load) {
+    void run(int frame, const Load& load, const std::optional<std::string>& text) {
         try {
             FrameSetup setup = rendering_.set_up(frame);
             if (setup.options.tile_size != rendering_.tile_size)
                 throw std::logic_error("a frame set up with another tile size");
+            if (text && rendering_.text && rendering_.text(*setup.world, setup.options) != *text)
+                throw ClusterError("this rank made another render of frame " +
+                                   std::to_string(frame) +
+                                   " than rank 0 (another glint build, or other options): every "
+                                   "rank must be given the same command");
             RenderState state = initial_state(setup.world->settings(), setup.options);
             if (load) load(state);
             if (rendering_.checkpoint_every)
@@ -204,7 +215,8 @@ bool share_frames_as_root(Transport& transport, const std::vector<int>& frames,
             });
             return;
         }
-        transport.send(rank, frame_message(frame, saved ? &*saved : nullptr, rendering.tile_size));
+        transport.send(rank, frame_message(frame, book.text ? book.text(frame) : std::string(),
+                                           saved ? &*saved : nullptr, rendering.tile_size));
         held[std::size_t(rank)] = {frame, Clock::now()};
     };
     const auto stop_all = [&](bool now) {
@@ -313,6 +325,7 @@ void share_frames_as_worker(Transport& transport, const FrameRendering& renderin
             } else if (kind == std::uint8_t(Kind::frame)) {
                 if (renderer.busy()) throw ClusterError("rank 0 sent a frame while one runs");
                 const int frame = in.i32();
+                std::string text = in.text();
                 const bool has_state = in.u8() != 0;
                 FrameRenderer::Load load;
                 if (has_state)
@@ -322,10 +335,12 @@ void share_frames_as_worker(Transport& transport, const FrameRendering& renderin
                                           bytes.size(), "a message from rank 0 was cut short");
                         rest.u8();
                         rest.i32();
+                        rest.text();
                         rest.u8();
                         read_state(rest, state, tile_size);
                     };
-                renderer.start(frame, std::move(load));
+                renderer.start(frame, std::move(load),
+                               text.empty() ? std::nullopt : std::optional(std::move(text)));
                 last_word = Clock::now();
             } else {
                 throw ClusterError("rank 0 sent a message of an unknown kind");

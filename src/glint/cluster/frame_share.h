@@ -10,6 +10,7 @@
 #include <functional>
 #include <memory>
 #include <optional>
+#include <string>
 #include <vector>
 
 #include "glint/cluster/cluster_render.h"
@@ -30,6 +31,9 @@ struct FrameRendering {
     // On the rank that renders `frame`, on a thread of its own: its world and options.
     std::function<FrameSetup(int frame)> set_up;
     int tile_size = RenderOptions{}.tile_size;  // every frame's
+    // What decides a frame's image, as text: a rank whose text differs from rank 0's for the
+    // frame was given another command, and ends the job. None: not checked.
+    std::function<std::string(const World& world, const RenderOptions& options)> text;
     // The tests' hold for a frame's render (test_hold.h); none when empty.
     std::function<std::function<void(int pieces)>(const RenderProgress&)> hold;
     // After a pass, once this long has passed since the last, the state so far goes to rank 0;
@@ -42,6 +46,8 @@ struct FrameRendering {
 struct FrameBook {
     // A state of `frame`'s render before its first pass.
     std::function<RenderState(int frame)> fresh_state;
+    // What decides the frame's image (FrameRendering::text), sent with it.
+    std::function<std::string(int frame)> text;
     // A resumed frame's saved state; none to start it afresh.
     std::function<std::optional<RenderState>(int frame)> saved;
     // On rank 0's main thread: a frame's state as `rank` left it, every pass done or stopped.
