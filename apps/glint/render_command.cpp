@@ -407,8 +407,8 @@ int render_whole_frames(const RenderCommand& command, const RenderBackend& backe
 // The frames of a sequence, each the scene at its moment, to output's frame files. With
 // --resume, a frame with a resume file continues from it, and one whose image is written (with
 // no resume file beside it) is done: the sequence goes on at the frame in flight. A backend that
-// shares frames out whole takes the frames that fill whole rounds of its ranks; the rest (fewer
-// than the ranks) are rendered one after another, each as a still is.
+// shares frames out whole takes them, but for a last few, fewer than half its ranks, which are
+// rendered one after another, each as a still is.
 int render_frames(const RenderCommand& command, const RenderBackend& backend, const Scene& scene,
                   FrameRange frames) {
     if (!command.part.empty())
@@ -434,8 +434,12 @@ int render_frames(const RenderCommand& command, const RenderBackend& backend, co
         }
         todo.emplace(f, std::move(frame));
     }
+    // The last frames, if fewer than half the ranks, go across the ranks instead: a round of
+    // them a frame to a rank would leave most ranks idle, while a frame across many ranks keeps
+    // about half of them busy (bench/README.md's model).
+    const std::size_t ranks = std::size_t(backend.ranks), rest = todo.size() % ranks;
     const std::size_t whole =
-        backend.share_frames ? todo.size() - todo.size() % std::size_t(backend.ranks) : 0;
+        backend.share_frames ? todo.size() - (2 * rest < ranks ? rest : 0) : 0;
     if (whole > 0) {
         std::map<int, RenderCommand> shared;
         while (shared.size() < whole) shared.insert(todo.extract(todo.begin()));

@@ -1,7 +1,8 @@
 #!/usr/bin/env python3
 """glint-mpi's speed-up on this machine: one render on 1, 2 and 4 ranks of one thread each, as
-ratios against one rank, and against glint render on one thread (the job's own cost); then the
-cost of sending a big scene's files and of summing a 4K film, from glint-mpi's summary.
+ratios against one rank, and against glint render on one thread (the job's own cost); an
+animation's frames on 1 and 2 ranks (a frame to a rank); then the cost of sending a big scene's
+files and of summing a 4K film, from glint-mpi's summary.
 
   python3 bench/cluster/run.py --repeat 3 [--mesh ../shared/data/meshes/bunny.ply]
 """
@@ -65,6 +66,21 @@ def main():
     for n, wall in ranks.items():
         print("| glint-mpi, %d rank%s of 1 thread | %.3f | %.2fx |" % (
             n, "s" if n > 1 else "", wall, ranks[1] / wall))
+
+    # An animation of 8 frames: whole frames, a frame to a rank, against one rank.
+    frames = [os.path.join(ROOT, "scenes", "features", "animation.yaml"), "--width", "320",
+              "--height", "200", "--spp", "16", "--frames", "0..7", "-q",
+              "-o", os.path.join(out, "f.####.png")]
+    sequence = {n: best(mpirun(n, frames), args.repeat) for n in (1, 2)}
+    sequence_two_threads = best([os.path.join(BUILD, "glint"), "render", "--threads", "2"] +
+                                frames, args.repeat)
+    print("\n| 8 frames of scenes/features/animation.yaml | wall s | speed-up against 1 rank |")
+    print("|---|---:|---:|")
+    print("| glint render, 2 threads | %.3f | %.2fx |" % (
+        sequence_two_threads, sequence[1] / sequence_two_threads))
+    for n, wall in sequence.items():
+        print("| glint-mpi, %d rank%s of 1 thread | %.3f | %.2fx |" % (
+            n, "s" if n > 1 else "", wall, sequence[1] / wall))
 
     line = re.compile(r"scene's files sent \(([\d.]+) MB\) in ([\d.]+) s; films summed (\d+) "
                       r"times in ([\d.]+) s")
