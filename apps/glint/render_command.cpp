@@ -90,10 +90,11 @@ void report_bad_samples(const BadSamples& bad, const RenderCommand& c) {
                  "glint: warning: %s samples were NaN or infinite and were left out; the first "
                  "is pixel (%d, %d), sample %d, seed %llu\n"
                  "glint: to see how it was computed: glint explain %s --pixel %d,%d --sample %d "
-                 "--seed %llu%s\n",
+                 "--seed %llu%s%s\n",
                  with_thousands(bad.count).c_str(), at.x, at.y, at.sample,
                  static_cast<unsigned long long>(c.seed), shell_quoted(c.scene).c_str(), at.x, at.y,
                  at.sample, static_cast<unsigned long long>(c.seed),
+                 c.frames.empty() ? "" : (" --frame " + c.frames).c_str(),
                  image_options_arguments(c.image).c_str());
 }
 
@@ -296,9 +297,10 @@ int render_image(const RenderCommand& command, const RenderBackend& backend, Sce
     return 0;
 }
 
-// Frame f's command: its files named by their frame.
+// Frame f's command: its files named by their frame, and its frames f alone.
 RenderCommand frame_command(const RenderCommand& command, int f) {
     RenderCommand frame = command;
+    frame.frames = std::to_string(f);
     frame.output = frame_file(command.output, f);
     if (!frame.stats_file.empty()) frame.stats_file = frame_file(frame.stats_file, f);
     if (!frame.samples_image.empty()) frame.samples_image = frame_file(frame.samples_image, f);
@@ -357,7 +359,7 @@ int render_whole_frames(const RenderCommand& command, const RenderBackend& backe
         const Plan& p = plan(f);
         RenderResult result = render_result(state, p.options);
         result.complete = complete;
-        report_bad_samples(result.bad_samples, command);
+        report_bad_samples(result.bad_samples, c);
         const std::filesystem::path partial = partial_output_path(c.output);
         const std::filesystem::path resume = resume_path(c.output);
         if (complete) {

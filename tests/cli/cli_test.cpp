@@ -884,6 +884,17 @@ objects:
         << explained.out;
     EXPECT_NE(explained.out.find("sample colour (3e+09, 3e+09, 3e+09)"), std::string::npos)
         << explained.out;
+
+    // A frame of an animation: replayed at that frame.
+    write_scene("hot-frames.yaml", "animation: {frames: 3}\n" + slurp(dir_ / "hot.yaml"));
+    const Outcome frame = run_glint("render hot-frames.yaml -q --seed 3 --frames 2 -o 'hot.#.png'");
+    ASSERT_EQ(frame.exit_code, 0) << frame.err;
+    const std::size_t frame_at = frame.err.find(prefix);
+    ASSERT_NE(frame_at, std::string::npos) << frame.err;
+    const std::string frame_replay = frame.err.substr(
+        frame_at + prefix.size(), frame.err.find('\n', frame_at) - frame_at - prefix.size());
+    EXPECT_NE(frame_replay.find("--frame 2"), std::string::npos) << frame_replay;
+    EXPECT_EQ(run_glint(frame_replay).exit_code, 0) << frame_replay;
 }
 
 // Output variables: PNG pictures beside a PNG image, layers of an EXR one; bad lists and
