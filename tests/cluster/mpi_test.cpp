@@ -49,6 +49,37 @@ protected:
         a.insert(a.end(), more.begin(), more.end());
         return a;
     }
+    // Sends `signal` to `victim`, a rank of mpirun `pid`, and waits up to a minute for the job
+    // to end; kills what is left if it does not.
+    static bool signal_ends_job(pid_t pid, pid_t victim, int signal) {
+        const auto start = std::chrono::steady_clock::now();
+        kill(victim, signal);
+        int status = 0;
+        while (waitpid(pid, &status, WNOHANG) == 0 &&
+               std::chrono::steady_clock::now() - start < std::chrono::seconds(60))
+            std::this_thread::sleep_for(std::chrono::milliseconds(20));
+        const bool ended = waitpid(pid, &status, WNOHANG) != 0 || WIFEXITED(status);
+        if (!ended) {
+            kill(victim, SIGKILL);
+            kill(pid, SIGKILL);
+            waitpid(pid, &status, 0);
+        }
+        return ended;
+    }
+    // Waits until `ranks` ranks say they hold (GLINT_TEST_HOLD_AFTER_TILES), two minutes at most.
+    bool ranks_hold(int ranks) const {
+        const auto holding = [&] {
+            const std::string err = slurp(dir_ / "stderr.txt");
+            int n = 0;
+            for (std::size_t at = 0; (at = err.find("glint: holding", at)) != std::string::npos;
+                 ++at)
+                ++n;
+            return n;
+        };
+        for (int waited = 0; holding() < ranks && waited < 120000; waited += 10)
+            std::this_thread::sleep_for(std::chrono::milliseconds(10));
+        return holding() >= ranks;
+    }
     static std::vector<std::string> environment() {
         return {"OMPI_ALLOW_RUN_AS_ROOT=1", "OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1",
                 "ASAN_OPTIONS=detect_leaks=0"};
@@ -144,16 +175,7 @@ TEST_F(Mpi, AStoppedSequenceResumesAtTheFramesInFlight) {
     const pid_t pid = spawn(mpirun_args(args), environment);
     ASSERT_GT(pid, 0);
     // Every rank holding a frame of its own.
-    const auto holding_ranks = [&] {
-        const std::string err = slurp(dir_ / "stderr.txt");
-        int n = 0;
-        for (std::size_t at = 0; (at = err.find("glint: holding", at)) != std::string::npos; ++at)
-            ++n;
-        return n;
-    };
-    for (int waited = 0; holding_ranks() < 3 && waited < 120000; waited += 10)
-        std::this_thread::sleep_for(std::chrono::milliseconds(10));
-    ASSERT_EQ(holding_ranks(), 3) << slurp(dir_ / "stderr.txt");
+    ASSERT_TRUE(ranks_hold(3)) << slurp(dir_ / "stderr.txt");
     const pid_t root = rank_process(pid, 0);
     ASSERT_GT(root, 0);
     kill(root, SIGINT);
@@ -286,20 +308,7 @@ TEST_F(Mpi, ARankKilledOrStoppedEndsTheJobNamingIt) {
         }
         const pid_t victim = rank_process(pid, 2);
         ASSERT_GT(victim, 0) << slurp(dir_ / "stderr.txt");
-        const auto start = std::chrono::steady_clock::now();
-        kill(victim, signal);
-        int status = 0;
-        while (waitpid(pid, &status, WNOHANG) == 0 &&
-               std::chrono::steady_clock::now() - start < std::chrono::seconds(60))
-            std::this_thread::sleep_for(std::chrono::milliseconds(20));
-        const bool ended = waitpid(pid, &status, WNOHANG) != 0 || WIFEXITED(status);
-        if (!ended) {
-            kill(victim, SIGKILL);
-            kill(pid, SIGKILL);
-            waitpid(pid, &status, 0);
-        }
-        EXPECT_TRUE(ended) << "the job did not end in a minute";
-        EXPECT_LT(std::chrono::steady_clock::now() - start, std::chrono::seconds(60));
+        EXPECT_TRUE(signal_ends_job(pid, victim, signal)) << "the job did not end in a minute";
         const std::string err = slurp(dir_ / "stderr.txt");
         if (signal == SIGKILL)
             EXPECT_NE(err.find("rank 2"), std::string::npos) << err;
@@ -315,32 +324,18 @@ TEST_F(Mpi, ARankKilledOrStoppedEndsTheJobNamingIt) {
 // A rank stopped while it renders a frame of its own: its heartbeats stop, and rank 0 gives up
 // after --rank-timeout, naming it and its frame.
 TEST_F(Mpi, ARankStoppedInItsOwnFrameEndsTheJobNamingIt) {
+    std::vector<std::string> environment = this->environment();
+    environment.push_back("GLINT_TEST_HOLD_AFTER_TILES=1");
     const pid_t pid =
         spawn(mpirun_args({std::string(GLINT_SOURCE_DIR) + "/scenes/features/animation.yaml",
-                           "--width", "320", "--height", "240", "--spp", "256", "--frames", "0..2",
-                           "--rank-timeout", "2", "-o", (dir_ / "out.#.exr").string()}),
-              environment());
+                           "--width", "64", "--height", "48", "--frames", "0..2", "--rank-timeout",
+                           "2", "-o", (dir_ / "out.#.exr").string()}),
+              environment);
     ASSERT_GT(pid, 0);
-    pid_t victim = 0;
-    for (int waited = 0; victim == 0 && waited < 120000; waited += 10) {
-        victim = rank_process(pid, 2);
-        std::this_thread::sleep_for(std::chrono::milliseconds(10));
-    }
+    ASSERT_TRUE(ranks_hold(3)) << slurp(dir_ / "stderr.txt");  // each in its frame
+    const pid_t victim = rank_process(pid, 2);
     ASSERT_GT(victim, 0);
-    std::this_thread::sleep_for(std::chrono::seconds(1));  // into its frame
-    const auto start = std::chrono::steady_clock::now();
-    kill(victim, SIGSTOP);
-    int status = 0;
-    while (waitpid(pid, &status, WNOHANG) == 0 &&
-           std::chrono::steady_clock::now() - start < std::chrono::seconds(60))
-        std::this_thread::sleep_for(std::chrono::milliseconds(20));
-    const bool ended = waitpid(pid, &status, WNOHANG) != 0 || WIFEXITED(status);
-    if (!ended) {
-        kill(victim, SIGKILL);
-        kill(pid, SIGKILL);
-        waitpid(pid, &status, 0);
-    }
-    EXPECT_TRUE(ended) << "the job did not end in a minute";
+    EXPECT_TRUE(signal_ends_job(pid, victim, SIGSTOP)) << "the job did not end in a minute";
     const std::string err = slurp(dir_ / "stderr.txt");
     EXPECT_NE(err.find("rank 2 ("), std::string::npos) << err;
     EXPECT_NE(err.find("while rendering frame 2"), std::string::npos) << err;
