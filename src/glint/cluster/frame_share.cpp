@@ -122,9 +122,14 @@ public:
         const std::lock_guard lock(mutex_);
         return std::exchange(checkpoint_, std::nullopt);
     }
+    // The frame done; a checkpoint of it not yet taken is dropped, as the frame's end has passed
+    // it.
     std::optional<Done> take_done() {
         const std::lock_guard lock(mutex_);
-        if (done_) busy_ = false;
+        if (done_) {
+            busy_ = false;
+            checkpoint_.reset();
+        }
         return std::exchange(done_, std::nullopt);
     }
     std::exception_ptr error() const {
@@ -231,26 +236,28 @@ bool share_frames_as_root(Transport& transport, const std::vector<int>& frames,
             throw ClusterError("a message came from " + name(r) + " out of turn");
         Holder& holder = held[std::size_t(r)];
         holder.heard = Clock::now();
+        std::uint8_t kind = 0;
+        bool complete = false;
+        std::optional<RenderState> state;
         try {
             ByteReader<> in = reader_of(message);
-            const std::uint8_t kind = in.u8();
+            kind = in.u8();
             if (in.i32() != holder.frame) throw std::runtime_error("news of another frame");
             if (kind == std::uint8_t(Kind::alive)) return;
             if (kind != std::uint8_t(Kind::checkpoint) && kind != std::uint8_t(Kind::done))
                 throw std::runtime_error("a message of an unknown kind");
-            const bool complete = in.u8() != 0;
-            RenderState state = book.fresh_state(holder.frame);
-            read_state(in, state, rendering.tile_size);
+            complete = in.u8() != 0;
+            state.emplace(book.fresh_state(holder.frame));
+            read_state(in, *state, rendering.tile_size);
             if (in.left() != 0) throw std::runtime_error("bytes past its end");
-            if (kind == std::uint8_t(Kind::checkpoint)) {
-                book.checkpoint(holder.frame, state);
-                return;
-            }
-            const int frame = std::exchange(holder.frame, -1);
-            finish(frame, r, state, complete);
         } catch (const std::runtime_error& e) {
             throw ClusterError("a message from " + name(r) + " makes no sense: " + e.what());
         }
+        // Outside the try: a frame that cannot be written is not the rank's fault.
+        if (kind == std::uint8_t(Kind::checkpoint))
+            book.checkpoint(holder.frame, *state);
+        else
+            finish(std::exchange(holder.frame, -1), r, *state, complete);
     };
     const auto check_answers_come = [&] {
         const auto now = Clock::now();
