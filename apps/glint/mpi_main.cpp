@@ -24,7 +24,6 @@
 #include "render_command.h"
 #include "render_setup.h"
 #include "scene_broadcast.h"
-#include "test_hold.h"
 #include "usage_error.h"
 
 #ifndef GLINT_VERSION
@@ -130,14 +129,17 @@ int run_root(const RenderCommand& command, MpiTransport& transport, double rank_
     }
     const int code = run_render(command, backend);
     if (rendered && !command.quiet) {
-        std::printf("  ranks %d: pieces", transport.ranks());
-        for (const int n : stats.pieces) std::printf(" %d", n);
-        if (!frames_by_rank.empty()) {
-            std::printf("; whole frames");
-            for (const int n : frames_by_rank) std::printf(" %d", n);
+        std::printf("  ranks %d:", transport.ranks());
+        // What each rank rendered: pieces of images shared by tiles, frames rendered whole.
+        for (const auto& [what, counts] :
+             {std::pair{" pieces", &stats.pieces}, std::pair{" whole frames", &frames_by_rank}}) {
+            if (counts->empty()) continue;
+            std::printf("%s", what);
+            for (const int n : *counts) std::printf(" %d", n);
+            std::printf(";");
         }
         std::printf(
-            "; scene's files sent (%.1f MB) in %.3f s; films summed %d times in %.3f s; "
+            " scene's files sent (%.1f MB) in %.3f s; films summed %d times in %.3f s; "
             "%.1f MB of messages\n",
             double(share_bytes) / 1e6, share_seconds, stats.sums, stats.sum_seconds,
             double(stats.bytes) / 1e6);
@@ -165,9 +167,6 @@ int run_worker(const RenderCommand& command, MpiTransport& transport, double ran
             if (*frame == kWholeFrames) {
                 FrameRendering rendering =
                     frame_rendering(command, *scene, requested_aovs(command));
-                rendering.hold = [](const RenderProgress& progress) {
-                    return test_hold_from_environment(progress);
-                };
                 rendering.heartbeat = heartbeat_of(rank_timeout);
                 share_frames_as_worker(transport, rendering);
                 continue;

@@ -337,9 +337,6 @@ int render_whole_frames(const RenderCommand& command, const RenderBackend& backe
     plan(frames.begin()->first);  // the scene's warnings, and its errors, before any render
 
     FrameRendering rendering = frame_rendering(command, scene, aovs);
-    rendering.hold = [](const RenderProgress& progress) {
-        return test_hold_from_environment(progress);
-    };
     std::set<int> done, stopped;
     FrameBook book;
     book.fresh_state = [&](int f) { return initial_state(plan(f).settings, plan(f).options); };

@@ -10,6 +10,7 @@
 #include "glint/render/memory_estimate.h"
 #include "glint/scene/animation.h"
 #include "glint/scene/integrator_fit.h"
+#include "test_hold.h"
 #include "usage_error.h"
 
 namespace glint::cli {
@@ -105,6 +106,9 @@ FrameRendering frame_rendering(const RenderCommand& command, const Scene& scene,
     };
     rendering.text = [](const World& world, const RenderOptions& options) {
         return settings_text(world.settings(), options);
+    };
+    rendering.hold = [](const RenderProgress& progress) {
+        return test_hold_from_environment(progress);
     };
     if (command.checkpoint_minutes)
         rendering.checkpoint_every =

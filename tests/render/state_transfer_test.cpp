@@ -11,6 +11,7 @@
 
 #include "common/every_integrator.h"
 #include "glint/render/render.h"
+#include "glint/render/state_sums.h"
 
 namespace glint {
 namespace {
@@ -60,6 +61,26 @@ TEST(StateTransfer, AStateSentHalfwayContinuesToTheUnsentRender) {
         for (std::size_t i = 0; i < whole.aovs.size(); ++i)
             EXPECT_TRUE(testing::same_bits(continued.aovs[i].image, whole.aovs[i].image)) << i;
     }
+}
+
+// A film of more sums than are copied at a time arrives whole, each sum in its place.
+TEST(StateTransfer, ALargeFilmsSumsArriveInTheirPlaces) {
+    Scene scene = testing::load_small("showcase.yaml", 700, 500, 1);
+    scene.settings.filter = FilterSpec{FilterKind::gaussian, 2.0f};
+    const RenderOptions o = testing::small_pieces();
+    RenderState sent = initial_state(scene.settings, o);
+    const std::size_t n = sum_count(sent);
+    ASSERT_GT(n, std::size_t(1) << 20);
+    std::vector<FixedSum> sums(n);
+    for (std::size_t i = 0; i < n; ++i) sums[i] = FixedSum(i) * 3 - 7;
+    write_sums(sent, 0, sums);
+    const std::string bytes = bytes_of(sent, o.tile_size);
+    RenderState received = initial_state(scene.settings, o);
+    ByteReader<> in = reader(bytes);
+    read_state(in, received, o.tile_size);
+    std::vector<FixedSum> back(n);
+    copy_sums(received, 0, back);
+    EXPECT_TRUE(back == sums);
 }
 
 TEST(StateTransfer, BytesOfAnotherRenderAreRefused) {

@@ -335,15 +335,11 @@ void share_frames_as_worker(Transport& transport, const FrameRendering& renderin
                 std::string text = in.text();
                 const bool has_state = in.u8() != 0;
                 FrameRenderer::Load load;
-                if (has_state)
-                    load = [bytes = message->bytes,
+                if (has_state)  // the state is the rest of the message
+                    load = [bytes = message->bytes.substr(message->bytes.size() - in.left()),
                             tile_size = rendering.tile_size](RenderState& state) {
                         ByteReader<> rest(reinterpret_cast<const unsigned char*>(bytes.data()),
                                           bytes.size(), "a message from rank 0 was cut short");
-                        rest.u8();
-                        rest.i32();
-                        rest.text();
-                        rest.u8();
                         read_state(rest, state, tile_size);
                     };
                 renderer.start(frame, std::move(load),

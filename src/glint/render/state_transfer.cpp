@@ -2,6 +2,8 @@
 // films follow from one place; the sums in one run after them.
 #include "glint/render/state_transfer.h"
 
+#include <algorithm>
+#include <span>
 #include <stdexcept>
 #include <vector>
 
@@ -12,6 +14,13 @@
 
 namespace glint {
 
+namespace {
+
+// The sums copied at a time: a film's are as large as the film, and the bytes hold them already.
+constexpr std::size_t kSumPiece = std::size_t(1) << 20;
+
+}  // namespace
+
 void write_state(ByteWriter& out, const RenderState& state, int tile_size) {
     const std::vector<Tile> tiles = make_tiles(state.width, state.height, tile_size);
     out.u32(std::uint32_t(tiles.size()));
@@ -20,10 +29,13 @@ void write_state(ByteWriter& out, const RenderState& state, int tile_size) {
         write_carry(out, take_carry(state, tiles[t], int(t)));
     }
     const std::size_t n = sum_count(state);
-    std::vector<FixedSum> sums(n);
-    copy_sums(state, 0, sums);
     out.u64(n);
-    for (const FixedSum s : sums) out.i128(s);
+    std::vector<FixedSum> piece(std::min(n, kSumPiece));
+    for (std::size_t first = 0; first < n; first += kSumPiece) {
+        const std::span<FixedSum> sums(piece.data(), std::min(kSumPiece, n - first));
+        copy_sums(state, first, sums);
+        for (const FixedSum s : sums) out.i128(s);
+    }
     write_counts(out, state.rays, state.bad_samples);
     out.f64(state.seconds);
 }
@@ -39,9 +51,12 @@ void read_state(ByteReader<>& in, RenderState& state, int tile_size) {
     }
     const std::size_t n = sum_count(state);
     if (in.u64() != n) throw std::runtime_error("a state with films of another size");
-    std::vector<FixedSum> sums(n);
-    for (FixedSum& s : sums) s = in.i128();
-    write_sums(state, 0, sums);
+    std::vector<FixedSum> piece(std::min(n, kSumPiece));
+    for (std::size_t first = 0; first < n; first += kSumPiece) {
+        const std::span<FixedSum> sums(piece.data(), std::min(kSumPiece, n - first));
+        for (FixedSum& s : sums) s = in.i128();
+        write_sums(state, first, sums);
+    }
     read_counts(in, state.rays, state.bad_samples);
     state.seconds = in.f64();
 }
