@@ -66,6 +66,14 @@ TEST(Png, RoundTripIsWithinOneLevelInSrgb) {
     }
 }
 
+TEST(Png, BytesInMemoryAreTheFilesBytes) {
+    const auto dir = testing::fresh_test_dir();
+    const Image image = random_image(41, 17, 5);
+    write_png(dir / "file.png", image);
+    EXPECT_EQ(png_bytes(image), testing::read_file(dir / "file.png"));
+    EXPECT_THROW(png_bytes(Image(0, 3)), ImageError);
+}
+
 TEST(Png, SameImageGivesSameBytesAndReadingBackRewritesThemExactly) {
     const auto dir = testing::fresh_test_dir();
     const Image image = random_image(40, 30, 2);

@@ -72,6 +72,23 @@ TEST(RenderJob, CancelledAndRunAgainItGivesTheUninterruptedImage) {
     EXPECT_EQ(finished.rays.total(), whole.rays.total());
 }
 
+TEST(RenderJob, AStopAskedBeforeTheRunHoldsForIt) {
+    // A page may move the camera before the thread that runs the job has started.
+    const World world(small_scene());
+    RenderJob job(world, small_options());
+    job.cancel();
+    int pieces = 0;
+    const RenderResult cancelled = job.run([&](const WorkPiece&) { ++pieces; });
+    EXPECT_FALSE(cancelled.complete);
+    EXPECT_EQ(pieces, 0);
+    job.stop_after_pass();  // after the first pass, which leaves an image to show
+    EXPECT_FALSE(job.run().complete);
+    EXPECT_EQ(job.state().passes_done(), 1);
+    const RenderResult finished = job.run();  // each stop held for one run only
+    EXPECT_TRUE(finished.complete);
+    EXPECT_EQ(finished.image.pixels, render(world, small_options()).image.pixels);
+}
+
 TEST(RenderJob, ItsImageCanBeReadWhileItRenders) {
     const World world(small_scene());
     RenderJob job(world, small_options());

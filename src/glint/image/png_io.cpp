@@ -49,10 +49,9 @@ struct PngReadStructs {
 };
 
 // Calls setjmp: plain locals only.
-bool encode_png(png_structp png, png_infop info, std::FILE* file, png_uint_32 width,
-                png_uint_32 height, png_bytepp rows) {
+bool encode_png(png_structp png, png_infop info, png_uint_32 width, png_uint_32 height,
+                png_bytepp rows) {
     if (setjmp(png_jmpbuf(png))) return false;
-    png_init_io(png, file);
     png_set_IHDR(png, info, width, height, 8, PNG_COLOR_TYPE_RGB, PNG_INTERLACE_NONE,
                  PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
     png_set_sRGB_gAMA_and_cHRM(png, info, PNG_sRGB_INTENT_PERCEPTUAL);
@@ -64,6 +63,33 @@ bool encode_png(png_structp png, png_infop info, std::FILE* file, png_uint_32 wi
     png_write_image(png, rows);
     png_write_end(png, info);
     return true;
+}
+
+// Where png_bytes() has libpng write: a string, which may fail to grow (no exception may cross
+// libpng's C frames, so it is caught here and looked at afterwards).
+struct MemoryWriter {
+    std::string* out;
+    bool failed = false;
+};
+
+void write_to_memory(png_structp png, png_bytep data, png_size_t count) {
+    auto* writer = static_cast<MemoryWriter*>(png_get_io_ptr(png));
+    if (writer->failed) return;
+    try {
+        writer->out->append(reinterpret_cast<const char*>(data), count);
+    } catch (...) {
+        writer->failed = true;
+    }
+}
+
+void flush_memory(png_structp) {}
+
+// The rows of `bytes` (quantize_srgb8's), for libpng.
+std::vector<png_bytep> rows_of(std::vector<std::uint8_t>& bytes, const Image& image) {
+    std::vector<png_bytep> rows(std::size_t(image.height));
+    for (std::size_t y = 0; y < rows.size(); ++y)
+        rows[y] = bytes.data() + y * std::size_t(image.width) * 3;
+    return rows;
 }
 
 // Calls setjmp: plain locals only. Reads the header and asks libpng to deliver every PNG as
@@ -140,10 +166,7 @@ float decode_srgb16(std::uint16_t value) {
 void write_png(const std::filesystem::path& path, const Image& image) {
     check_image_shape(path, image);
     std::vector<std::uint8_t> bytes = quantize_srgb8(image);
-    std::vector<png_bytep> rows(std::size_t(image.height));
-    for (std::size_t y = 0; y < rows.size(); ++y) {
-        rows[y] = bytes.data() + y * std::size_t(image.width) * 3;
-    }
+    std::vector<png_bytep> rows = rows_of(bytes, image);
 
     UniqueFile file = open_file(path, "wb");
     PngMessage message;
@@ -151,8 +174,9 @@ void write_png(const std::filesystem::path& path, const Image& image) {
     s.png = png_create_write_struct(PNG_LIBPNG_VER_STRING, &message, on_png_error, on_png_warning);
     if (s.png) s.info = png_create_info_struct(s.png);
     if (!s.info) throw ImageError(path, "cannot write PNG: libpng could not start");
+    png_init_io(s.png, file.get());
     errno = 0;
-    if (!encode_png(s.png, s.info, file.get(), png_uint_32(image.width), png_uint_32(image.height),
+    if (!encode_png(s.png, s.info, png_uint_32(image.width), png_uint_32(image.height),
                     rows.data())) {
         // libpng says only "Write Error" when the file system refuses; the system says why.
         const int reason = errno;
@@ -161,6 +185,26 @@ void write_png(const std::filesystem::path& path, const Image& image) {
         throw ImageError(path, std::string("cannot write PNG: ") + message.text);
     }
     close_written_file(std::move(file), path);
+}
+
+std::string png_bytes(const Image& image) {
+    const std::filesystem::path name("(an image in memory)");
+    check_image_shape(name, image);
+    std::vector<std::uint8_t> bytes = quantize_srgb8(image);
+    std::vector<png_bytep> rows = rows_of(bytes, image);
+    std::string out;
+    MemoryWriter writer{&out};
+    PngMessage message;
+    PngWriteStructs s;
+    s.png = png_create_write_struct(PNG_LIBPNG_VER_STRING, &message, on_png_error, on_png_warning);
+    if (s.png) s.info = png_create_info_struct(s.png);
+    if (!s.info) throw ImageError(name, "cannot write PNG: libpng could not start");
+    png_set_write_fn(s.png, &writer, write_to_memory, flush_memory);
+    if (!encode_png(s.png, s.info, png_uint_32(image.width), png_uint_32(image.height),
+                    rows.data()))
+        throw ImageError(name, std::string("cannot write PNG: ") + message.text);
+    if (writer.failed) throw ImageError(name, "cannot write PNG: out of memory");
+    return out;
 }
 
 std::optional<PaletteImage> read_png_palette(std::span<const unsigned char> bytes,

@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <optional>
 #include <span>
+#include <string>
 #include <vector>
 
 #include "glint/image/image.h"
@@ -14,6 +15,9 @@ namespace glint {
 // Writes 8-bit RGB, sRGB-encoded and dithered (see quantize.h), with sRGB, gAMA and cHRM
 // chunks. Writes `path` directly; write_image() goes through a temporary. Throws ImageError.
 void write_png(const std::filesystem::path& path, const Image& image);
+
+// The bytes write_png writes, in memory: for a page that shows the image as it renders.
+std::string png_bytes(const Image& image);
 
 // Reads 1- to 16-bit gray, RGB and palette PNGs, with or without alpha, into linear floats.
 // The samples are taken as sRGB-encoded whatever gAMA or iCCP chunks say, and alpha is

@@ -17,8 +17,6 @@ RenderResult RenderJob::run(std::function<void(const WorkPiece&)> observer) {
 
 RenderResult RenderJob::run(std::span<const WorkPiece> work,
                             std::function<void(const WorkPiece&)> observer) {
-    progress_.stop_after_pass = false;
-    progress_.cancel = false;
     RenderOptions options = options_;
     options.state_mutex = &state_mutex_;
     if (observer) {
@@ -28,8 +26,11 @@ RenderResult RenderJob::run(std::span<const WorkPiece> work,
             observer(WorkPiece{pass, tile});
         };
     }
-    if (engine_) return engine_(world_, options, progress_, state_, work);
-    return render(world_, options, &progress_, &state_, work);
+    RenderResult result = engine_ ? engine_(world_, options, progress_, state_, work)
+                                  : render(world_, options, &progress_, &state_, work);
+    progress_.stop_after_pass = false;
+    progress_.cancel = false;
+    return result;
 }
 
 Image RenderJob::image_so_far() const {

@@ -29,9 +29,11 @@ public:
     // `state` (read from a resume file of this render).
     RenderJob(const World& world, RenderOptions options, std::optional<RenderState> state = {});
 
-    // Renders what is left, until every pass is done or a stop; a stop asked for before the call
-    // is forgotten. Calls `observer` on the render thread that finished each piece, concurrently.
-    // The result's counts and time are the job's totals so far.
+    // Renders what is left, until every pass is done or a stop. A stop asked for before the call
+    // holds for it (a front end may cancel a job whose thread has not started yet); once the
+    // call returns, its stop is forgotten and the next run goes on. Calls `observer` on the render
+    // thread that finished each piece, concurrently. The result's counts and time are the job's
+    // totals so far.
     RenderResult run(std::function<void(const WorkPiece&)> observer = {});
     // Renders the pieces of `work` alone (render() says which lists it takes), likewise.
     RenderResult run(std::span<const WorkPiece> work,
