@@ -249,22 +249,8 @@ Scene parse_yaml_scene(std::string_view text, const std::string& file_name,
     const YamlSource source(text, file_name);
     try {
         return parse_documents(source, sandbox, text);
-    } catch (const SceneError&) {
-        throw;
-    } catch (const YAML::DeepRecursion& e) {
-        // yaml-cpp's own message for this is "bad file".
-        throw source.error_at(
-            e.mark, 1,
-            "invalid YAML: nesting reaches the limit of " + std::to_string(e.depth()) + " levels");
-    } catch (const YAML::ParserException& e) {
-        throw source.error_at(e.mark, 1, "invalid YAML: " + e.msg);
-    } catch (const YAML::Exception& e) {
-        // The accessors above avoid the calls that throw these; this is the safety net.
-        throw source.error_at(e.mark, 1, "cannot read the YAML: " + e.msg);
-    } catch (const std::bad_alloc&) {
-        throw source.error("out of memory while reading the scene");
-    } catch (const std::exception& e) {
-        throw source.error(std::string("cannot read the scene: ") + e.what());
+    } catch (...) {
+        rethrow_as_scene_error(source, "the scene");
     }
 }
 

@@ -1,7 +1,10 @@
 // Locating errors in the YAML text: the line of a mark and the extent of a node's token.
 #include "glint/scene/yaml/yaml_source.h"
 
+#include <yaml-cpp/depthguard.h>
+
 #include <algorithm>
+#include <new>
 #include <optional>
 
 namespace glint {
@@ -98,6 +101,28 @@ SceneError YamlSource::error_at(const YAML::Mark& mark, int span, std::string me
 SceneError YamlSource::error_at(const YAML::Node& node, std::string message,
                                 std::vector<std::string> notes) const {
     return error_at(node.Mark(), span_of(node), std::move(message), std::move(notes));
+}
+
+void rethrow_as_scene_error(const YamlSource& source, const std::string& what) {
+    try {
+        throw;
+    } catch (const SceneError&) {
+        throw;
+    } catch (const YAML::DeepRecursion& e) {
+        // yaml-cpp's own message for this is "bad file".
+        throw source.error_at(
+            e.mark, 1,
+            "invalid YAML: nesting reaches the limit of " + std::to_string(e.depth()) + " levels");
+    } catch (const YAML::ParserException& e) {
+        throw source.error_at(e.mark, 1, "invalid YAML: " + e.msg);
+    } catch (const YAML::Exception& e) {
+        // The readers avoid the calls that throw these; this is the safety net.
+        throw source.error_at(e.mark, 1, "cannot read the YAML: " + e.msg);
+    } catch (const std::bad_alloc&) {
+        throw source.error("out of memory while reading " + what);
+    } catch (const std::exception& e) {
+        throw source.error("cannot read " + what + ": " + e.what());
+    }
 }
 
 }  // namespace glint

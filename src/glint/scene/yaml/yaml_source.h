@@ -51,4 +51,9 @@ private:
     std::vector<std::size_t> line_starts_;
 };
 
+// Inside a catch block: throws the exception in flight again as a SceneError located in the
+// text (yaml-cpp's parse errors at their marks; a SceneError as it is). `what` names what was
+// being read in messages without a place: "out of memory while reading the scene".
+[[noreturn]] void rethrow_as_scene_error(const YamlSource& source, const std::string& what);
+
 }  // namespace glint
