@@ -15,6 +15,8 @@ packages=(
     jupyter-nbconvert python3-ipykernel python3-matplotlib  # the notebooks, run as tests
     povray-includes  # POV-Ray's standard include files, which .pov scenes #include
     libopenmpi-dev openmpi-bin  # glint-mpi, rendering across machines
+    libcpp-httplib-dev  # glint-serve, the page in the browser
+    chromium chromium-driver python3-selenium  # its tests, in a real browser
 )
 [ "${1:-}" = "--bench" ] && packages+=(povray blender)
 

@@ -1,0 +1,300 @@
+// The render thread waits for a change (or a look at the scene's files every tenth of a second),
+// then renders the newest view: a preview at a quarter of the size and one sample a pixel, then
+// the view itself. Each stage first checks that no newer view has come.
+#include "live_render.h"
+
+#include <algorithm>
+#include <stdexcept>
+#include <utility>
+
+#include "glint/image/png_io.h"
+#include "glint/render/explain/explain.h"
+#include "glint/render/explain/ray_tree_formats.h"
+#include "glint/scene/integrator_fit.h"
+#include "glint/scene/scene_error.h"
+
+namespace glint::serve {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+// The preview's size: a quarter across, so a sixteenth of the pixels.
+constexpr int kPreviewShrink = 4;
+
+void apply_settings(const PageSettings& settings, Scene& scene) {
+    apply_setting_overrides(settings.overrides, scene.settings);
+    check_integrator_fits(scene);
+}
+
+}  // namespace
+
+void check_page_settings(const Scene& scene, const PageSettings& settings) {
+    RenderSettings checked = scene.settings;
+    apply_setting_overrides(settings.overrides, checked);
+}
+
+LiveRender::LiveRender(const WatchedScene& scene, RenderSlots& slots, int threads)
+    : scene_(scene), slots_(slots), threads_(threads), thread_([this] { run(); }) {}
+
+LiveRender::~LiveRender() {
+    {
+        const std::lock_guard lock(mutex_);
+        closing_ = true;
+        if (running_) running_->cancel();
+    }
+    changed_.notify_all();
+    slots_.nudge();
+    thread_.join();
+}
+
+int LiveRender::changed() {
+    ++version_;
+    if (running_) running_->cancel();
+    changed_.notify_all();
+    slots_.nudge();
+    return version_;
+}
+
+int LiveRender::set_camera(const CameraSpec& camera) {
+    const std::lock_guard lock(mutex_);
+    camera_ = camera;
+    return changed();
+}
+
+int LiveRender::reset_camera() {
+    const std::lock_guard lock(mutex_);
+    camera_.reset();
+    return changed();
+}
+
+int LiveRender::set_settings(const PageSettings& settings) {
+    const std::lock_guard lock(mutex_);
+    settings_ = settings;
+    return changed();
+}
+
+CameraSpec LiveRender::camera() const {
+    const std::lock_guard lock(mutex_);
+    if (camera_) return *camera_;
+    return scene_.current().scene->camera;
+}
+
+PageSettings LiveRender::settings() const {
+    const std::lock_guard lock(mutex_);
+    return settings_;
+}
+
+Frame LiveRender::latest() const {
+    const std::lock_guard lock(mutex_);
+    return latest_;
+}
+
+Frame LiveRender::frame_after(int sequence, std::chrono::milliseconds timeout) const {
+    std::unique_lock lock(mutex_);
+    published_.wait_for(lock, timeout, [&] { return latest_.sequence > sequence || closing_; });
+    return latest_;
+}
+
+bool LiveRender::stale(int version) const { return closing_ || version != version_; }
+
+void LiveRender::publish(Frame frame) {
+    {
+        const std::lock_guard lock(mutex_);
+        frame.sequence = latest_.sequence + 1;
+        if (!frame.png) {
+            // An error keeps the last image, and what it showed.
+            frame.png = latest_.png;
+            frame.width = latest_.width;
+            frame.height = latest_.height;
+        }
+        latest_ = std::move(frame);
+    }
+    published_.notify_all();
+}
+
+void LiveRender::run() {
+    int rendered = -1;  // the version last rendered
+    int generation = 0;
+    for (;;) {
+        View view;
+        {
+            std::unique_lock lock(mutex_);
+            changed_.wait_for(lock, std::chrono::milliseconds(100),
+                              [&] { return closing_ || version_ != rendered; });
+            if (closing_) return;
+            const WatchedScene::Loaded loaded = scene_.current();
+            if (loaded.generation != generation) {
+                generation = loaded.generation;
+                if (!loaded.error.empty()) {
+                    // The last good image stays, with the error over it.
+                    lock.unlock();
+                    Frame error;
+                    error.version = rendered;
+                    error.error = loaded.error;
+                    publish(std::move(error));
+                    continue;
+                }
+                ++version_;
+            }
+            if (version_ == rendered) continue;
+            view = {version_, loaded.scene, camera_, settings_};
+        }
+        rendered = view.version;
+        try {
+            render_view(view);
+        } catch (const std::exception& e) {
+            Frame error;
+            error.version = view.version;
+            error.error = load_error_text(e);
+            publish(std::move(error));
+        }
+    }
+}
+
+Scene LiveRender::scene_of(const View& view) const {
+    Scene scene = *view.scene;
+    if (view.camera) {
+        CameraSpec camera = *view.camera;
+        camera.lens = scene.camera.lens;
+        camera.shutter_open = scene.camera.shutter_open;
+        camera.shutter_close = scene.camera.shutter_close;
+        camera.left_handed = scene.camera.left_handed;
+        camera.aspect = scene.camera.aspect;
+        scene.camera = std::move(camera);
+    }
+    apply_settings(view.settings, scene);
+    return scene;
+}
+
+void LiveRender::render_view(const View& view) {
+    const auto give_up = [&] {
+        const std::lock_guard lock(mutex_);
+        return stale(view.version);
+    };
+    if (!slots_.acquire(give_up)) return;
+    const SlotHold hold(slots_);
+    Scene scene = scene_of(view);
+    // The preview, unless the view is that small already.
+    const RenderSettings& full = scene.settings;
+    if (full.width >= 2 * kPreviewShrink && full.height >= 2 * kPreviewShrink) {
+        Scene small = scene;
+        SettingOverrides overrides;
+        overrides.width = std::max(1, full.width / kPreviewShrink);
+        overrides.height = std::max(1, full.height / kPreviewShrink);
+        overrides.spp = 1;
+        bool previewable = true;
+        try {
+            apply_setting_overrides(overrides, small.settings);
+        } catch (const SettingsError&) {
+            previewable = false;  // adaptive sampling that needs more samples, say
+        }
+        if (previewable) {
+            if (give_up()) return;
+            const World world(std::move(small), view.settings.accel);
+            if (!run_job(world, view, /*preview=*/true)) return;
+        }
+    }
+    if (give_up()) return;
+    const CameraSpec camera = scene.camera;
+    auto world = std::make_shared<const World>(std::move(scene), view.settings.accel);
+    {
+        const std::lock_guard lock(mutex_);
+        world_ = world;
+        world_camera_ = camera;
+        world_version_ = view.version;
+    }
+    run_job(*world, view, /*preview=*/false);
+}
+
+bool LiveRender::run_job(const World& world, const View& view, bool preview) {
+    std::mutex pass_mutex;
+    std::condition_variable pass_done;
+    int passes_signalled = 0;
+    bool finished = false, complete = false;
+    RenderOptions options;
+    options.threads = threads_;
+    // Up to 16 passes, a sample a pixel or more each, for the page to refine; glint render
+    // takes up to 16 samples in one.
+    options.pass_size = std::max(1, (world.settings().samples_per_pixel + 15) / 16);
+    // On the render's thread between passes: only a note, so that it goes on at once.
+    options.after_pass = [&](const RenderState& state) {
+        const std::lock_guard lock(pass_mutex);
+        passes_signalled = state.passes_done();
+        pass_done.notify_one();
+    };
+    RenderJob job(world, options);
+    {
+        const std::lock_guard lock(mutex_);
+        if (stale(view.version)) return false;
+        running_ = &job;  // a change from now on cancels it, even before it starts
+    }
+    const Clock::time_point start = Clock::now();
+    std::thread runner([&] {
+        bool done = false;
+        try {
+            done = job.run().complete;
+        } catch (...) {
+            done = false;  // only a stop or a lack of memory end a render early
+        }
+        const std::lock_guard lock(pass_mutex);
+        complete = done;
+        finished = true;
+        pass_done.notify_one();
+    });
+    const RenderSettings& settings = world.settings();
+    const int per_pass = pass_size_of(settings, options);
+    const int passes_total = pass_count(settings.samples_per_pixel, per_pass);
+    for (int published = 0;;) {
+        bool last = false;
+        {
+            std::unique_lock lock(pass_mutex);
+            pass_done.wait(lock, [&] { return finished || passes_signalled > published; });
+            last = finished;
+            published = finished ? passes_total : passes_signalled;
+            if (last && !complete) break;
+        }
+        Frame frame;
+        frame.version = view.version;
+        frame.preview = preview;
+        frame.width = settings.width;
+        frame.height = settings.height;
+        frame.passes_done = published;
+        frame.passes_total = passes_total;
+        frame.samples_total = settings.samples_per_pixel;
+        frame.samples_done = std::min(settings.samples_per_pixel, published * per_pass);
+        frame.seconds = std::chrono::duration<double>(Clock::now() - start).count();
+        frame.seconds_left = frame.seconds / published * (passes_total - published);
+        frame.png = std::make_shared<const std::string>(png_bytes(job.image_so_far()));
+        publish(std::move(frame));
+        if (last) break;
+    }
+    runner.join();
+    const std::lock_guard lock(mutex_);
+    running_ = nullptr;
+    return complete;
+}
+
+LiveRender::Explained LiveRender::explain(int x, int y, int sample) const {
+    std::shared_ptr<const World> world;
+    CameraSpec camera;
+    Explained out;
+    {
+        const std::lock_guard lock(mutex_);
+        world = world_;
+        camera = world_camera_;
+        out.version = world_version_;
+    }
+    if (!world) throw std::runtime_error("the view is not built yet");
+    const PixelSample which{x, y, sample, 0};
+    check_explainable(world->settings(), which);
+    const RayTree tree = glint::explain(*world, which);
+    out.tree_json = ray_tree_json(tree);
+    // Missed rays drawn far enough to leave the picture.
+    const float reach = 1e3f * std::max(1.0f, distance(camera.from, camera.at));
+    out.overlay =
+        ray_tree_overlay(tree, camera, world->settings().width, world->settings().height, reach);
+    return out;
+}
+
+}  // namespace glint::serve
