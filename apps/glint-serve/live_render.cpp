@@ -104,6 +104,7 @@ void LiveRender::publish(Frame frame) {
         frame.sequence = latest_.sequence + 1;
         if (!frame.png) {
             // An error keeps the last image, and what it showed.
+            frame.image = latest_.image;
             frame.png = latest_.png;
             frame.width = latest_.width;
             frame.height = latest_.height;
@@ -242,6 +243,19 @@ bool LiveRender::run_job(const World& world, const View& view, bool preview) {
         finished = true;
         pass_done.notify_one();
     });
+    // However this ends (a PNG that cannot be made, say), the job stops and its thread is joined
+    // before the job goes, and no change cancels it after.
+    struct Finish {
+        LiveRender& live;
+        RenderJob& job;
+        std::thread& runner;
+        ~Finish() {
+            job.cancel();
+            runner.join();
+            const std::lock_guard lock(live.mutex_);
+            live.running_ = nullptr;
+        }
+    } finish{*this, job, runner};
     const RenderSettings& settings = world.settings();
     const int per_pass = pass_size_of(settings, options);
     const int passes_total = pass_count(settings.samples_per_pixel, per_pass);
@@ -265,13 +279,11 @@ bool LiveRender::run_job(const World& world, const View& view, bool preview) {
         frame.samples_done = std::min(settings.samples_per_pixel, published * per_pass);
         frame.seconds = std::chrono::duration<double>(Clock::now() - start).count();
         frame.seconds_left = frame.seconds / published * (passes_total - published);
-        frame.png = std::make_shared<const std::string>(png_bytes(job.image_so_far()));
+        frame.image = std::make_shared<const Image>(job.image_so_far());
+        frame.png = std::make_shared<const std::string>(png_bytes(*frame.image));
         publish(std::move(frame));
         if (last) break;
     }
-    runner.join();
-    const std::lock_guard lock(mutex_);
-    running_ = nullptr;
     return complete;
 }
 

@@ -39,7 +39,8 @@ struct Frame {
     int samples_done = 0, samples_total = 0;  // a pixel's
     double seconds = 0;                       // since the view's render started
     double seconds_left = 0;                  // estimated from the passes so far
-    std::shared_ptr<const std::string> png;   // the image so far; the last one for an error
+    std::shared_ptr<const Image> image;       // the image so far, linear; the last for an error
+    std::shared_ptr<const std::string> png;   // the same as a PNG
     // Why the view cannot be rendered (a scene that no longer loads, a setting it cannot take),
     // as glint prints it; the image stays the last good one.
     std::string error;

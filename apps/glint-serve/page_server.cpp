@@ -5,6 +5,7 @@
 
 #include <httplib.h>
 
+#include <cctype>
 #include <charconv>
 #include <chrono>
 #include <cstdio>
@@ -13,6 +14,7 @@
 #include <stdexcept>
 #include <string_view>
 
+#include "glint/image/exr_io.h"
 #include "glint/render/json_string.h"
 #include "glint/render/ray_stats.h"
 #include "glint/scene/camera_text.h"
@@ -118,6 +120,15 @@ int required_whole(const httplib::Request& req, const char* key) {
     const auto value = whole_parameter(req, key);
     if (!value) throw SettingsError(key, std::string(key) + ": missing");
     return *value;
+}
+
+// The scene's name with the format's extension, in letters a header may carry unquoted.
+std::string download_name(const std::filesystem::path& scene, const std::string& extension) {
+    std::string name = scene.stem().string();
+    for (char& c : name)
+        if (!std::isalnum(static_cast<unsigned char>(c)) && c != '-' && c != '_' && c != '.')
+            c = '_';
+    return (name.empty() ? "render" : name) + "." + extension;
 }
 
 bool is_local_host(std::string_view host, int port) {
@@ -277,6 +288,22 @@ void PageServer::add_routes() {
         res.set_header("X-Glint-Sequence", std::to_string(frame.sequence));
         res.set_header("Cache-Control", "no-store");
         res.set_content(*frame.png, "image/png");
+    });
+
+    s.Get("/save", [this](const Request& req, Response& res) {
+        const auto page = page_of(req.get_param_value("session"));
+        if (!page) return answer_error(res, 404, "no such page");
+        const std::string format = req.has_param("format") ? req.get_param_value("format") : "png";
+        if (format != "png" && format != "exr")
+            return answer_error(res, 400, "format: expected png or exr, got \"" + format + "\"");
+        const Frame frame = page->latest();
+        if (!frame.image) return answer_error(res, 404, "no image yet");
+        res.set_header("Content-Disposition",
+                       "attachment; filename=\"" + download_name(scene_.file(), format) + "\"");
+        if (format == "png")
+            res.set_content(*frame.png, "image/png");
+        else
+            res.set_content(exr_bytes(*frame.image), "image/x-exr");
     });
 
     s.Get("/camera.yaml", [this](const Request& req, Response& res) {

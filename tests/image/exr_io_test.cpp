@@ -38,6 +38,19 @@ TEST(Exr, RoundTripIsBitExact) {
     EXPECT_TRUE(same_bits(read_exr(path), image));
 }
 
+TEST(Exr, BytesInMemoryAreTheFilesBytesLayersIncluded) {
+    const auto dir = testing::fresh_test_dir();
+    Image image(33, 9), depth(33, 9);
+    for (std::size_t i = 0; i < image.pixels.size(); ++i) {
+        image.pixels[i] = {float(i) / 7, float(i % 5), -float(i)};
+        depth.pixels[i] = {float(i) * 0.25f, 0, 0};
+    }
+    const ExrLayer layers[] = {{"depth", {"Z"}, &depth}};
+    write_exr(dir / "file.exr", image, layers);
+    EXPECT_EQ(exr_bytes(image, layers), testing::read_file(dir / "file.exr"));
+    EXPECT_THROW(exr_bytes(Image(0, 3)), ImageError);
+}
+
 TEST(Exr, WritesFloatRgbWithZipCompression) {
     const auto path = testing::fresh_test_dir() / "layout.exr";
     write_exr(path, Image(4, 3, Color(1, 2, 3)));

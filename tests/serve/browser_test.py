@@ -65,14 +65,12 @@ def wait_for(condition, timeout=60, what="the page"):
 
 
 def shown_frame(driver):
-    """The frame the page shows, when it is its view's last."""
+    """The frame the page shows, once it is its view's last and its image has loaded."""
     body = driver.find_element(By.TAG_NAME, "body")
-    if body.get_attribute("data-done") != "true":
+    sequence = body.get_attribute("data-sequence")
+    if body.get_attribute("data-done") != "true" or body.get_attribute("data-shown") != sequence:
         return None
-    image = driver.find_element(By.ID, "image")
-    loaded = driver.execute_script(
-        "const i = arguments[0]; return i.complete && i.naturalWidth === 800;", image)
-    return int(body.get_attribute("data-sequence")) if loaded else None
+    return int(sequence)
 
 
 def picture(driver):

@@ -15,6 +15,7 @@
 #include <thread>
 #include <vector>
 
+#include "glint/image/exr_io.h"
 #include "glint/image/png_io.h"
 #include "glint/render/explain/explain.h"
 #include "glint/render/explain/ray_tree_formats.h"
@@ -290,6 +291,16 @@ TEST(PageServer, StreamsAPreviewThenEveryPassToTheRendersImage) {
     EXPECT_EQ(png->status, 200);
     EXPECT_EQ(png->get_header_value("Content-Type"), "image/png");
     EXPECT_TRUE(png->body == png_bytes(rendered(served.scene_file())));
+    // Saved as PNG or, linear, as EXR, named after the scene.
+    const auto saved = c.Get("/save?format=png&session=" + session);
+    ASSERT_TRUE(saved);
+    EXPECT_TRUE(saved->body == png->body);
+    EXPECT_EQ(saved->get_header_value("Content-Disposition"), "attachment; filename=\"scene.png\"");
+    const auto exr = c.Get("/save?format=exr&session=" + session);
+    ASSERT_TRUE(exr);
+    EXPECT_TRUE(exr->body == exr_bytes(rendered(served.scene_file())));
+    EXPECT_EQ(c.Get("/save?format=tiff&session=" + session)->body,
+              "{\"error\": \"format: expected png or exr, got \\\"tiff\\\"\"}\n");
     // The stream ended with the page: its render is gone.
     EXPECT_TRUE(wait_until([&] { return served.server().pages() == 0; }));
 }
@@ -391,6 +402,7 @@ TEST(PageServer, AnUnknownPageIsNotFound) {
     httplib::Client c = served.client();
     EXPECT_EQ(c.Get("/image.png?session=nobody")->status, 404);
     EXPECT_EQ(c.Get("/camera.yaml")->status, 404);
+    EXPECT_EQ(c.Get("/save?session=nobody")->status, 404);
     EXPECT_EQ(c.Post("/camera?session=nobody", "{}", "text/plain")->status, 404);
     EXPECT_EQ(c.Post("/settings?session=nobody&spp=1", "", "text/plain")->status, 404);
     EXPECT_EQ(c.Post("/explain?session=nobody&x=1&y=1", "", "text/plain")->status, 404);

@@ -67,11 +67,19 @@ function showFrame(frame) {
   const left = frame.preview || frame.passes_done === frame.passes_total ?
     "" : `, about ${seconds(frame.seconds_left)} left`;
   $("status").textContent = `${what}, ${seconds(frame.seconds)}${left}`;
+  // An edited scene may have another size; a preview is shown at the full one.
+  if (!frame.preview && (frame.width !== size.width || frame.height !== size.height))
+    setSize(frame.width, frame.height);
   if (frame.image) image.src = url("/image.png", { frame: frame.sequence });
   document.body.dataset.sequence = frame.sequence;
   lastFrame = frame;
   markDone();
 }
+
+// Which frame's image has loaded, for whoever drives the page: the one shown.
+image.addEventListener("load", () => {
+  document.body.dataset.shown = new URL(image.currentSrc).searchParams.get("frame");
+});
 
 function setSize(width, height) {
   size = { width, height };
@@ -103,6 +111,8 @@ events.addEventListener("hello", (e) => {
   setSize(hello.width, hello.height);
   fillSettings(hello.settings, hello.integrators, hello.accels);
   document.body.dataset.session = session;
+  $("save-png").href = url("/save", { format: "png" });
+  $("save-exr").href = url("/save", { format: "exr" });
 });
 events.addEventListener("frame", (e) => showFrame(JSON.parse(e.data)));
 events.onerror = () => { $("status").textContent = "the server is not answering"; };

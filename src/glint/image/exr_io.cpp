@@ -149,10 +149,27 @@ void check_exr_header(const std::filesystem::path& path) {
     }
 }
 
-}  // namespace
+// An EXR file's bytes kept in memory, for a page to download.
+class MemoryStream : public Imf::OStream {
+public:
+    MemoryStream() : Imf::OStream("memory") {}
+    void write(const char c[], int n) override {
+        if (position_ + std::uint64_t(n) > bytes.size()) bytes.resize(position_ + n);
+        std::copy(c, c + n, bytes.begin() + std::ptrdiff_t(position_));
+        position_ += std::uint64_t(n);
+    }
+    std::uint64_t tellp() override { return position_; }
+    void seekp(std::uint64_t position) override { position_ = position; }
 
-void write_exr(const std::filesystem::path& path, const Image& image,
-               std::span<const ExrLayer> layers) {
+    std::string bytes;
+
+private:
+    std::uint64_t position_ = 0;
+};
+
+// Writes the image and its layers into `path`, or into `memory` when it is given.
+void write_exr_into(const std::filesystem::path& path, MemoryStream* memory, const Image& image,
+                    std::span<const ExrLayer> layers) {
     check_image_shape(path, image);
     for (const ExrLayer& layer : layers) {
         if (layer.image->width != image.width || layer.image->height != image.height ||
@@ -175,12 +192,29 @@ void write_exr(const std::filesystem::path& path, const Image& image,
         for (const ExrLayer& layer : layers)
             for (std::size_t c = 0; c < layer.channels.size(); ++c)
                 add(layer.name + "." + layer.channels[c], *layer.image, int(c));
-        Imf::OutputFile file(path.c_str(), header);
-        file.setFrameBuffer(frame);
-        file.writePixels(image.height);
+        std::optional<Imf::OutputFile> file;
+        if (memory)
+            file.emplace(*memory, header);
+        else
+            file.emplace(path.c_str(), header);
+        file->setFrameBuffer(frame);
+        file->writePixels(image.height);
     } catch (const std::exception& e) {
         throw ImageError(path, std::string("cannot write EXR: ") + e.what());
     }
+}
+
+}  // namespace
+
+void write_exr(const std::filesystem::path& path, const Image& image,
+               std::span<const ExrLayer> layers) {
+    write_exr_into(path, nullptr, image, layers);
+}
+
+std::string exr_bytes(const Image& image, std::span<const ExrLayer> layers) {
+    MemoryStream memory;
+    write_exr_into("image.exr", &memory, image, layers);
+    return std::move(memory.bytes);
 }
 
 Image read_exr(const std::filesystem::path& path) {

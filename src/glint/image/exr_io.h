@@ -24,6 +24,9 @@ struct ExrLayer {
 void write_exr(const std::filesystem::path& path, const Image& image,
                std::span<const ExrLayer> layers = {});
 
+// The bytes write_exr writes, in memory: for a page to download.
+std::string exr_bytes(const Image& image, std::span<const ExrLayer> layers = {});
+
 // Reads the R, G and B channels (half, float or uint) of the first part, scanline or tiled, over
 // its data window; a missing channel reads as 0. Errors throw ImageError naming the file.
 Image read_exr(const std::filesystem::path& path);
