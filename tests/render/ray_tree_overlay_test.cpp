@@ -27,7 +27,7 @@ CameraSpec straight_camera() {
 RayTree one_ray(Point3 origin, Vector3 direction, StopReason stop, Point3 hit = {}) {
     RayTree tree;
     RayNode& node = tree.nodes.emplace_back();
-    node.ray = Ray(origin, direction);
+    node.ray = Ray{origin, direction};
     node.stop = stop;
     node.point = hit;
     return tree;
