@@ -8,6 +8,7 @@
 #include <utility>
 
 #include "glint/render/memory_estimate.h"
+#include "glint/render/render_choices.h"
 #include "glint/scene/animation.h"
 #include "glint/scene/integrator_fit.h"
 #include "test_hold.h"
@@ -52,12 +53,8 @@ PreparedRender prepare_render(const RenderCommand& command, Scene scene, const A
             std::fprintf(stderr, "glint: warning: %s\n", warning.c_str());
     apply_image_options(command.image, scene.settings);
     check_integrator_fits(scene);
-    if (const IntegratorKind k = scene.settings.integrator;
-        !aovs.list().empty() && !traces_rays(k)) {
-        const std::string name(integrator_name(k));
-        throw UsageError{"--aov: the output variables follow rays, and the " + name +
-                         " integrator traces " + name + "s"};
-    }
+    if (const auto problem = aovs_problem(aovs, scene.settings.integrator))
+        throw UsageError{"--aov: " + *problem};
     PreparedRender prepared{std::move(scene), {}};
     prepared.options.threads = command.threads;
     prepared.options.seed = command.seed;

@@ -19,6 +19,7 @@
 #include "bindings.h"
 #include "glint/accel/make_aggregate.h"
 #include "glint/render/memory_estimate.h"
+#include "glint/render/render_choices.h"
 #include "glint/render/render_job.h"
 #include "glint/render/world.h"
 #include "glint/scene/integrator_fit.h"
@@ -34,30 +35,10 @@ namespace glint::python {
 namespace {
 
 AovSet aov_set(const std::vector<std::string>& names, IntegratorKind integrator) {
-    AovSet set;
-    if (names.empty()) return set;
+    if (names.empty()) return {};
     std::string list;
     for (const std::string& name : names) list += (list.empty() ? "" : ",") + name;
-    try {
-        set = parse_aov_list(list);
-    } catch (const std::invalid_argument& e) {
-        throw SettingsError("aovs", std::string("aovs: ") + e.what());
-    }
-    if (!traces_rays(integrator)) {
-        const std::string name(integrator_name(integrator));
-        throw SettingsError("aovs", "aovs: the output variables follow rays, and the " + name +
-                                        " integrator traces " + name + "s");
-    }
-    return set;
-}
-
-AccelKind accel_kind(const std::string& name) {
-    if (const auto kind = accel_from_name(name)) return *kind;
-    std::string list;
-    for (const std::string_view n : accel_names())
-        list += (list.empty() ? "" : ", ") + std::string(n);
-    throw SettingsError("accel", "accel: unknown name \"" + name + "\"",
-                        {"accel names are: " + list});
+    return aovs_named(list, integrator);
 }
 
 // Runs the job on a thread of its own; the calling thread, holding the GIL only between waits,
@@ -121,7 +102,7 @@ py::object render(const std::shared_ptr<const Scene>& scene_data, const SettingO
     apply_setting_overrides(overrides, scene.settings);
     check_integrator_fits(scene);
     const AovSet aovs = aov_set(aov_names, scene.settings.integrator);
-    const AccelKind accel = accel_kind(accel_name);
+    const AccelKind accel = accel_named(accel_name);
     const MemoryEstimate need = estimate_render_memory(scene, accel, RenderExtras{.aovs = aovs});
     if (auto refusal = memory_refusal(scene, accel, need, std::nullopt, "max_memory")) {
         PyErr_SetString(PyExc_MemoryError, refusal->c_str());

@@ -111,6 +111,28 @@ TEST(RenderJob, ItsImageCanBeReadWhileItRenders) {
     EXPECT_EQ(job.image_so_far().pixels, result.image.pixels);
 }
 
+TEST(RenderJob, ItsResultSoFarHoldsTheOutputVariablesAsTheRunsDoes) {
+    const World world(small_scene());
+    RenderOptions options = small_options();
+    options.aovs.add(Aov::depth);
+    options.aovs.add(Aov::samples);
+    RenderJob job(world, options);
+    job.stop_after_pass();
+    job.run();
+    const RenderResult half = job.result_so_far();
+    EXPECT_FALSE(half.complete);
+    ASSERT_EQ(half.aovs.size(), 2u);
+    EXPECT_EQ(half.aovs[1].aov, Aov::samples);
+    EXPECT_EQ(half.aovs[1].image.at(20, 12).r, 2.0f);  // one pass of two samples
+    const RenderResult whole = job.run();
+    const RenderResult so_far = job.result_so_far();
+    EXPECT_TRUE(so_far.complete);
+    EXPECT_EQ(so_far.image.pixels, whole.image.pixels);
+    ASSERT_EQ(so_far.aovs.size(), 2u);
+    EXPECT_EQ(so_far.aovs[0].image.pixels, whole.aovs[0].image.pixels);
+    EXPECT_EQ(so_far.aovs[1].image.at(20, 12).r, 4.0f);
+}
+
 }  // namespace
 }  // namespace glint
 

@@ -38,6 +38,13 @@ Image RenderJob::image_so_far() const {
     return resolve_image(state_);
 }
 
+RenderResult RenderJob::result_so_far() const {
+    const std::lock_guard lock(state_mutex_);
+    RenderResult result = render_result(state_, options_);
+    result.complete = done();
+    return result;
+}
+
 bool RenderJob::done() const {
     return state_.passes_done() >=
            pass_count(world_.settings().samples_per_pixel, state_.pass_size);

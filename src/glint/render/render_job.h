@@ -50,6 +50,8 @@ public:
 
     // The image of the samples taken so far: from any thread, at any time.
     Image image_so_far() const;
+    // Likewise the image with its output variables and counts, as run() would return them.
+    RenderResult result_so_far() const;
     // The state, between runs: to save in a resume file, say.
     const RenderState& state() const { return state_; }
     // Whether every pass is done.
