@@ -10,7 +10,9 @@
 #include "glint/image/png_io.h"
 #include "glint/render/explain/explain.h"
 #include "glint/render/explain/ray_tree_formats.h"
+#include "glint/render/render_choices.h"
 #include "glint/scene/integrator_fit.h"
+#include "glint/scene/integrators.h"
 #include "glint/scene/scene_error.h"
 
 namespace glint::serve {
@@ -22,16 +24,14 @@ using Clock = std::chrono::steady_clock;
 // The preview's size: a quarter across, so a sixteenth of the pixels.
 constexpr int kPreviewShrink = 4;
 
-void apply_settings(const PageSettings& settings, Scene& scene) {
-    apply_setting_overrides(settings.overrides, scene.settings);
-    check_integrator_fits(scene);
-}
-
 }  // namespace
 
-void check_page_settings(const Scene& scene, const PageSettings& settings) {
+RenderSettings check_page_settings(const Scene& scene, const PageSettings& settings) {
     RenderSettings checked = scene.settings;
     apply_setting_overrides(settings.overrides, checked);
+    if (const auto problem = aovs_problem(settings.aovs, checked.integrator))
+        throw SettingsError("aovs", "aovs: " + *problem);
+    return checked;
 }
 
 LiveRender::LiveRender(const WatchedScene& scene, RenderSlots& slots, int threads)
@@ -106,6 +106,7 @@ void LiveRender::publish(Frame frame) {
             // An error keeps the last image, and what it showed.
             frame.image = latest_.image;
             frame.png = latest_.png;
+            frame.aovs = latest_.aovs;
             frame.width = latest_.width;
             frame.height = latest_.height;
         }
@@ -139,7 +140,7 @@ void LiveRender::run() {
                 ++version_;
             }
             if (version_ == rendered) continue;
-            view = {version_, loaded.scene, camera_, settings_};
+            view = {version_, loaded.scene, camera_, settings_, loaded.error};
         }
         rendered = view.version;
         try {
@@ -164,7 +165,8 @@ Scene LiveRender::scene_of(const View& view) const {
         camera.aspect = scene.camera.aspect;
         scene.camera = std::move(camera);
     }
-    apply_settings(view.settings, scene);
+    scene.settings = check_page_settings(scene, view.settings);
+    check_integrator_fits(scene);
     return scene;
 }
 
@@ -202,8 +204,8 @@ void LiveRender::render_view(const View& view) {
     {
         const std::lock_guard lock(mutex_);
         world_ = world;
+        world_view_ = view;
         world_camera_ = camera;
-        world_version_ = view.version;
     }
     run_job(*world, view, /*preview=*/false);
 }
@@ -215,6 +217,7 @@ bool LiveRender::run_job(const World& world, const View& view, bool preview) {
     bool finished = false, complete = false;
     RenderOptions options;
     options.threads = threads_;
+    options.aovs = view.settings.aovs;
     // Up to 16 passes, a sample a pixel or more each, for the page to refine; glint render
     // takes up to 16 samples in one.
     options.pass_size = std::max(1, (world.settings().samples_per_pixel + 15) / 16);
@@ -279,25 +282,47 @@ bool LiveRender::run_job(const World& world, const View& view, bool preview) {
         frame.samples_done = std::min(settings.samples_per_pixel, published * per_pass);
         frame.seconds = std::chrono::duration<double>(Clock::now() - start).count();
         frame.seconds_left = frame.seconds / published * (passes_total - published);
-        frame.image = std::make_shared<const Image>(job.image_so_far());
+        RenderResult so_far = job.result_so_far();
+        frame.image = std::make_shared<const Image>(std::move(so_far.image));
+        frame.aovs = std::make_shared<const std::vector<AovImage>>(std::move(so_far.aovs));
         frame.png = std::make_shared<const std::string>(png_bytes(*frame.image));
+        frame.error = view.scene_error;
         publish(std::move(frame));
         if (last) break;
     }
     return complete;
 }
 
-LiveRender::Explained LiveRender::explain(int x, int y, int sample) const {
+LiveRender::Explained LiveRender::explain(int x, int y, int sample, const std::string& integrator) {
     std::shared_ptr<const World> world;
+    View view;
     CameraSpec camera;
-    Explained out;
+    bool built = false;
     {
         const std::lock_guard lock(mutex_);
         world = world_;
+        view = world_view_;
         camera = world_camera_;
-        out.version = world_version_;
+        if (!integrator.empty() && explain_version_ == view.version &&
+            explain_integrator_ == integrator) {
+            world = explain_world_;
+            built = true;
+        }
     }
     if (!world) throw std::runtime_error("the view is not built yet");
+    if (!integrator.empty() && !built &&
+        integrator != integrator_name(world->settings().integrator)) {
+        View other = view;
+        other.settings.overrides.integrator = integrator;
+        other.settings.aovs = {};
+        world = std::make_shared<const World>(scene_of(other), other.settings.accel);
+        const std::lock_guard lock(mutex_);
+        explain_world_ = world;
+        explain_version_ = view.version;
+        explain_integrator_ = integrator;
+    }
+    Explained out;
+    out.version = view.version;
     const PixelSample which{x, y, sample, 0};
     check_explainable(world->settings(), which);
     const RayTree tree = glint::explain(*world, which);

@@ -27,6 +27,7 @@ namespace glint::serve {
 struct PageSettings {
     SettingOverrides overrides;  // integrator, spp and max_depth are the page's
     AccelKind accel = AccelKind::bvh;
+    AovSet aovs;  // the output variables recorded, for the page's views of them
 };
 
 // What the page is told after the preview and after each pass.
@@ -41,8 +42,10 @@ struct Frame {
     double seconds_left = 0;                  // estimated from the passes so far
     std::shared_ptr<const Image> image;       // the image so far, linear; the last for an error
     std::shared_ptr<const std::string> png;   // the same as a PNG
-    // Why the view cannot be rendered (a scene that no longer loads, a setting it cannot take),
-    // as glint prints it; the image stays the last good one.
+    std::shared_ptr<const std::vector<AovImage>> aovs;  // PageSettings::aovs so far
+    // Why the view cannot be rendered (a setting it cannot take), or why the scene's files no
+    // longer load, as glint prints it. A frame of the error alone (no passes) keeps the last
+    // image; while the files stay broken, the last good scene's frames carry it too.
     std::string error;
 };
 
@@ -71,14 +74,15 @@ public:
     Frame frame_after(int sequence, std::chrono::milliseconds timeout) const;
 
     // The ray tree of one sample of the view last rendered, as `glint explain --format json`
-    // writes it, and drawn over the image. Throws SettingsError for a pixel or sample outside
-    // it, and std::runtime_error before the first view is built.
+    // writes it, and drawn over the image: traced by the view's integrator, or by the one
+    // named (in a world of the view built for it). Throws SettingsError for a pixel, sample or
+    // integrator it cannot take, and std::runtime_error before the first view is built.
     struct Explained {
         std::string tree_json;
         std::vector<OverlaySegment> overlay;
         int version = 0;
     };
-    Explained explain(int x, int y, int sample) const;
+    Explained explain(int x, int y, int sample, const std::string& integrator = {});
 
 private:
     struct View {
@@ -86,6 +90,7 @@ private:
         std::shared_ptr<const Scene> scene;
         std::optional<CameraSpec> camera;
         PageSettings settings;
+        std::string scene_error;  // why the scene's files no longer load: `scene` is the last good
     };
     void run();
     void render_view(const View& view);
@@ -109,14 +114,18 @@ private:
     PageSettings settings_;
     RenderJob* running_ = nullptr;  // the job in flight, for a change to cancel
     std::shared_ptr<const World> world_;
-    CameraSpec world_camera_;
-    int world_version_ = 0;
+    View world_view_;
+    CameraSpec world_camera_;  // the world's, as the view made it
+    // A world of world_view_ for another integrator's ray trees, and its integrator.
+    std::shared_ptr<const World> explain_world_;
+    int explain_version_ = -1;
+    std::string explain_integrator_;
     Frame latest_;
     std::thread thread_;
 };
 
-// Throws SettingsError for settings the scene cannot be rendered with, as glint render's
-// options and Python's arguments are checked.
-void check_page_settings(const Scene& scene, const PageSettings& settings);
+// The scene's settings with the page's; throws SettingsError for settings the scene cannot be
+// rendered with, as glint render's options and Python's arguments are checked.
+RenderSettings check_page_settings(const Scene& scene, const PageSettings& settings);
 
 }  // namespace glint::serve

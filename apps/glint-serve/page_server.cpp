@@ -15,8 +15,11 @@
 #include <string_view>
 
 #include "glint/image/exr_io.h"
+#include "glint/image/png_io.h"
+#include "glint/render/film/aov_picture.h"
 #include "glint/render/json_string.h"
 #include "glint/render/ray_stats.h"
+#include "glint/render/render_choices.h"
 #include "glint/scene/camera_text.h"
 #include "glint/scene/integrators.h"
 #include "glint/scene/scene_error.h"
@@ -59,20 +62,6 @@ std::string camera_json(const CameraSpec& c) {
            ", \"yaml\": " + json_string("camera: " + camera_yaml(c)) + "}";
 }
 
-std::string frame_json(const Frame& f) {
-    return "{\"sequence\": " + std::to_string(f.sequence) +
-           ", \"version\": " + std::to_string(f.version) +
-           ", \"preview\": " + (f.preview ? "true" : "false") +
-           ", \"width\": " + std::to_string(f.width) + ", \"height\": " + std::to_string(f.height) +
-           ", \"passes_done\": " + std::to_string(f.passes_done) +
-           ", \"passes_total\": " + std::to_string(f.passes_total) +
-           ", \"samples_done\": " + std::to_string(f.samples_done) +
-           ", \"samples_total\": " + std::to_string(f.samples_total) +
-           ", \"seconds\": " + number(f.seconds) + ", \"seconds_left\": " + number(f.seconds_left) +
-           ", \"image\": " + (f.png ? "true" : "false") +
-           ", \"error\": " + (f.error.empty() ? "null" : json_string(f.error)) + "}";
-}
-
 std::string overlay_json(const std::vector<OverlaySegment>& segments) {
     std::string out = "[";
     for (const OverlaySegment& s : segments) {
@@ -95,13 +84,75 @@ std::string names_json(std::span<const std::string_view> names) {
     return out + "]";
 }
 
-std::string settings_json(const Scene& scene, const PageSettings& page) {
-    RenderSettings s = scene.settings;
-    apply_setting_overrides(page.overrides, s);
+std::vector<std::string_view> aov_names(const AovSet& set) {
+    std::vector<std::string_view> names;
+    for (const Aov aov : set.list()) names.push_back(aov_info(aov).name);
+    return names;
+}
+
+// The output variables of a frame, each a view the page may show beside the image.
+std::vector<std::string_view> recorded_names(const Frame& f) {
+    std::vector<std::string_view> names;
+    if (f.aovs)
+        for (const AovImage& layer : *f.aovs) names.push_back(aov_info(layer.aov).name);
+    return names;
+}
+
+std::string frame_json(const Frame& f) {
+    return "{\"sequence\": " + std::to_string(f.sequence) +
+           ", \"version\": " + std::to_string(f.version) +
+           ", \"preview\": " + (f.preview ? "true" : "false") +
+           ", \"width\": " + std::to_string(f.width) + ", \"height\": " + std::to_string(f.height) +
+           ", \"passes_done\": " + std::to_string(f.passes_done) +
+           ", \"passes_total\": " + std::to_string(f.passes_total) +
+           ", \"samples_done\": " + std::to_string(f.samples_done) +
+           ", \"samples_total\": " + std::to_string(f.samples_total) +
+           ", \"seconds\": " + number(f.seconds) + ", \"seconds_left\": " + number(f.seconds_left) +
+           ", \"image\": " + (f.png ? "true" : "false") +
+           ", \"views\": " + names_json(recorded_names(f)) +
+           ", \"error\": " + (f.error.empty() ? "null" : json_string(f.error)) + "}";
+}
+
+// The page's settings as applied to the scene's (check_page_settings).
+std::string settings_json(const RenderSettings& s, const PageSettings& page) {
     return std::string("{\"integrator\": ") + json_string(integrator_name(s.integrator)) +
            ", \"spp\": " + std::to_string(s.samples_per_pixel) +
            ", \"max_depth\": " + std::to_string(s.max_depth) +
-           ", \"accel\": " + json_string(accel_name(page.accel)) + "}";
+           ", \"accel\": " + json_string(accel_name(page.accel)) +
+           ", \"aovs\": " + names_json(aov_names(page.aovs)) + "}";
+}
+
+std::string camera_answer(int version, const LiveRender& page) {
+    return "{\"version\": " + std::to_string(version) +
+           ", \"camera\": " + camera_json(page.camera()) + "}\n";
+}
+
+// As glint prints it: the message, then its notes.
+std::string settings_error_text(const SettingsError& e) {
+    std::string text = e.what();
+    for (const std::string& note : e.notes()) text += " (" + note + ")";
+    return text;
+}
+
+// The output variable a view shows by its name, nothing for the image itself; throws
+// SettingsError for a name that is neither.
+std::optional<Aov> view_of(const httplib::Request& req) {
+    const std::string name = req.has_param("view") ? req.get_param_value("view") : "image";
+    if (name == "image") return std::nullopt;
+    for (std::size_t a = 0; a < kAovCount; ++a)
+        if (aov_info(Aov(a)).name == name) return Aov(a);
+    throw SettingsError("view",
+                        "view: expected image or an output variable's name, got \"" + name + "\"");
+}
+
+// The picture of a frame's view as a PNG (the image's own for the image), or nothing when the
+// frame's render does not record that variable.
+std::optional<std::string> view_png(const Frame& frame, std::optional<Aov> view) {
+    if (!view) return frame.png ? std::optional(*frame.png) : std::nullopt;
+    if (frame.aovs)
+        for (const AovImage& layer : *frame.aovs)
+            if (layer.aov == *view) return png_bytes(aov_picture(layer));
+    return std::nullopt;
 }
 
 // A whole number parameter, or SettingsError naming it.
@@ -243,10 +294,11 @@ void PageServer::add_routes() {
             ", \"scene\": " + json_string(scene_.file().filename().string()) +
             ", \"width\": " + std::to_string(loaded.scene->settings.width) +
             ", \"height\": " + std::to_string(loaded.scene->settings.height) +
-            ", \"camera\": " + camera_json(page->camera()) +
-            ", \"settings\": " + settings_json(*loaded.scene, page->settings()) +
+            ", \"camera\": " + camera_json(page->camera()) + ", \"settings\": " +
+            settings_json(check_page_settings(*loaded.scene, page->settings()), page->settings()) +
             ", \"integrators\": " + names_json(integrator_names()) +
-            ", \"accels\": " + names_json(accel_names()) + "}\n\n";
+            ", \"accels\": " + names_json(accel_names()) +
+            ", \"views\": " + names_json(aov_names(parse_aov_list("all"))) + "}\n\n";
         auto seen = std::make_shared<int>(0);
         auto greeted = std::make_shared<bool>(false);
         res.set_header("Cache-Control", "no-cache");
@@ -284,10 +336,16 @@ void PageServer::add_routes() {
         const auto page = page_of(req.get_param_value("session"));
         if (!page) return answer_error(res, 404, "no such page");
         const Frame frame = page->latest();
-        if (!frame.png) return answer_error(res, 404, "no image yet");
+        std::optional<std::string> png;
+        try {
+            png = view_png(frame, view_of(req));
+        } catch (const SettingsError& e) {
+            return answer_error(res, 400, e.what());
+        }
+        if (!png) return answer_error(res, 404, "no image of this view yet");
         res.set_header("X-Glint-Sequence", std::to_string(frame.sequence));
         res.set_header("Cache-Control", "no-store");
-        res.set_content(*frame.png, "image/png");
+        res.set_content(std::move(*png), "image/png");
     });
 
     s.Get("/save", [this](const Request& req, Response& res) {
@@ -298,12 +356,32 @@ void PageServer::add_routes() {
             return answer_error(res, 400, "format: expected png or exr, got \"" + format + "\"");
         const Frame frame = page->latest();
         if (!frame.image) return answer_error(res, 404, "no image yet");
-        res.set_header("Content-Disposition",
-                       "attachment; filename=\"" + download_name(scene_.file(), format) + "\"");
-        if (format == "png")
-            res.set_content(*frame.png, "image/png");
-        else
-            res.set_content(exr_bytes(*frame.image), "image/x-exr");
+        std::string bytes;
+        if (format == "png") {
+            // The view shown, its legend included.
+            std::optional<Aov> view;
+            try {
+                view = view_of(req);
+            } catch (const SettingsError& e) {
+                return answer_error(res, 400, e.what());
+            }
+            auto png = view_png(frame, view);
+            if (!png) return answer_error(res, 404, "no image of this view yet");
+            bytes = std::move(*png);
+            const std::string name = view ? std::string(aov_info(*view).name) : "";
+            res.set_header("Content-Disposition",
+                           "attachment; filename=\"" +
+                               download_name(scene_.file(), name.empty() ? "png" : name + ".png") +
+                               "\"");
+        } else {
+            // The image with every output variable recorded, as glint render --aov writes it.
+            const std::vector<ExrLayer> layers =
+                frame.aovs ? aov_exr_layers(*frame.aovs) : std::vector<ExrLayer>{};
+            bytes = exr_bytes(*frame.image, layers);
+            res.set_header("Content-Disposition",
+                           "attachment; filename=\"" + download_name(scene_.file(), "exr") + "\"");
+        }
+        res.set_content(std::move(bytes), format == "png" ? "image/png" : "image/x-exr");
     });
 
     s.Get("/camera.yaml", [this](const Request& req, Response& res) {
@@ -323,18 +401,13 @@ void PageServer::add_routes() {
         } catch (const SceneError& e) {
             return answer_error(res, 400, format_scene_error(e));
         }
-        answer_json(res, 200,
-                    "{\"version\": " + std::to_string(version) +
-                        ", \"camera\": " + camera_json(page->camera()) + "}\n");
+        answer_json(res, 200, camera_answer(version, *page));
     });
 
     s.Post("/camera/reset", [this](const Request& req, Response& res) {
         const auto page = page_of(req.get_param_value("session"));
         if (!page) return answer_error(res, 404, "no such page");
-        const int version = page->reset_camera();
-        answer_json(res, 200,
-                    "{\"version\": " + std::to_string(version) +
-                        ", \"camera\": " + camera_json(page->camera()) + "}\n");
+        answer_json(res, 200, camera_answer(page->reset_camera(), *page));
     });
 
     s.Post("/settings", [this](const Request& req, Response& res) {
@@ -342,47 +415,47 @@ void PageServer::add_routes() {
         if (!page) return answer_error(res, 404, "no such page");
         const WatchedScene::Loaded loaded = scene_.current();
         PageSettings settings = page->settings();
+        RenderSettings applied;
         try {
             if (req.has_param("integrator"))
                 settings.overrides.integrator = req.get_param_value("integrator");
             if (const auto spp = whole_parameter(req, "spp")) settings.overrides.spp = spp;
             if (const auto depth = whole_parameter(req, "max_depth"))
                 settings.overrides.max_depth = depth;
-            if (req.has_param("accel")) {
-                const std::string name = req.get_param_value("accel");
-                const auto accel = accel_from_name(name);
-                if (!accel) {
-                    std::string list;
-                    for (const std::string_view n : accel_names())
-                        list += (list.empty() ? "" : ", ") + std::string(n);
-                    throw SettingsError(
-                        "accel", "accel: unknown name \"" + name + "\"; accel names are: " + list);
-                }
-                settings.accel = *accel;
+            if (req.has_param("accel")) settings.accel = accel_named(req.get_param_value("accel"));
+            if (req.has_param("aovs")) {
+                // Checked against the integrator chosen, which the request may change too.
+                const std::string list = req.get_param_value("aovs");
+                settings.aovs = {};
+                if (!list.empty())
+                    settings.aovs =
+                        aovs_named(list, check_page_settings(*loaded.scene, settings).integrator);
             }
-            check_page_settings(*loaded.scene, settings);
+            applied = check_page_settings(*loaded.scene, settings);
         } catch (const SettingsError& e) {
-            return answer_error(res, 400, e.what());
+            return answer_error(res, 400, settings_error_text(e));
         }
         const int version = page->set_settings(settings);
         answer_json(res, 200,
                     "{\"version\": " + std::to_string(version) +
-                        ", \"settings\": " + settings_json(*loaded.scene, settings) + "}\n");
+                        ", \"settings\": " + settings_json(applied, settings) + "}\n");
     });
 
     s.Post("/explain", [this](const Request& req, Response& res) {
         const auto page = page_of(req.get_param_value("session"));
         if (!page) return answer_error(res, 404, "no such page");
         try {
-            const LiveRender::Explained explained =
-                page->explain(required_whole(req, "x"), required_whole(req, "y"),
-                              whole_parameter(req, "sample").value_or(0));
+            const LiveRender::Explained explained = page->explain(
+                required_whole(req, "x"), required_whole(req, "y"),
+                whole_parameter(req, "sample").value_or(0), req.get_param_value("integrator"));
             answer_json(res, 200,
                         "{\"version\": " + std::to_string(explained.version) +
                             ", \"overlay\": " + overlay_json(explained.overlay) +
                             ", \"tree\": " + explained.tree_json + "}\n");
         } catch (const SettingsError& e) {
-            answer_error(res, 400, e.what());
+            answer_error(res, 400, settings_error_text(e));
+        } catch (const SceneError& e) {
+            answer_error(res, 400, format_scene_error(e));  // an integrator the scene cannot take
         }
     });
 

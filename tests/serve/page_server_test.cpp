@@ -19,6 +19,7 @@
 #include "glint/image/png_io.h"
 #include "glint/render/explain/explain.h"
 #include "glint/render/explain/ray_tree_formats.h"
+#include "glint/render/film/aov_picture.h"
 #include "glint/render/render.h"
 #include "glint/render/world.h"
 #include "glint/scene/load_scene.h"
@@ -395,6 +396,75 @@ TEST(PageServer, AClickedPixelsTreeIsGlintExplainsWithItsSegments) {
     EXPECT_EQ(c.Post("/explain?session=" + session + "&x=1&y=1&sample=4", "", "text/plain")->status,
               400);
     EXPECT_EQ(c.Post("/explain?session=" + session + "&x=1", "", "text/plain")->status, 400);
+    // Traced by another integrator than the render's: that integrator's tree of the sample.
+    const auto path =
+        c.Post("/explain?session=" + session + "&x=32&y=20&integrator=path", "", "text/plain");
+    ASSERT_TRUE(path);
+    ASSERT_EQ(path->status, 200) << path->body;
+    Scene scene = load_scene(served.scene_file());
+    scene.settings.integrator = IntegratorKind::path;
+    const std::string path_tree = ray_tree_json(explain(World(scene), {32, 20, 0, 0}));
+    EXPECT_EQ(path->body.substr(path->body.find("\"tree\": ") + 8, path_tree.size()), path_tree);
+    EXPECT_NE(path_tree, ray_tree_json(explain(world, {32, 20, 0, 0})));
+    const auto unknown =
+        c.Post("/explain?session=" + session + "&x=1&y=1&integrator=raycast", "", "text/plain");
+    EXPECT_EQ(unknown->status, 400);
+    EXPECT_NE(unknown->body.find("integrator"), std::string::npos) << unknown->body;
+    EXPECT_EQ(c.Post("/explain?session=" + session + "&x=1&y=1&integrator=cone", "", "text/plain")
+                  ->status,
+              400);
+}
+
+TEST(PageServer, AViewOfAnOutputVariableShowsItsPictureAndIsSavedWithTheImage) {
+    Served served("views");
+    EventStream stream(served, [](const std::vector<Event>& events) {
+        return !events.empty() && finished_frame(events.back()) &&
+               events.back().data.find("\"views\": [\"depth\"") != std::string::npos;
+    });
+    const std::string session = stream.session();
+    ASSERT_FALSE(session.empty());
+    EXPECT_NE(stream.events()[0].data.find("\"views\": [\"depth\", \"position\""),
+              std::string::npos);
+    httplib::Client c = served.client();
+    const auto post = [&](const std::string& query) {
+        return c.Post("/settings?session=" + session + "&" + query, "", "text/plain");
+    };
+    EXPECT_EQ(post("aovs=depth,colour")->body.rfind("{\"error\": \"aovs: unknown", 0), 0u);
+    const auto all = post("aovs=all");
+    ASSERT_EQ(all->status, 200) << all->body;
+    EXPECT_NE(all->body.find("\"aovs\": [\"depth\", \"position\""), std::string::npos);
+    // The cone integrator traces no rays for the variables to follow: glint render's words.
+    EXPECT_EQ(post("integrator=cone")->body,
+              "{\"error\": \"aovs: the output variables follow rays, and the cone integrator "
+              "traces cones\"}\n");
+    stream.join();
+    RenderOptions options;
+    options.aovs = parse_aov_list("all");
+    const RenderResult expected = render(World(load_scene(served.scene_file())), options);
+    const auto layer = [&](Aov aov) {
+        for (const AovImage& l : expected.aovs)
+            if (l.aov == aov) return l;
+        return AovImage{};
+    };
+    // Each view its picture with its colour map and legend; the image stays the render's.
+    const std::string image_url = "/image.png?session=" + session;
+    EXPECT_TRUE(c.Get(image_url + "&view=depth")->body ==
+                png_bytes(aov_picture(layer(Aov::depth))));
+    EXPECT_TRUE(c.Get(image_url + "&view=image")->body == png_bytes(expected.image));
+    EXPECT_TRUE(c.Get(image_url)->body == png_bytes(expected.image));
+    const auto unknown = c.Get(image_url + "&view=colour");
+    EXPECT_EQ(unknown->status, 400);
+    EXPECT_NE(unknown->body.find("view: expected image or an output variable"), std::string::npos);
+    // Saved: the view as PNG, named after it; the image with every variable as EXR layers.
+    const auto normal = c.Get("/save?format=png&view=normal&session=" + session);
+    EXPECT_TRUE(normal->body == png_bytes(aov_picture(layer(Aov::normal))));
+    EXPECT_EQ(normal->get_header_value("Content-Disposition"),
+              "attachment; filename=\"scene.normal.png\"");
+    const auto exr = c.Get("/save?format=exr&session=" + session);
+    EXPECT_TRUE(exr->body == exr_bytes(expected.image, aov_exr_layers(expected.aovs)));
+    // Back to none recorded: the views are gone with them.
+    ASSERT_EQ(post("aovs=")->status, 200);
+    ASSERT_TRUE(wait_until([&] { return c.Get(image_url + "&view=depth")->status == 404; }));
 }
 
 TEST(PageServer, AnUnknownPageIsNotFound) {
@@ -488,6 +558,22 @@ TEST(PageServer, EditingTheSceneRendersItAgainAndABrokenOneShowsItsError) {
     EXPECT_NE(error.find("camera from and at must differ"), std::string::npos) << error;
     EXPECT_NE(error.find("\\u000a    2 | camera:"), std::string::npos) << error;  // the line
     EXPECT_NE(field(error, "image"), "false");  // the last good image stays
+    // While it stays broken, a camera move renders the last good scene, its error still shown.
+    const auto moved =
+        c.Post("/camera?session=" + session,
+               R"({"from": [1, 1, -5], "at": [0, 0.5, 0], "up": [0, 1, 0]})", "application/json");
+    ASSERT_EQ(moved->status, 200) << moved->body;
+    const int version = std::stoi(field(moved->body, "version"));
+    ASSERT_TRUE(wait_until([&] {
+        for (const Event& e : stream.events())
+            if (e.name == "frame" && std::stoi(field(e.data, "version")) >= version &&
+                field(e.data, "passes_total") != "0" &&
+                field(e.data, "passes_done") == field(e.data, "passes_total"))
+                return field(e.data, "error").find("camera from and at must differ") !=
+                       std::string::npos;
+        return false;
+    }));
+    ASSERT_EQ(c.Post("/camera/reset?session=" + session, "", "text/plain")->status, 200);
     std::this_thread::sleep_for(50ms);
     write_file(served.scene_file(), scene_text("[0.9, 0.9, 0.2]"));
     stream.join();

@@ -9,6 +9,7 @@ const image = $("image"), overlay = $("overlay");
 let session = null;   // this page's render, named by the server
 let camera = null;    // the view, as the server last described it
 let size = { width: 0, height: 0 };  // of the full image
+let view = "image";  // shown: the image, or an output variable's picture with its legend
 
 function url(path, params = {}) {
   const query = new URLSearchParams(params);
@@ -57,9 +58,16 @@ function markDone() {
     f.version >= awaitedVersion && waiting === 0 && !sending;
 }
 
+// The picture of the view chosen, when the frame's render records it; else the image.
+function viewOf(frame) {
+  return view !== "image" && frame.views.includes(view) ? view : "image";
+}
+
 function showFrame(frame) {
+  // A frame of an error alone keeps the last image; while the scene's files stay broken, the
+  // frames of its last good version carry their error too.
   showError(frame.error);
-  if (frame.error) return;
+  if (frame.error && frame.passes_total === 0) return;
   // A new view (the scene edited, say): the drawn tree was another view's.
   if (explainedVersion >= 0 && frame.version > explainedVersion) clearTree();
   const what = frame.preview ? "preview" :
@@ -70,7 +78,7 @@ function showFrame(frame) {
   // An edited scene may have another size; a preview is shown at the full one.
   if (!frame.preview && (frame.width !== size.width || frame.height !== size.height))
     setSize(frame.width, frame.height);
-  if (frame.image) image.src = url("/image.png", { frame: frame.sequence });
+  if (frame.image) image.src = url("/image.png", { frame: frame.sequence, view: viewOf(frame) });
   document.body.dataset.sequence = frame.sequence;
   lastFrame = frame;
   markDone();
@@ -78,13 +86,15 @@ function showFrame(frame) {
 
 // Which frame's image has loaded, for whoever drives the page: the one shown.
 image.addEventListener("load", () => {
-  document.body.dataset.shown = new URL(image.currentSrc).searchParams.get("frame");
+  const params = new URL(image.currentSrc).searchParams;
+  document.body.dataset.shown = params.get("frame");
+  document.body.dataset.shownView = params.get("view");
 });
 
+// The image's size; an output variable's picture is as wide, with its legend below.
 function setSize(width, height) {
   size = { width, height };
   image.style.width = `${width}px`;
-  image.style.height = `${height}px`;
   overlay.setAttribute("width", width);
   overlay.setAttribute("height", height);
   overlay.setAttribute("viewBox", `0 0 ${width} ${height}`);
@@ -110,12 +120,35 @@ events.addEventListener("hello", (e) => {
   document.title = `${hello.scene} · glint`;
   setSize(hello.width, hello.height);
   fillSettings(hello.settings, hello.integrators, hello.accels);
+  $("view-choice").append(...hello.views.map((n) => new Option(n, n)));
+  $("explain-integrator").append(...hello.integrators.map((n) => new Option(n, n)));
   document.body.dataset.session = session;
-  $("save-png").href = url("/save", { format: "png" });
-  $("save-exr").href = url("/save", { format: "exr" });
+  setSaveLinks();
 });
 events.addEventListener("frame", (e) => showFrame(JSON.parse(e.data)));
 events.onerror = () => { $("status").textContent = "the server is not answering"; };
+
+// PNG saves the view shown; EXR the image with every output variable recorded, as layers.
+function setSaveLinks() {
+  $("save-png").href = url("/save", { format: "png", view });
+  $("save-exr").href = url("/save", { format: "exr" });
+}
+
+// A view of an output variable asks the render to record them all, once; then the page
+// switches between them and the image without rendering again.
+$("view-choice").addEventListener("change", async (e) => {
+  view = e.target.value;
+  setSaveLinks();
+  try {
+    if (view !== "image" && lastFrame && !lastFrame.views.includes(view))
+      fillSettings((await post("/settings", { aovs: "all" })).settings);
+    else if (lastFrame && lastFrame.image)
+      image.src = url("/image.png", { frame: lastFrame.sequence, view: viewOf(lastFrame) });
+    showError("");
+  } catch (error) {
+    showError(error.message);
+  }
+});
 
 $("settings").addEventListener("change", async (e) => {
   try {
@@ -335,6 +368,9 @@ function drawTree(answer, x, y) {
   for (let i = rays.length - 1; i >= 0; --i) built[i] = nodeDetails(rays[i], built);
   const tree = answer.tree;
   const draws = tree.draws.map((d) => [`${d.purpose} u`, d.u]);
+  // Where the eye ray leaves the lens, and when: the eye ray's origin and time.
+  if (tree.draws.some((d) => d.purpose === "lens")) draws.push(["lens point", rays[0].origin]);
+  if (tree.draws.some((d) => d.purpose === "time")) draws.push(["time", rays[0].time]);
   const head = terms([["pixel", tree.pixel], ["sample", tree.sample],
     ["integrator", tree.integrator], ["film", tree.film], ...draws,
     ["sample value", tree.sample_value]]);
@@ -344,11 +380,15 @@ function drawTree(answer, x, y) {
 }
 
 async function explainAt(e) {
-  const box = image.getBoundingClientRect();
+  // The overlay covers the image's pixels; a view's legend lies below it.
+  const box = overlay.getBoundingClientRect();
   const x = Math.floor(((e.clientX - box.left) / box.width) * size.width);
   const y = Math.floor(((e.clientY - box.top) / box.height) * size.height);
+  if (x < 0 || y < 0 || x >= size.width || y >= size.height) return;
+  const params = { x, y, sample: $("sample").value };
+  if ($("explain-integrator").value) params.integrator = $("explain-integrator").value;
   try {
-    const answer = await post("/explain", { x, y, sample: $("sample").value });
+    const answer = await post("/explain", params);
     drawTree(answer, x, y);
     explainedVersion = answer.version;
   } catch (error) {
