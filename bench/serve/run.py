@@ -111,6 +111,8 @@ def main():
         moment, _ = page.wait_for(lambda f: f["version"] >= version and not f["preview"] and
                                   f["passes_done"] == f["passes_total"])
         whole_page.append(moment - sent)
+        with page.lock:
+            frames = sum(1 for _, f in page.frames if f["version"] == version)
         start = time.perf_counter()
         subprocess.run([args.glint, "render", args.scene, "-o", "/tmp/glint-serve-bench.png",
                         "--quiet"], check=True)
@@ -123,7 +125,8 @@ def main():
           f"worst {max(first_pictures) * 1e3:.0f} ms over {args.moves} moves")
     page_time, render_time = min(whole_page), min(whole_render)
     print(f"whole render: page {page_time:.2f} s, glint render {render_time:.2f} s "
-          f"(process included), ratio {page_time / render_time:.3f}")
+          f"(process included), ratio {page_time / render_time:.3f}; the page was sent {frames} "
+          f"frames of the last, preview included")
 
 
 if __name__ == "__main__":

@@ -5,6 +5,7 @@
 
 #include <cmath>
 #include <cstdint>
+#include <fstream>
 #include <limits>
 #include <random>
 #include <string>
@@ -72,6 +73,18 @@ TEST(Png, BytesInMemoryAreTheFilesBytes) {
     write_png(dir / "file.png", image);
     EXPECT_EQ(png_bytes(image), testing::read_file(dir / "file.png"));
     EXPECT_THROW(png_bytes(Image(0, 3)), ImageError);
+}
+
+TEST(Png, StoredBytesHoldTheSamePixelsUncompressed) {
+    const auto dir = testing::fresh_test_dir();
+    const Image image = random_image(64, 32, 6);
+    const std::string stored = png_bytes(image, PngDeflate::stored);
+    // Each row's filter byte and three bytes a pixel, in deflate's stored blocks, and the chunks.
+    EXPECT_GT(stored.size(), std::size_t(32 * (1 + 64 * 3)));
+    EXPECT_LT(stored.size(), std::size_t(32 * (1 + 64 * 3)) + 200);
+    std::ofstream(dir / "stored.png", std::ios::binary) << stored;
+    write_png(dir / "fast.png", image);
+    EXPECT_EQ(read_png(dir / "stored.png").pixels, read_png(dir / "fast.png").pixels);
 }
 
 TEST(Png, SameImageGivesSameBytesAndReadingBackRewritesThemExactly) {

@@ -50,7 +50,7 @@ struct PngReadStructs {
 
 // Calls setjmp: plain locals only.
 bool encode_png(png_structp png, png_infop info, png_uint_32 width, png_uint_32 height,
-                png_bytepp rows) {
+                png_bytepp rows, int compression_level = 1) {
     if (setjmp(png_jmpbuf(png))) return false;
     png_set_IHDR(png, info, width, height, 8, PNG_COLOR_TYPE_RGB, PNG_INTERLACE_NONE,
                  PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
@@ -58,7 +58,8 @@ bool encode_png(png_structp png, png_infop info, png_uint_32 width, png_uint_32 
     // Dithered renders compress poorly at any level: zlib's fastest level makes files about 10%
     // larger and writes them several times faster (at the default level, writing a 512x512
     // image took longer than rendering a small scene).
-    png_set_compression_level(png, 1);
+    png_set_compression_level(png, compression_level);
+    if (compression_level == 0) png_set_filter(png, 0, PNG_FILTER_NONE);  // nothing to gain
     png_write_info(png, info);
     png_write_image(png, rows);
     png_write_end(png, info);
@@ -187,7 +188,7 @@ void write_png(const std::filesystem::path& path, const Image& image) {
     close_written_file(std::move(file), path);
 }
 
-std::string png_bytes(const Image& image) {
+std::string png_bytes(const Image& image, PngDeflate deflate) {
     const std::filesystem::path name("(an image in memory)");
     check_image_shape(name, image);
     std::vector<std::uint8_t> bytes = quantize_srgb8(image);
@@ -200,8 +201,8 @@ std::string png_bytes(const Image& image) {
     if (s.png) s.info = png_create_info_struct(s.png);
     if (!s.info) throw ImageError(name, "cannot write PNG: libpng could not start");
     png_set_write_fn(s.png, &writer, write_to_memory, flush_memory);
-    if (!encode_png(s.png, s.info, png_uint_32(image.width), png_uint_32(image.height),
-                    rows.data()))
+    if (!encode_png(s.png, s.info, png_uint_32(image.width), png_uint_32(image.height), rows.data(),
+                    deflate == PngDeflate::stored ? 0 : 1))
         throw ImageError(name, std::string("cannot write PNG: ") + message.text);
     if (writer.failed) throw ImageError(name, "cannot write PNG: out of memory");
     return out;

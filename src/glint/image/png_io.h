@@ -16,8 +16,13 @@ namespace glint {
 // chunks. Writes `path` directly; write_image() goes through a temporary. Throws ImageError.
 void write_png(const std::filesystem::path& path, const Image& image);
 
+// How hard png_bytes compresses: as write_png does (zlib's fastest level), or not at all (the
+// pixels stored as they are, a file several times as large made in a third of the time: for
+// a picture shown once on this machine and thrown away, a page's frame of a render in flight).
+enum class PngDeflate { fast, stored };
+
 // The bytes write_png writes, in memory: for a page that shows the image as it renders.
-std::string png_bytes(const Image& image);
+std::string png_bytes(const Image& image, PngDeflate deflate = PngDeflate::fast);
 
 // Reads 1- to 16-bit gray, RGB and palette PNGs, with or without alpha, into linear floats.
 // The samples are taken as sRGB-encoded whatever gAMA or iCCP chunks say, and alpha is
