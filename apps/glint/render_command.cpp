@@ -37,6 +37,7 @@
 #include "glint/scene/animation.h"
 #include "glint/scene/load_scene.h"
 #include "output_path.h"
+#include "phase_times.h"
 #include "progress.h"
 #include "render_setup.h"
 #include "render_summary.h"
@@ -119,13 +120,14 @@ void write_stats(const std::string& file, const std::string& json) {
 
 // The samples image and the stats a command asks for, of the image `written`.
 void write_extras(const RenderCommand& c, const RenderSettings& s, const RenderResult& result,
-                  const std::string& written) {
+                  const std::string& written, const PhaseTimes& phases) {
     if (!c.samples_image.empty())
         write_samples_image(c.samples_image, result.samples_taken, s.samples_per_pixel);
     if (!c.stats_file.empty()) {
         const int threads = c.threads > 0 ? c.threads : tbb::info::default_concurrency();
-        write_stats(c.stats_file, stats_json({c.scene, written, s.width, s.height,
-                                              s.samples_per_pixel, threads, &result}));
+        write_stats(c.stats_file,
+                    stats_json({c.scene, written, s.width, s.height, s.samples_per_pixel, threads,
+                                &result, phases, process_seconds()}));
     }
 }
 
@@ -179,7 +181,7 @@ std::string continuing(const RenderCommand& c, const std::string& output,
 
 // One image, a still or a frame: the render of `scene` to command.output, its files written.
 int render_image(const RenderCommand& command, const RenderBackend& backend, Scene scene,
-                 const ImageNames& names) {
+                 const ImageNames& names, PhaseTimes phases) {
     const std::string& output = command.output;
     check_outputs(command, output);
     const AovSet aovs = requested_aovs(command);
@@ -190,7 +192,9 @@ int render_image(const RenderCommand& command, const RenderBackend& backend, Sce
     if (!part.whole())
         if (const auto reason = unwritable_reason(part_file)) throw UsageError{*reason};
     check_aov_outputs(output, aovs);
+    const Stopwatch building;
     RenderSetup setup = set_up_render(command, std::move(scene), aovs, true);
+    phases.build = building.seconds();
     const World& world = *setup.world;
     RenderOptions& options = setup.options;
     const std::vector<std::filesystem::path>& files_read = setup.files_read;
@@ -246,6 +250,7 @@ int render_image(const RenderCommand& command, const RenderBackend& backend, Sce
     const std::string written = !result.complete ? partial.string()
                                 : part.whole()   ? output
                                                  : part_file.string();
+    const Stopwatch writing;
     if (result.complete && !part.whole()) {
         write_resume_file(part_file, identity, job.state());
         std::error_code ignored;
@@ -258,7 +263,8 @@ int render_image(const RenderCommand& command, const RenderBackend& backend, Sce
     } else {
         save_progress(partial, resume, identity, job.state(), result.image, command.ppm_ascii);
     }
-    write_extras(command, s, result, written);
+    phases.write = writing.seconds();
+    write_extras(command, s, result, written, phases);
     if (!result.complete && !part.whole()) {
         std::fprintf(stderr,
                      "glint: interrupted: %s of %s was not finished\n"
@@ -311,7 +317,8 @@ RenderCommand frame_command(const RenderCommand& command, int f) {
 // back, as render_image does, and a stop leaves every frame in flight its partial image and
 // resume file. `last` is the sequence's last frame, for the command that continues it.
 int render_whole_frames(const RenderCommand& command, const RenderBackend& backend,
-                        const Scene& scene, const std::map<int, RenderCommand>& frames, int last) {
+                        const Scene& scene, const std::map<int, RenderCommand>& frames, int last,
+                        double load_seconds) {
     const AovSet aovs = requested_aovs(command);
     for (const auto& [f, c] : frames) {
         check_outputs(c, c.output);
@@ -359,6 +366,7 @@ int render_whole_frames(const RenderCommand& command, const RenderBackend& backe
         report_bad_samples(result.bad_samples, c);
         const std::filesystem::path partial = partial_output_path(c.output);
         const std::filesystem::path resume = resume_path(c.output);
+        const Stopwatch writing;
         if (complete) {
             write_image_and_aovs(c.output, result, c.ppm_ascii);
             std::error_code ignored;
@@ -369,7 +377,9 @@ int render_whole_frames(const RenderCommand& command, const RenderBackend& backe
             save_progress(partial, resume, p.identity, state, result.image, c.ppm_ascii);
             stopped.insert(f);
         }
-        write_extras(c, p.settings, result, complete ? c.output : partial.string());
+        // The frame's world was built by the rank that rendered it.
+        PhaseTimes phases{load_seconds, std::nullopt, writing.seconds()};
+        write_extras(c, p.settings, result, complete ? c.output : partial.string(), phases);
         if (complete && !command.quiet)
             print_summary(c.output, p.settings, result,
                           "frame " + std::to_string(f) + ", rank " + std::to_string(rank));
@@ -408,8 +418,9 @@ int render_whole_frames(const RenderCommand& command, const RenderBackend& backe
 // no resume file beside it) is done: the sequence goes on at the frame in flight. A backend that
 // shares frames out whole takes them, but for a last few, fewer than half its ranks, which are
 // rendered one after another, each as a still is.
+// The scene was loaded once for them all, in load_seconds.
 int render_frames(const RenderCommand& command, const RenderBackend& backend, const Scene& scene,
-                  FrameRange frames) {
+                  FrameRange frames, double load_seconds) {
     if (!command.part.empty())
         throw UsageError{
             "--part renders a part of one image: share a sequence out by --frames "
@@ -442,7 +453,8 @@ int render_frames(const RenderCommand& command, const RenderBackend& backend, co
     if (whole > 0) {
         std::map<int, RenderCommand> shared;
         while (shared.size() < whole) shared.insert(todo.extract(todo.begin()));
-        if (const int code = render_whole_frames(command, backend, scene, shared, frames.last);
+        if (const int code =
+                render_whole_frames(command, backend, scene, shared, frames.last, load_seconds);
             code != 0)
             return code;
     }
@@ -452,7 +464,8 @@ int render_frames(const RenderCommand& command, const RenderBackend& backend, co
         const int code =
             render_image(frame, backend, scene_at_frame(scene, f),
                          {continuing(command, command.output, FrameRange{f, frames.last}),
-                          "frame " + std::to_string(f)});
+                          "frame " + std::to_string(f)},
+                         PhaseTimes{load_seconds, {}, {}});
         if (code != 0) return code;
     }
     return 0;
@@ -469,8 +482,10 @@ int run_render(const RenderCommand& command, const RenderBackend& backend) {
                                                                 : command.output);
         requested_aovs(command);
         requested_part(command);
+        const Stopwatch loading;
         Scene scene = backend.load ? backend.load(command)
                                    : load_scene(command.scene, command.reading.load_options());
+        const double load_seconds = loading.seconds();
         RenderCommand image = command;
         if (image.output.empty()) image.output = default_output(command.scene, scene);
         const auto frames = frames_to_render(command.frames, scene, image.output);
@@ -482,9 +497,10 @@ int run_render(const RenderCommand& command, const RenderBackend& backend) {
                              scene.animation->frames);
             if (backend.begin_frame) backend.begin_frame(0);
             return render_image(image, backend, std::move(scene),
-                                {continuing(command, image.output, std::nullopt), ""});
+                                {continuing(command, image.output, std::nullopt), ""},
+                                PhaseTimes{load_seconds, {}, {}});
         }
-        return render_frames(image, backend, scene, *frames);
+        return render_frames(image, backend, scene, *frames, load_seconds);
     });
 }
 

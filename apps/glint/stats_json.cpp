@@ -7,6 +7,18 @@
 
 namespace glint::cli {
 
+namespace {
+
+std::string seconds_or_null(std::optional<double> seconds) {
+    if (!seconds) return "null";
+    std::ostringstream text;
+    text.precision(6);
+    text << *seconds;
+    return text.str();
+}
+
+}  // namespace
+
 std::string stats_json(const RenderReport& report) {
     const RenderResult& r = *report.result;
     const double mrays = r.seconds > 0 ? double(r.rays.total()) / r.seconds / 1e6 : 0;
@@ -32,6 +44,13 @@ std::string stats_json(const RenderReport& report) {
          << "    \"photons_stored\": " << r.rays.photons_stored << ",\n"
          << "    \"shadow_map_lookups\": " << r.rays.shadow_map_lookups << ",\n";
     json << "    \"total\": " << r.rays.total() << "\n"
+         << "  },\n"
+         << "  \"times\": {\n"
+         << "    \"load\": " << seconds_or_null(report.phases.load) << ",\n"
+         << "    \"build\": " << seconds_or_null(report.phases.build) << ",\n"
+         << "    \"render\": " << r.seconds << ",\n"
+         << "    \"write\": " << seconds_or_null(report.phases.write) << ",\n"
+         << "    \"process\": " << report.process_seconds << "\n"
          << "  },\n"
          << "  \"mrays_per_second\": " << mrays << ",\n"
          << "  \"bad_samples\": " << r.bad_samples.count << "\n"

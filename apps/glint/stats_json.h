@@ -5,6 +5,7 @@
 #include <string>
 
 #include "glint/render/render.h"
+#include "phase_times.h"
 
 namespace glint::cli {
 
@@ -13,6 +14,8 @@ struct RenderReport {
     std::string output;
     int width = 0, height = 0, samples_per_pixel = 0, threads = 0;
     const RenderResult* result = nullptr;
+    PhaseTimes phases;           // outside the render
+    double process_seconds = 0;  // since glint started, to the report
 };
 
 std::string stats_json(const RenderReport& report);

@@ -158,6 +158,20 @@ TEST_F(Cli, StatsFileHasTheDocumentedKeys) {
           "\"reflected\"", "\"refracted\"", "\"total\"", "\"mrays_per_second\"",
           "\"bad_samples\": 0", "\"complete\": true"})
         EXPECT_NE(json.find(key), std::string::npos) << key << " missing from\n" << json;
+    // Where the process's time went: each part measured, and all within the process's time.
+    const auto seconds = [&](const std::string& key) {
+        const std::size_t times = json.find("\"times\": {");
+        const std::size_t at = json.find("\"" + key + "\": ", times);
+        EXPECT_NE(at, std::string::npos) << key << " missing from\n" << json;
+        return std::stod(json.substr(at + key.size() + 4));
+    };
+    double parts = 0;
+    for (const char* part : {"load", "build", "render", "write"}) {
+        EXPECT_GE(seconds(part), 0.0) << part;
+        parts += seconds(part);
+    }
+    EXPECT_GT(seconds("render"), 0.0);
+    EXPECT_LE(parts, seconds("process"));
 }
 
 TEST_F(Cli, EveryImageFormatIsWritten) {
