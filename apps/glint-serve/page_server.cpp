@@ -90,6 +90,15 @@ std::vector<std::string_view> aov_names(const AovSet& set) {
     return names;
 }
 
+// The output variables the page can show: all but the samples each pixel took, which the
+// render's threads count as they go, and a frame cannot read (glint render --aov writes them).
+std::vector<std::string_view> view_names() {
+    std::vector<std::string_view> names;
+    for (const Aov aov : parse_aov_list("all").list())
+        if (aov != Aov::samples) names.push_back(aov_info(aov).name);
+    return names;
+}
+
 // The output variables of a frame, each a view the page may show beside the image.
 std::vector<std::string_view> recorded_names(const Frame& f) {
     std::vector<std::string_view> names;
@@ -298,7 +307,7 @@ void PageServer::add_routes() {
             settings_json(check_page_settings(*loaded.scene, page->settings()), page->settings()) +
             ", \"integrators\": " + names_json(integrator_names()) +
             ", \"accels\": " + names_json(accel_names()) +
-            ", \"views\": " + names_json(aov_names(parse_aov_list("all"))) + "}\n\n";
+            ", \"views\": " + names_json(view_names()) + "}\n\n";
         auto seen = std::make_shared<int>(0);
         auto greeted = std::make_shared<bool>(false);
         res.set_header("Cache-Control", "no-cache");

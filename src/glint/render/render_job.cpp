@@ -40,8 +40,11 @@ Image RenderJob::image_so_far() const {
 
 RenderResult RenderJob::result_so_far() const {
     const std::lock_guard lock(state_mutex_);
-    RenderResult result = render_result(state_, options_);
-    result.complete = done();
+    RenderResult result;
+    result.image = resolve_image(state_);
+    result.aovs = state_.aovs.resolve();
+    result.rays = state_.rays;
+    result.bad_samples = state_.bad_samples;
     return result;
 }
 

@@ -50,7 +50,9 @@ public:
 
     // The image of the samples taken so far: from any thread, at any time.
     Image image_so_far() const;
-    // Likewise the image with its output variables and counts, as run() would return them.
+    // Likewise the image with the output variables of films (all but `samples`: each pixel's
+    // count is the render threads' own while it runs) and the rays counted; `complete` is
+    // false (done() tells, between runs).
     RenderResult result_so_far() const;
     // The state, between runs: to save in a resume file, say.
     const RenderState& state() const { return state_; }
