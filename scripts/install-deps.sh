@@ -7,7 +7,7 @@ set -euo pipefail
 packages=(
     build-essential cmake pkg-config clang-format git lld
     clang libclang-rt-14-dev
-    libyaml-cpp-dev libtbb-dev libpng-dev zlib1g-dev libopenexr-dev libstb-dev
+    libyaml-cpp-dev libtbb-dev libpng-dev libdeflate-dev zlib1g-dev libopenexr-dev libstb-dev
     libassimp-dev libembree-dev libpolyclipping-dev libfreetype-dev
     libcli11-dev libgtest-dev libgmock-dev libbenchmark-dev
     graphviz  # the tests render `glint explain --format dot` with it

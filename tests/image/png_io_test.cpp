@@ -87,6 +87,24 @@ TEST(Png, StoredBytesHoldTheSamePixelsUncompressed) {
     EXPECT_EQ(read_png(dir / "stored.png").pixels, read_png(dir / "fast.png").pixels);
 }
 
+// The compressed pixels go in IDAT chunks of at most 1 MiB: an image larger than that is split,
+// and reads back whole.
+TEST(Png, ImageDataOverManyChunksReadsBackWhole) {
+    const auto dir = testing::fresh_test_dir();
+    const Image image = random_image(800, 600, 9);  // 1.4 MB of scanlines, stored
+    const std::string stored = png_bytes(image, PngDeflate::stored);
+    std::size_t chunks = 0;
+    for (std::size_t at = stored.find("IDAT"); at != std::string::npos;
+         at = stored.find("IDAT", at + 4))
+        ++chunks;
+    EXPECT_EQ(chunks, 2u);
+    std::ofstream(dir / "stored.png", std::ios::binary) << stored;
+    write_png(dir / "fast.png", image);
+    const Image back = read_png(dir / "stored.png");
+    EXPECT_EQ(back.width, 800);
+    EXPECT_EQ(back.pixels, read_png(dir / "fast.png").pixels);
+}
+
 TEST(Png, SameImageGivesSameBytesAndReadingBackRewritesThemExactly) {
     const auto dir = testing::fresh_test_dir();
     const Image image = random_image(40, 30, 2);

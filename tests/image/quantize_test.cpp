@@ -2,8 +2,11 @@
 
 #include <gtest/gtest.h>
 
+#include <bit>
 #include <cmath>
+#include <cstdint>
 #include <limits>
+#include <vector>
 
 #include "glint/image/srgb.h"
 
@@ -60,6 +63,43 @@ TEST(ImageQuantize, DitherAveragesToTheTrueValue) {
         }
         EXPECT_NEAR(sum / double(bytes.size()), level, 0.1) << "level " << level;
     }
+}
+
+// The whole-image quantiser reads the sRGB curve from a table and hands the values near a
+// decision's edge to the exact way: its bytes must be quantize_srgb8's, one value at a time. Every
+// 101st float from 0 to 1 (700,000 of them, each octave alike), and the special values.
+TEST(ImageQuantize, AnImageRowGivesTheBytesOfEachValueQuantisedAlone) {
+    std::vector<float> values = {0,
+                                 -0.0f,
+                                 1,
+                                 1.5f,
+                                 -1,
+                                 std::numeric_limits<float>::infinity(),
+                                 std::numeric_limits<float>::quiet_NaN(),
+                                 std::numeric_limits<float>::denorm_min(),
+                                 0.0031308f,
+                                 std::nextafter(0.0031308f, 1.0f),
+                                 std::nextafter(1.0f, 0.0f)};
+    for (std::uint32_t bits = 0; bits <= std::bit_cast<std::uint32_t>(1.0f); bits += 101)
+        values.push_back(std::bit_cast<float>(bits));
+    constexpr int kWidth = 1000;
+    const int height = int(values.size() / kWidth) + 1;
+    Image image(kWidth, height);
+    for (std::size_t i = 0; i < values.size(); ++i) {
+        const float v = values[i];
+        image.pixels[i] = {v, v, v};  // three channels, three dithers
+    }
+    std::vector<std::uint8_t> row(kWidth * 3);
+    for (int y = 0; y < height; ++y) {
+        quantize_srgb8_row(image, y, row.data());
+        for (int x = 0; x < kWidth; ++x) {
+            const float v = image.at(x, y).r;
+            for (int c = 0; c < 3; ++c)
+                ASSERT_EQ(row[3 * x + c], quantize_srgb8(v, x, y, c))
+                    << "value " << v << " at (" << x << ", " << y << ") channel " << c;
+        }
+    }
+    EXPECT_EQ(quantize_srgb8(image).size(), image.pixels.size() * 3);
 }
 
 }  // namespace
