@@ -7,6 +7,7 @@
 #include <png.h>
 #include <tbb/parallel_for.h>
 
+#include <algorithm>
 #include <array>
 #include <bit>
 #include <cerrno>
