@@ -65,7 +65,7 @@ private:
 // this close to a decision's edge is quantised the exact way. The exact way's own float
 // rounding is a few 1e-5 LSB.
 constexpr std::uint32_t kTableError = 8400;
-constexpr std::uint32_t kExactLevelFixed = 16777;  // kExactLevelTolerance in fixed point
+constexpr auto kExactLevelFixed = std::uint32_t(kExactLevelTolerance * (1 << kFractionBits));
 
 const SrgbLevelTable& srgb_level_table() {
     static const SrgbLevelTable table;
