@@ -1,7 +1,9 @@
 // Files are compared by size and modification time: an editor's save changes one or the other,
-// and reading them whole at every look would cost as much as loading the scene.
+// and reading them whole at every look would cost as much as loading the scene. They are stamped
+// before they are read, so that a save while the scene loads is seen at the next look.
 #include "watched_scene.h"
 
+#include <algorithm>
 #include <system_error>
 #include <utility>
 
@@ -11,8 +13,9 @@ namespace glint::serve {
 
 WatchedScene::WatchedScene(std::filesystem::path file, LoadOptions options)
     : file_(std::move(file)), options_(std::move(options)) {
+    const std::vector<Stamp> seen{stamp_of(file_)};
     auto scene = std::make_shared<const Scene>(load_scene(file_, options_));
-    watch(scene.get());
+    watch(scene.get(), seen);
     loaded_.scene = std::move(scene);
 }
 
@@ -31,22 +34,27 @@ WatchedScene::Stamp WatchedScene::stamp_of(const std::filesystem::path& path) {
     return stamp;
 }
 
-void WatchedScene::watch(const Scene* scene) {
+void WatchedScene::watch(const Scene* scene, const std::vector<Stamp>& seen) {
     // A scene that failed to load is watched through its own file and the files the last good
-    // one read: fixing either is a change.
-    std::vector<Stamp> stamps{stamp_of(file_)};
-    if (scene)
-        for (const std::filesystem::path& path : scene->sources.files_read)
-            stamps.push_back(stamp_of(path));
-    else
-        stamps.insert(stamps.end(), stamps_.begin() + (stamps_.empty() ? 0 : 1), stamps_.end());
+    // one read: fixing either is a change. A file read for the first time can only be stamped
+    // after the load that found it.
+    std::vector<Stamp> stamps{seen.front()};
+    if (scene) {
+        for (const std::filesystem::path& path : scene->sources.files_read) {
+            const auto before = std::find_if(seen.begin(), seen.end(),
+                                             [&](const Stamp& s) { return s.path == path; });
+            stamps.push_back(before != seen.end() ? *before : stamp_of(path));
+        }
+    } else {
+        stamps.insert(stamps.end(), seen.begin() + 1, seen.end());
+    }
     stamps_ = std::move(stamps);
 }
 
 bool WatchedScene::reload_if_changed() {
-    bool changed = false;
-    for (const Stamp& stamp : stamps_) changed = changed || stamp_of(stamp.path) != stamp;
-    if (!changed) return false;
+    std::vector<Stamp> seen;
+    for (const Stamp& stamp : stamps_) seen.push_back(stamp_of(stamp.path));
+    if (seen == stamps_) return false;
     std::shared_ptr<const Scene> scene;
     std::string error;
     try {
@@ -54,7 +62,7 @@ bool WatchedScene::reload_if_changed() {
     } catch (const std::exception& e) {
         error = load_error_text(e);
     }
-    watch(scene.get());
+    watch(scene.get(), seen);
     const std::lock_guard lock(mutex_);
     ++loaded_.generation;
     loaded_.error = std::move(error);

@@ -40,7 +40,9 @@ private:
         bool operator==(const Stamp&) const = default;
     };
     static Stamp stamp_of(const std::filesystem::path& path);
-    void watch(const Scene* scene);
+    // Watches what `scene` read (or, when it failed, what was watched), stamped as `seen`
+    // before the load where it can be.
+    void watch(const Scene* scene, const std::vector<Stamp>& seen);
 
     std::filesystem::path file_;
     LoadOptions options_;

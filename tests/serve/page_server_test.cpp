@@ -135,8 +135,20 @@ public:
         });
     }
     ~EventStream() { join(); }
+    // Waits for the stream to end; one that has not ended in two minutes fails the test, with
+    // the last event seen, and is left (its next keep-alive ends it).
     void join() {
-        if (thread_.joinable()) thread_.join();
+        if (!thread_.joinable()) return;
+        const auto end = std::chrono::steady_clock::now() + 120s;
+        while (!done_ && !leave_ && std::chrono::steady_clock::now() < end)
+            std::this_thread::sleep_for(5ms);
+        if (!done_ && !leave_) {
+            const std::vector<Event> seen = events();
+            ADD_FAILURE() << "the event stream did not end; " << seen.size() << " events, the last "
+                          << (seen.empty() ? "none" : seen.back().name + " " + seen.back().data);
+            leave_ = true;
+        }
+        thread_.join();
     }
     void leave() { leave_ = true; }
     std::vector<Event> events() {
