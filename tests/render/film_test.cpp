@@ -94,6 +94,23 @@ TEST(Film, PixelsWithoutSamplesAreBlack) {
     EXPECT_EQ(film.resolve().at(1, 1), Color{});
 }
 
+TEST(Film, APixelWhoseWeightsSumBelowZeroIsStillTheirWeightedMean) {
+    // Mitchell's negative lobes, importance-sampled, weigh samples -1 or +1 (times a constant):
+    // a pixel of few samples may sum to a negative weight. Its value is still the ratio of the
+    // sums, which for one colour is that colour; only a pixel whose weights cancel is black.
+    Film film(2, 1, spec_of(FilterKind::mitchell), /*importance_sampled=*/true);
+    FilmTile tile = film.make_tile({0, 0, 2, 1});
+    tile.add_to_pixel(0, 0, -1.0f, {0.5f, 0.25f, 2});
+    tile.add_to_pixel(0, 0, -1.0f, {0.5f, 0.25f, 2});
+    tile.add_to_pixel(0, 0, 1.0f, {0.5f, 0.25f, 2});
+    tile.add_to_pixel(1, 0, -1.0f, {1, 1, 1});
+    tile.add_to_pixel(1, 0, 1.0f, {3, 3, 3});
+    film.merge(tile);
+    const Image image = film.resolve();
+    EXPECT_EQ(image.at(0, 0), (Color{0.5f, 0.25f, 2}));
+    EXPECT_EQ(image.at(1, 0), Color{});
+}
+
 TEST(Film, TentFilterWeighsNeighboursSamplesByDistance) {
     // Tent of radius 1 over pixel centres 0.5 and 1.5: a sample of 1 at x = 0.75 weighs 0.75
     // for pixel 0 and 0.25 for pixel 1, one of 4 at x = 1.25 the other way round. Pixel 0:

@@ -78,8 +78,12 @@ TEST_P(OneBounce, IsTheDistributedIntegratorsDirectLighting) {
     };
     const auto distributed = block_means(IntegratorKind::distributed);
     const auto path = block_means(IntegratorKind::path);
+    // With the same seed the eye rays and their first hits are the same; paths part after the
+    // first bounce (a light chosen or not changes what Russian roulette keeps), hence the 1%.
     Scene one = directly_lit(IntegratorKind::path);
-    const std::uint64_t picked = render(World(one), {}).rays[RayKind::shadow];
+    RenderOptions first_seed;
+    first_seed.seed = 1;
+    const std::uint64_t picked = render(World(one), first_seed).rays[RayKind::shadow];
     if (GetParam() == NextEventStrategy::all) {
         EXPECT_GT(double(shadow_rays), 2.5 * double(picked));
         EXPECT_LE(shadow_rays, 3 * picked);

@@ -110,8 +110,10 @@ void FilmTile::add_weighted(const SampleFootprint& f, Color c) {
 
 namespace {
 
+// The ratio of the sums, also when the weights sum below zero (a few samples in a filter's
+// negative lobes): only weights that cancel leave nothing to divide by.
 Color resolved(const PixelSum& s) {
-    if (s.weight <= 0) return {};
+    if (s.weight == 0) return {};
     const double w = double(s.weight);
     return {float(double(s.r) / w), float(double(s.g) / w), float(double(s.b) / w)};
 }
@@ -167,8 +169,9 @@ void Film::merge(const FilmTile& tile) {
 Image Film::resolve() const {
     Image image(width_, height_);
     if (one_pixel_) {
+        // As resolved(): importance-sampled filters weigh samples in negative lobes below zero.
         for (std::size_t i = 0; i < box_sums_.size(); ++i)
-            if (const BoxSum& s = box_sums_[i]; s.weight > 0) image.pixels[i] = s.sum / s.weight;
+            if (const BoxSum& s = box_sums_[i]; s.weight != 0) image.pixels[i] = s.sum / s.weight;
         return image;
     }
     for (std::size_t i = 0; i < sums_.size(); ++i) image.pixels[i] = resolved(sums_[i]);
