@@ -78,8 +78,8 @@ TEST_P(OneBounce, IsTheDistributedIntegratorsDirectLighting) {
     };
     const auto distributed = block_means(IntegratorKind::distributed);
     const auto path = block_means(IntegratorKind::path);
-    // With the same seed the eye rays and their first hits are the same; paths part after the
-    // first bounce (a light chosen or not changes what Russian roulette keeps), hence the 1%.
+    // With the same seed the eye rays and their hits are the same: all lights send three shadow
+    // rays where one picked light sends one.
     Scene one = directly_lit(IntegratorKind::path);
     RenderOptions first_seed;
     first_seed.seed = 1;
