@@ -1,6 +1,7 @@
 // Progressive photon mapping: the radius schedule's worked numbers, the photon map's gathering
 // against brute force, the furnace's exact answer, the path tracer's image of a diffuse scene,
-// a caustic, and an image independent of threads and tiles.
+// a caustic, eye rays that follow both parts of glass, and an image independent of threads and
+// tiles.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -146,6 +147,70 @@ TEST(PhotonMapping, ExplainGivesTheRenderedPixelToTheLastBit) {
             EXPECT_EQ(sum / 2.0f, image.at(x, y)) << x << ", " << y;
         }
     EXPECT_GT(gathered, 0);
+}
+
+// A pane that reflects kr and transmits kt (index 1, no Fresnel) facing the eye, an emitting
+// disk of Le 2 behind the eye that it mirrors and one of Le 1 behind it: the eye rays follow
+// both parts, so every sample is kr 2 + kt 1 exactly, where picking one part would give 2 or 1.
+// A part carrying less than 5% of the sample goes on by Russian roulette: kr 0.02 is traced
+// with probability 0.4 and then weighs 0.05, and the pixels' mean is still 0.02 2 + 0.98.
+Scene mirroring_pane(float kr, float kt) {
+    Scene scene;
+    scene.settings.width = 6;
+    scene.settings.height = 4;
+    scene.settings.integrator = IntegratorKind::photon;
+    scene.settings.samples_per_pixel = 64;
+    scene.settings.photons.per_pass = 100;
+    scene.camera.from = {0, 0, -1};
+    scene.camera.at = {0, 0, 0};
+    scene.camera.fov = 20;
+    Material pane, mirrored, behind;
+    pane.ka = pane.kd = 0;
+    pane.reflect = kr;
+    pane.transmit = kt;
+    mirrored.ka = mirrored.kd = behind.ka = behind.kd = 0;
+    mirrored.emission = Color::gray(2);
+    behind.emission = Color::gray(1);
+    scene.materials = {pane, mirrored, behind};
+    scene.objects.push_back({Plane{{0, 0, 0}, {0, 0, -1}}, 0});
+    scene.objects.push_back({Disk{{0, 0, -5}, {0, 0, 1}, 100}, 1});
+    scene.objects.push_back({Disk{{0, 0, 5}, {0, 0, -1}, 100}, 2});
+    return scene;
+}
+
+TEST(PhotonMapping, EyeRaysFollowBothPartsOfGlassAndRouletteOnlyTheLightOnes) {
+    const Image both = render(World(mirroring_pane(0.3f, 0.7f)), RenderOptions{}).image;
+    for (const Color& c : both.pixels) EXPECT_NEAR(c.r, 0.3f * 2 + 0.7f, 1e-5f);
+
+    const World light(mirroring_pane(0.02f, 0.98f));
+    const Image image = render(light, RenderOptions{}).image;
+    double mean = 0;
+    for (const Color& c : image.pixels) mean += c.r / double(image.pixels.size());
+    // Each sample is 0.98 + 0.1 with probability 0.4: its standard deviation is 0.049, and
+    // 24 x 64 samples make the mean's 0.00125.
+    EXPECT_NEAR(mean, 0.02 * 2 + 0.98, 5 * 0.00125);
+    // explain tells it: the reflected branch has k 0.02 and survival 0.4, traced with its
+    // colour times 0.05 or ended by Russian roulette.
+    int traced = 0;
+    for (int s = 0; s < 64; ++s) {
+        const RayTree tree = explain(light, {2, 2, s, 0});
+        ASSERT_EQ(tree.nodes[0].branches.size(), 2u);
+        const BranchRecord& mirror = tree.nodes[0].branches[0];
+        EXPECT_EQ(mirror.kind, RayKind::reflected);
+        EXPECT_NEAR(mirror.k, 0.02f, 1e-7f);
+        EXPECT_NEAR(mirror.survival, 0.4f, 1e-6f);
+        if (mirror.child >= 0) {
+            ++traced;
+            EXPECT_NEAR(mirror.factor.r, 0.05f, 1e-6f);
+        } else {
+            EXPECT_EQ(mirror.stop, StopReason::roulette);
+        }
+        EXPECT_EQ(tree.nodes[0].branches[1].survival, 1);
+        EXPECT_GE(tree.nodes[0].branches[1].child, 0);
+    }
+    // 64 draws of probability 0.4: 25.6 on average, standard deviation 3.9.
+    EXPECT_GT(traced, 10);
+    EXPECT_LT(traced, 42);
 }
 
 TEST(PhotonMapping, TheImageDoesNotDependOnThreadsOrTiles) {

@@ -107,6 +107,44 @@ TEST(Bsdf, ClearGlassRefractsBySnellAndCompressesRadiance) {
     EXPECT_NEAR(importance->weight.r, 1, 1e-6f);
 }
 
+// Glass of 1.5 with Fresnel and a mirror coat kr 0.2, kt 0.8, wo 40 degrees from the normal:
+// cos_t = sqrt(1 - sin^2(40) / 2.25) = 0.90353, rs = -0.27777, rp = 0.11962, F = 0.045734.
+// The parts whole: the mirror 0.2 + 0.8 F = 0.23659 of it, the refraction 0.8 (1 - F) = 0.76341,
+// compressed by 1 / 2.25 for radiance; sample() weighs the part it picks as much on average.
+TEST(Bsdf, EachDeltaPartWholeWeighsWhatItScatters) {
+    BsdfInputs in = inputs();
+    in.reflect = 0.2f;
+    in.transmit = 0.8f;
+    in.n1 = 1;
+    in.n2 = 1.5f;
+    in.fresnel = true;
+    const Bsdf bsdf(in);
+    const auto mirror = bsdf.delta_part(BsdfLobe::reflect);
+    const auto refracted = bsdf.delta_part(BsdfLobe::transmit);
+    ASSERT_TRUE(mirror && refracted);
+    EXPECT_FALSE(mirror->transmitted);
+    EXPECT_TRUE(refracted->transmitted && refracted->delta && mirror->delta);
+    EXPECT_EQ(mirror->pdf, 1);
+    EXPECT_NEAR(mirror->weight.r, 0.23659f, 2e-5f);
+    EXPECT_NEAR(refracted->weight.r, 0.76341f / 2.25f, 2e-5f);
+    EXPECT_NEAR(mirror->wi.x, -kWo.x, 1e-6f);
+    EXPECT_NEAR(mirror->wi.z, kWo.z, 1e-6f);
+    for (const float u : {0.1f, 0.9f}) {
+        const auto s = bsdf.sample(u, {0.5f, 0.5f});
+        ASSERT_TRUE(s && s->delta);
+        const auto& whole = s->transmitted ? refracted : mirror;
+        EXPECT_NEAR(s->weight.r * s->pdf, whole->weight.r, 1e-6f);
+        EXPECT_EQ(s->wi.x, whole->wi.x);
+        EXPECT_EQ(s->wi.z, whole->wi.z);
+    }
+    // Parts that are not delta, or absent, are not given.
+    EXPECT_FALSE(bsdf.delta_part(BsdfLobe::diffuse));
+    in.roughness = 0.3f;
+    in.transmit = 0;
+    EXPECT_FALSE(Bsdf(in).delta_part(BsdfLobe::reflect));
+    EXPECT_FALSE(Bsdf(in).delta_part(BsdfLobe::transmit));
+}
+
 TEST(Bsdf, TheTransmitFilterColoursWhatRefractsAndNothingElse) {
     // Clear and frosted glass with filter (1, 0.5, 0.25), index 1 on both sides: the delta
     // sample weighs the filter, the frosted lobe's f is the filter times the clear one's, and

@@ -177,4 +177,22 @@ std::optional<BsdfSample> Bsdf::sample(float u_lobe, Point2 u) const {
     return s;
 }
 
+std::optional<BsdfSample> Bsdf::delta_part(BsdfLobe lobe) const {
+    const bool transmitted = lobe == BsdfLobe::transmit;
+    if (!transmitted && lobe != BsdfLobe::reflect) return std::nullopt;
+    if (!(pick_[int(lobe)] > 0) || !(transmitted ? transmit_delta_ : reflect_delta_))
+        return std::nullopt;
+    BsdfSample s;
+    s.lobe = lobe;
+    s.wi = transmitted ? refracted_ : mirror_;
+    s.transmitted = transmitted;
+    if (reflects(s.wi) == transmitted) return std::nullopt;
+    s.delta = true;
+    s.pdf = 1;
+    const float w = transmitted ? transmit_ * compression_ : reflect_;
+    s.weight = Color::gray(w * adjoint_factor(s.wi));
+    s.weight *= transmitted ? in_.transmit_filter : reflect_color_;
+    return s;
+}
+
 }  // namespace glint

@@ -70,6 +70,10 @@ public:
     // A direction drawn from u_lobe (which part) and u (where in it); nothing when the part
     // drawn sends it through the surface the wrong way or the BSDF scatters nothing.
     std::optional<BsdfSample> sample(float u_lobe, Point2 u) const;
+    // The delta part `lobe` (reflect or transmit) whole, not picked: pdf 1 and the weight it
+    // scatters, for an integrator that follows every delta part (a ray tree) rather than one;
+    // nothing when that part is not delta, scatters nothing or leaves by the wrong side.
+    std::optional<BsdfSample> delta_part(BsdfLobe lobe) const;
 
     // Whether any part is not delta: next-event estimation can reach it.
     bool has_smooth_part() const;

@@ -78,7 +78,8 @@ struct BranchRecord {
     Color factor;                        // what the child's colour is multiplied by (k, dispersed)
     std::optional<Point2> lobe_u;        // the numbers that spread it over a glossy lobe
     StopReason stop = StopReason::none;  // none: traced
-    int child = -1;                      // index of the traced ray's node
+    float survival = 1;  // Russian roulette's probability of tracing it (the photon integrator)
+    int child = -1;      // index of the traced ray's node
 };
 
 // What the path tracer did at one surface point: the emission it counted and how it weighed

@@ -196,10 +196,12 @@ private:
             line(in, "dispersion: the refracted ray takes wavelength " + read(*n.wavelength) +
                          " nm (drawn from " + read(*n.wavelength_u) + ")");
         for (const BranchRecord& b : n.branches) {
-            if (n.path) break;  // the path's one scattered ray is told above
+            if (n.path && n.path->scattered) break;  // the path's one ray is told above
             std::string text = std::string(kind_name(b.kind)) +
                                (b.kind == RayKind::reflected ? ": kr = " : ": kt = ") + read(b.k);
             if (b.lobe_u) text += ", lobe drawn from " + read(*b.lobe_u);
+            if (b.survival < 1)
+                text += ", Russian roulette traces it with probability " + read(b.survival);
             if (b.stop == StopReason::none) {
                 text += ", traced";
                 if (b.factor != Color::gray(b.k)) text += ", its colour times " + read(b.factor);
@@ -392,6 +394,7 @@ std::string branch_json(const BranchRecord& b) {
         .add("factor", exact(b.factor));
     f.add("lobe_u", b.lobe_u ? exact(*b.lobe_u) : "null");
     f.add("stop", b.stop == StopReason::none ? "null" : json_string(stop_reason_name(b.stop)));
+    f.add("survival", exact(b.survival));
     return f.add("child", b.child >= 0 ? std::to_string(b.child) : "null").object();
 }
 

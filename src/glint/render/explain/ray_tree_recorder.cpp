@@ -211,6 +211,13 @@ void RayTreeRecorder::branch(RayKind kind, Color factor, std::optional<Point2> l
     next_ = kind;
 }
 
+void RayTreeRecorder::delta_part(RayKind kind, float k, float survival, bool traced) {
+    BranchRecord& b = branch_of(kind);
+    b.k = k;
+    b.survival = survival;
+    if (!traced) b.stop = StopReason::roulette;
+}
+
 void RayTreeRecorder::blocked(RayKind kind, Point2 lobe_u) {
     BranchRecord& b = branch_of(kind);
     b.stop = StopReason::blocked_by_surface;

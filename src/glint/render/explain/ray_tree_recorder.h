@@ -40,6 +40,7 @@ public:
     void branches(const SurfaceContext& c, const Branches& b, const MediumStack& media,
                   float wavelength, Vector3 incident, float weight) override;
     void branch(RayKind kind, Color factor, std::optional<Point2> lobe_u) override;
+    void delta_part(RayKind kind, float k, float survival, bool traced) override;
     void blocked(RayKind kind, Point2 lobe_u) override;
     void path_vertex(const SurfaceContext& c, const PathVertexRecord& record) override;
 

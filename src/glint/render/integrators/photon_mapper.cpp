@@ -28,6 +28,9 @@ constexpr std::uint64_t kPhotonSeed = 0x70686f746f6e73ull;
 // Photons on a surface turned more than about 25 degrees from the one gathering belong to
 // another surface (a corner's other wall): left out.
 constexpr float kSameSurface = 0.9f;
+// An eye ray's branch at a mirror or clear glass that carries less of its sample than this goes
+// on by Russian roulette, with this weight when it does.
+constexpr float kSplitWeight = 0.05f;
 
 struct PhotonNumbers {
     std::uint64_t photon, sample, seed;
@@ -158,16 +161,16 @@ Color PhotonIntegrator::trace_eye_ray(const Ray& ray, const RayDifferential* pen
                                       SampleStream& stream, RayStats& stats) {
     stats.count(RayKind::primary);
     if (recorder_) [[unlikely]]
-        return eye_ray<true>(ray, 1, world_.eye_media(), stream, pencil, stats);
-    return eye_ray<false>(ray, 1, world_.eye_media(), stream, pencil, stats);
+        return eye_ray<true>(ray, 1, world_.eye_media(), Color{1, 1, 1}, stream, pencil, stats);
+    return eye_ray<false>(ray, 1, world_.eye_media(), Color{1, 1, 1}, stream, pencil, stats);
 }
 
 template <bool kRecord>
 Color PhotonIntegrator::eye_ray(const Ray& ray, int depth, const MediumStack& media,
-                                SampleStream& stream, const RayDifferential* pencil,
-                                RayStats& stats) {
+                                Color throughput, SampleStream& stream,
+                                const RayDifferential* pencil, RayStats& stats) {
     const RenderSettings& settings = world_.settings();
-    if constexpr (kRecord) recorder_->begin_ray(ray, depth, 1);
+    if constexpr (kRecord) recorder_->begin_ray(ray, depth, max_channel(throughput));
     const auto hit = world_.intersect(ray, {0, kInfinity}, kVisibleToCameraRays);
     // Inside an object that fades, all the ray brings back fades on its way.
     const std::optional<FogEffect> fade = interior_fade(media, hit ? hit->shape_hit.t : kInfinity);
@@ -220,37 +223,39 @@ Color PhotonIntegrator::eye_ray(const Ray& ray, int depth, const MediumStack& me
         record.gather_radius = shared_.map ? shared_.map->radius() : 0;
         record.photon_term = photons;
     }
-    // The delta parts are followed, one picked with its probability.
-    const float u_lobe = stream.next_1d();
-    const Point2 u = stream.next_2d();
-    const std::optional<BsdfSample> s = bsdf.sample(u_lobe, u);
-    if (!s || !s->delta) return end(StopReason::none);
-    if constexpr (kRecord) {
-        record.scattered = true;
-        record.lobe = s->transmitted ? "transmit" : "reflect";
-        record.wi = s->wi;
-        record.scatter_pdf = s->pdf;
-        record.delta = true;
-        record.weight = s->weight;
+    // The delta parts are followed each whole, a ray tree as Whitted's, while a branch carries at
+    // least kSplitWeight of the sample; a lighter one goes on by Russian roulette. Picking one
+    // part by its share would leave light that only a rare pick reaches (a lamp seen in glass's
+    // 4% reflection) as single bright pixels.
+    if constexpr (kRecord) recorder_->path_vertex(c, record);
+    Color beyond_color;
+    for (const BsdfLobe lobe : {BsdfLobe::reflect, BsdfLobe::transmit}) {
+        const std::optional<BsdfSample> s = bsdf.delta_part(lobe);
+        if (!s) continue;
+        const RayKind kind = s->transmitted ? RayKind::refracted : RayKind::reflected;
+        Color factor = s->transmitted ? s->weight * spectral_weight : s->weight;
+        const float carried = max_channel(throughput * factor);
+        const float survival = carried < kSplitWeight ? carried / kSplitWeight : 1;
+        const bool traced = survival >= 1 || stream.next_1d() < survival;
+        if constexpr (kRecord)
+            recorder_->delta_part(kind, max_channel(s->weight), survival, traced);
+        if (!traced) continue;
+        if (survival < 1) factor = factor / survival;
+        stats.count(kind);
+        Ray next = world_.spawn_ray(c.sp.p, c.ng, s->wi, c.sp.error, ray.time);
+        next.wavelength = s->transmitted ? wavelength : ray.wavelength;
+        MediumStack beyond = media;
+        if (s->transmitted)
+            beyond = c.entering ? media.entered(c.primitive, &m, ior_at(m, wavelength))
+                                : media.left(c.primitive, &m);
+        if constexpr (kRecord) recorder_->branch(kind, factor, std::nullopt);
+        const auto next_pencil = s->transmitted
+                                     ? refraction_pencil(c, ray, pencil, eta.n1 / eta.n2, s->wi)
+                                     : mirror_pencil(c, ray, pencil);
+        beyond_color += factor * eye_ray<kRecord>(next, depth + 1, beyond, throughput * factor,
+                                                  stream, or_null(next_pencil), stats);
     }
-    const RayKind kind = s->transmitted ? RayKind::refracted : RayKind::reflected;
-    stats.count(kind);
-    Ray next = world_.spawn_ray(c.sp.p, c.ng, s->wi, c.sp.error, ray.time);
-    next.wavelength = s->transmitted ? wavelength : ray.wavelength;
-    const Color factor = s->transmitted ? s->weight * spectral_weight : s->weight;
-    MediumStack beyond = media;
-    if (s->transmitted)
-        beyond = c.entering ? media.entered(c.primitive, &m, ior_at(m, wavelength))
-                            : media.left(c.primitive, &m);
-    if constexpr (kRecord) {
-        recorder_->path_vertex(c, record);
-        recorder_->branch(kind, factor, std::nullopt);
-    }
-    const auto next_pencil = s->transmitted
-                                 ? refraction_pencil(c, ray, pencil, eta.n1 / eta.n2, s->wi)
-                                 : mirror_pencil(c, ray, pencil);
-    color = through(fade, color + factor * eye_ray<kRecord>(next, depth + 1, beyond, stream,
-                                                            or_null(next_pencil), stats));
+    color = through(fade, color + beyond_color);
     if constexpr (kRecord) recorder_->end_ray(color);
     return color;
 }

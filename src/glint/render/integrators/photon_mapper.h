@@ -2,8 +2,9 @@
 // pass, photons leave the emitters (picked by power) and scatter through the scene by the
 // adjoint BSDFs; each comes to rest in the pass's photon map at every surface that is not delta,
 // but at the first surface a light reaches directly (that light comes by next-event estimation).
-// The eye rays follow mirrors and clear glass to the first surface that is not, take the lights
-// there by next-event estimation, and the rest from the photons within a radius:
+// The eye rays follow mirrors and clear glass (both parts of glass, a ray tree) to the surfaces
+// that are not, take the lights there by next-event estimation, and the rest from the photons
+// within a radius:
 //   L = sum over photons within r of f(wo, wi_p) power_p / (pi r^2 photons emitted).
 // The radius shrinks pass by pass as r_{i+1}^2 = r_i^2 (i + alpha) / (i + 1): each pass's image
 // is biased by the blur of its radius, and their mean converges to the path tracer's image.
@@ -55,8 +56,9 @@ public:
 
 private:
     template <bool kRecord>
-    Color eye_ray(const Ray& ray, int depth, const MediumStack& media, SampleStream& stream,
-                  const RayDifferential* pencil, RayStats& stats);
+    // `throughput`: the product of the branch factors above, what this ray's colour counts for.
+    Color eye_ray(const Ray& ray, int depth, const MediumStack& media, Color throughput,
+                  SampleStream& stream, const RayDifferential* pencil, RayStats& stats);
     // The photons' estimate of the light reflected at c, and how many were found.
     Color gather(const struct SurfaceContext& c, const Bsdf& bsdf, int& found) const;
 

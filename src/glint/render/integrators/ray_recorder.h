@@ -55,6 +55,10 @@ public:
     // The branch of this kind is traced next, its colour multiplied by factor.
     virtual void branch(RayKind kind, Color factor,
                         std::optional<Point2> lobe_u = std::nullopt) = 0;
+    // The photon integrator's eye ray meets a delta part of weight k (its largest channel):
+    // Russian roulette traces it with probability `survival` (1: always), and did or not; a
+    // traced one's branch() follows.
+    virtual void delta_part(RayKind, float /*k*/, float /*survival*/, bool /*traced*/) {}
     // The branch's glossy lobe tipped it through the surface: not traced.
     virtual void blocked(RayKind, Point2 /*lobe_u*/) {}
 
