@@ -5,10 +5,12 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <set>
 #include <vector>
 
 #include "glint/sampling/random.h"
+#include "glint/sampling/warp.h"
 
 namespace glint {
 namespace {
@@ -176,6 +178,94 @@ TEST(Sampler, SobolDimensionsAndPixelsAreDecorrelated) {
         sum += double(a.x) * double(b.x);
     }
     EXPECT_NEAR(sum / n, 0.25, 0.01);
+}
+
+TEST(Sampler, SobolCameraDimensionsAreEachANetAndScrambledApart) {
+    // The pixel's samples in the camera's dimensions: every coordinate of 2^m samples holds one
+    // point in each interval 2^-m, in any pixel; and two coordinates are as unrelated as
+    // independent uniforms (the mean of their product over many pixels is 1/4).
+    const std::uint32_t n = 64;
+    const Sampler sampler(SamplerKind::sobol, int(n), 4);
+    const auto coordinate = [&](int c, std::uint64_t pixel, std::uint32_t i) {
+        if (c == 4) return sampler.get_1d(pixel, i, n, kTimeDimension);
+        if (c == 5) return sampler.get_1d(pixel, i, n, kWavelengthDimension);
+        const Point2 p = sampler.get_2d(pixel, i, n, c < 2 ? kPixelDimension : kLensDimension);
+        return c % 2 ? p.y : p.x;
+    };
+    for (std::uint64_t pixel = 0; pixel < 10; ++pixel)
+        for (int c = 0; c < 6; ++c) {
+            std::set<int> strata;
+            for (std::uint32_t i = 0; i < n; ++i) {
+                const float u = coordinate(c, pixel, i);
+                ASSERT_GE(u, 0);
+                ASSERT_LT(u, 1);
+                strata.insert(int(u * float(n)));
+            }
+            EXPECT_EQ(strata.size(), n) << "coordinate " << c;
+        }
+    const int pixels = 100;
+    for (int a = 0; a < 6; ++a)
+        for (int b = a + 1; b < 6; ++b) {
+            double sum = 0;
+            for (std::uint64_t pixel = 0; pixel < pixels; ++pixel)
+                for (std::uint32_t i = 0; i < n; ++i)
+                    sum += double(coordinate(a, pixel, i)) * double(coordinate(b, pixel, i));
+            EXPECT_NEAR(sum / (pixels * n), 0.25, 0.01) << "coordinates " << a << ", " << b;
+        }
+}
+
+TEST(Sampler, SobolStratifiesThePixelAndTheLensTogether) {
+    // Depth of field: out of focus, a sample sees the point its pixel position and its lens
+    // position reach together, spread over the circle of confusion (here R pixels wide). Drawn
+    // as one sequence, a pixel's 16 or 64 samples estimate what it sees (an out-of-focus round
+    // object; an edge) with a much smaller mean squared error than when the lens's points are
+    // shuffled apart from the pixel's (a padded dimension, here dimension 9).
+    struct Seen {
+        const char* name;
+        bool (*covered)(Point2 film);
+        float radius;
+    };
+    const Seen cases[] = {
+        {"a round object, R = 1",
+         [](Point2 f) { return (f.x - 0.3f) * (f.x - 0.3f) + (f.y - 0.2f) * (f.y - 0.2f) < 0.5f; },
+         1},
+        {"an edge, R = 3", [](Point2 f) { return f.x < 0.8f; }, 3},
+    };
+    for (const Seen& seen : cases) {
+        const auto sees = [&](Point2 p, Point2 l) {
+            const Point2 d = sample_uniform_disk(l);
+            return seen.covered({p.x + seen.radius * d.x, p.y + seen.radius * d.y});
+        };
+        // What the pixel sees, from a million points of Roberts' 4D Kronecker sequence (steps
+        // the powers of 1 / phi_4, x^5 = x + 1).
+        double exact = 0;
+        const int many = 1 << 20;
+        const double alpha[] = {0.8566748839, 0.7338918058, 0.6287067210, 0.5385972572};
+        for (int i = 0; i < many; ++i) {
+            double u[4];
+            for (int c = 0; c < 4; ++c) u[c] = std::fmod(0.5 + i * alpha[c], 1.0);
+            exact += sees({float(u[0]), float(u[1])}, {float(u[2]), float(u[3])});
+        }
+        exact /= many;
+        for (const std::uint32_t n : {16u, 64u}) {
+            const Sampler sampler(SamplerKind::sobol, int(n), 1);
+            double joint = 0, padded = 0;
+            const int pixels = 2000;
+            for (std::uint64_t pixel = 0; pixel < pixels; ++pixel) {
+                double with_lens = 0, with_other = 0;
+                for (std::uint32_t i = 0; i < n; ++i) {
+                    const Point2 p = sampler.get_2d(pixel, i, n, kPixelDimension);
+                    with_lens += sees(p, sampler.get_2d(pixel, i, n, kLensDimension));
+                    with_other += sees(p, sampler.get_2d(pixel, i, n, 9));
+                }
+                joint += (with_lens / n - exact) * (with_lens / n - exact);
+                padded += (with_other / n - exact) * (with_other / n - exact);
+            }
+            EXPECT_LT(joint, 0.75 * padded)
+                << seen.name << ", " << n << " samples: " << joint / pixels << " against "
+                << padded / pixels;
+        }
+    }
 }
 
 TEST(SampleStream, SubSamplesAreStratifiedAcrossThePixelsSamplesTogether) {

@@ -16,8 +16,11 @@ namespace glint {
 // regular: the points of each dimension at the centres of a grid of cells, no randomness (for the
 //   pixel position, today's n x n supersampling); jittered: one random point in each cell of a
 //   grid, correlated multi-jittered so that rows and columns are stratified too (Kensler 2013);
-//   sobol: the Sobol (0,2)-sequence, Owen-scrambled and shuffled per dimension (Burley 2020), good
-//   for any count and for every prefix of it (adaptive sampling).
+//   sobol: the Sobol sequence, Owen-scrambled (Burley 2020), good for any count and for every
+//   prefix of it (adaptive sampling). The camera's dimensions (pixel, lens, time, wavelength) are
+//   Sobol's first six, one point of one sequence, so that they are stratified together (a pixel
+//   position with a lens position, as depth of field needs); the others are its (0,2)-sequence,
+//   shuffled per dimension.
 enum class SamplerKind { regular, jittered, sobol };
 
 // The samplers' names, sorted, as scene files and the command line write them.
@@ -37,9 +40,10 @@ inline constexpr std::uint32_t kWavelengthDimension = 3;  // which wavelength (1
 inline constexpr std::uint32_t kFirstFreeDimension = 4;
 
 // The hashes that choose one dimension's pattern in one pixel: the key, and the keys of the
-// permutations of its cells, columns and rows. Every sample of the pixel needs the same ones.
+// permutations of its cells, columns and rows; and the pixel's own key, the same in every
+// dimension, for what the dimensions share. Every sample of the pixel needs the same ones.
 struct PatternKeys {
-    std::uint64_t key, cells, columns, rows;
+    std::uint64_t key, cells, columns, rows, pixel;
 };
 
 class Sampler {
@@ -63,7 +67,7 @@ public:
     // The same in one dimension, over [0,1).
     float get_1d(std::uint64_t pixel, std::uint32_t index, std::uint32_t count,
                  std::uint32_t dimension) const {
-        return get_1d(pattern_keys(pixel, dimension), index, count);
+        return get_1d(pattern_keys(pixel, dimension), index, count, dimension);
     }
 
     // The same from the pattern's keys, worked out once for all of a pixel's samples.
@@ -83,7 +87,8 @@ public:
         return {(float(index % pixel_columns_) + 0.5f) / float(pixel_columns_),
                 (float(index / pixel_columns_) + 0.5f) / float(pixel_rows_)};
     }
-    float get_1d(const PatternKeys& keys, std::uint32_t index, std::uint32_t count) const;
+    float get_1d(const PatternKeys& keys, std::uint32_t index, std::uint32_t count,
+                 std::uint32_t dimension) const;
 
 private:
     Point2 pattern_2d(const PatternKeys& keys, std::uint32_t index, std::uint32_t count,
@@ -142,7 +147,7 @@ public:
     // A reserved dimension (kPixelDimension, ...) of this sample.
     Point2 get_2d(std::uint32_t dimension) const { return get_2d(dimension, 0, 1); }
     float get_1d(std::uint32_t dimension) const {
-        return sampler_->get_1d(keys(dimension), index_, spp());
+        return sampler_->get_1d(keys(dimension), index_, spp(), dimension);
     }
     // Sub-sample j of n in one dimension (see Sampler::get_2d).
     Point2 get_2d(std::uint32_t dimension, std::uint32_t j, std::uint32_t n) const {
