@@ -16,7 +16,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-class PovReference : public testing::TestWithParam<const char*> {};
+class PovReference : public ::testing::TestWithParam<const char*> {};
 
 TEST_P(PovReference, MatchesPovRaysRender) {
     const std::string name = GetParam();
@@ -35,12 +35,13 @@ TEST_P(PovReference, MatchesPovRaysRender) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Scenes, PovReference,
-                         testing::Values("basics", "camera", "clip", "csg", "finishes", "fog",
-                                         "inverse", "language", "lights", "mesh", "patterns",
-                                         "polynomials", "prism", "refraction", "shapes", "sky",
-                                         "text", "tiles", "lathe", "normals", "operands", "images",
-                                         "mesh2", "heightfields", "maps", "isosurfaces", "layers",
-                                         "fisheye", "glass", "reflections", "sweep", "media"));
+                         ::testing::Values("basics", "camera", "clip", "csg", "finishes", "fog",
+                                           "inverse", "language", "lights", "mesh", "patterns",
+                                           "polynomials", "prism", "refraction", "shapes", "sky",
+                                           "text", "tiles", "lathe", "normals", "operands",
+                                           "images", "mesh2", "heightfields", "maps", "isosurfaces",
+                                           "layers", "fisheye", "glass", "reflections", "sweep",
+                                           "media"));
 
 }  // namespace
 }  // namespace glint

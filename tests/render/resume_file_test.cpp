@@ -27,7 +27,7 @@ bool same_bytes(const std::vector<T>& a, const std::vector<T>& b) {
 
 namespace fs = std::filesystem;
 
-class ResumeFile : public testing::Test {
+class ResumeFile : public ::testing::Test {
 protected:
     void SetUp() override {
         dir_ = fs::temp_directory_path() / ("glint-resume-" + std::to_string(::getpid()));
