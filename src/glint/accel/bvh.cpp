@@ -34,18 +34,18 @@ typedef int Int4 __attribute__((vector_size(16)));
 Float4 splat(float x) { return Float4{x, x, x, x}; }
 
 // Trivial, so that arrays of bins cost nothing to declare; empty() is the empty box.
-struct Box {
+struct Box4 {
     Float4 lo;
     Float4 hi;
 
-    static Box empty() { return {splat(kInfinity), splat(-kInfinity)}; }
-    static Box of(const Bounds3& b) {
-        Box out;
+    static Box4 empty() { return {splat(kInfinity), splat(-kInfinity)}; }
+    static Box4 of(const Bounds3& b) {
+        Box4 out;
         out.lo = Float4{b.min.x, b.min.y, b.min.z, 0};
         out.hi = Float4{b.max.x, b.max.y, b.max.z, 0};
         return out;
     }
-    void grow(const Box& b) {
+    void grow(const Box4& b) {
         lo = b.lo < lo ? b.lo : lo;
         hi = b.hi > hi ? b.hi : hi;
     }
@@ -63,17 +63,17 @@ struct Box {
 };
 
 struct Bin {
-    Box bounds;
+    Box4 bounds;
     std::uint32_t count;
     std::uint32_t blocked;  // of them, of kind 1
 
-    static Bin empty() { return {Box::empty(), 0, 0}; }
+    static Bin empty() { return {Box4::empty(), 0, 0}; }
 };
 
 // A range of Bvh::primitive_indices with the union of its boxes and of its centroids.
 struct Range {
     std::uint32_t begin = 0, end = 0;
-    Box bounds = Box::empty(), centroids = Box::empty();
+    Box4 bounds = Box4::empty(), centroids = Box4::empty();
 
     std::uint32_t size() const { return end - begin; }
 };
@@ -120,7 +120,7 @@ public:
         for_blocks(0, n, [&](std::uint32_t b, std::uint32_t e, std::uint32_t) {
             for (std::uint32_t i = b; i < e; ++i) {
                 indices_[i] = i;
-                boxes_[i] = Box::of(bounds[i]);
+                boxes_[i] = Box4::of(bounds[i]);
                 const Point3 c = bounds[i].center();
                 centroids_[i] = Float4{c.x, c.y, c.z, 0};
             }
@@ -168,16 +168,16 @@ public:
 private:
     // The union of the boxes and of the centroids of r's primitives, into r.
     void measure(Range& r) const {
-        const auto fold = [&](std::uint32_t b, std::uint32_t e, Box& bounds, Box& cent) {
+        const auto fold = [&](std::uint32_t b, std::uint32_t e, Box4& bounds, Box4& cent) {
             for (std::uint32_t i = b; i < e; ++i) {
                 const std::uint32_t p = indices_[i];
                 bounds.grow(boxes_[p]);
                 cent.grow(centroids_[p]);
             }
         };
-        r.bounds = r.centroids = Box::empty();
+        r.bounds = r.centroids = Box4::empty();
         if (r.size() < kParallelRange) return fold(r.begin, r.end, r.bounds, r.centroids);
-        std::vector<Box> bounds(blocks_of(r.size()), Box::empty()), cents(bounds);
+        std::vector<Box4> bounds(blocks_of(r.size()), Box4::empty()), cents(bounds);
         for_blocks(r.begin, r.end, [&](std::uint32_t b, std::uint32_t e, std::uint32_t k) {
             fold(b, e, bounds[k], cents[k]);
         });
@@ -188,7 +188,7 @@ private:
         }
     }
 
-    static int longest_axis(const Box& b) {
+    static int longest_axis(const Box4& b) {
         const Float4 d = b.hi - b.lo;
         // Written so that a NaN extent never wins.
         int axis = 0;
@@ -265,7 +265,7 @@ private:
     }
 
     // Sets g's axes over the extent of `points`; false when no axis has one.
-    static bool place_bins(const Box& points, Binning& g) {
+    static bool place_bins(const Box4& points, Binning& g) {
         bool any = false;
         for (int a = 0; a < 3; ++a) {
             const float extent = points.hi[a] - points.lo[a];
@@ -306,7 +306,7 @@ private:
         // Small ranges need fewer candidates: most bins would be empty.
         g.count = std::min(bins_, std::max(4, 2 * int(r.size())));
         if (!place_bins(r.centroids, g)) {
-            Box corners = Box::empty();
+            Box4 corners = Box4::empty();
             for (std::uint32_t i = r.begin; i < r.end; ++i) corners.grow(boxes_[indices_[i]].lo);
             g.by_corner = true;
             if (!place_bins(corners, g)) return false;
@@ -348,7 +348,7 @@ private:
             if (!g.used[a]) continue;
             const Bins& axis_bins = bins[std::size_t(a)];
             std::array<float, kMaxBins> right_cost;
-            Box acc = Box::empty();
+            Box4 acc = Box4::empty();
             std::uint32_t n = 0, nb = 0;
             for (int k = count - 1; k > 0; --k) {
                 acc.grow(axis_bins[std::size_t(k)].bounds);
@@ -357,7 +357,7 @@ private:
                 right_cost[std::size_t(k - 1)] = acc.area() * tests(n, nb);
             }
             range_blocked = nb + axis_bins[0].blocked;
-            acc = Box::empty();
+            acc = Box4::empty();
             n = nb = 0;
             for (int k = 0; k < count - 1; ++k) {
                 acc.grow(axis_bins[std::size_t(k)].bounds);
@@ -375,8 +375,8 @@ private:
         const float lo = g.lo[axis], scale = g.scale[axis];
         const Parts parts = partition(
             r, [&](std::uint32_t p) { return bin_of(key(p, g), axis, lo, scale, count) <= best; });
-        left = {r.begin, parts.mid, Box::empty(), parts.centroids[0]};
-        right = {parts.mid, r.end, Box::empty(), parts.centroids[1]};
+        left = {r.begin, parts.mid, Box4::empty(), parts.centroids[0]};
+        right = {parts.mid, r.end, Box4::empty(), parts.centroids[1]};
         for (int k = 0; k < count; ++k)
             (k <= best ? left : right).bounds.grow(bins[std::size_t(axis)][std::size_t(k)].bounds);
         if (left.size() > 0 && right.size() > 0) return true;
@@ -389,7 +389,7 @@ private:
     // part's centroids (left, right).
     struct Parts {
         std::uint32_t mid;
-        std::array<Box, 2> centroids{Box::empty(), Box::empty()};
+        std::array<Box4, 2> centroids{Box4::empty(), Box4::empty()};
     };
 
     // Stable partition of r by `goes_left`, through scratch_. Large ranges count, then scatter,
@@ -397,7 +397,7 @@ private:
     template <typename Pred>
     Parts partition(const Range& r, Pred&& goes_left) {
         Parts parts{r.begin};
-        std::array<Box, 2>& sides = parts.centroids;
+        std::array<Box4, 2>& sides = parts.centroids;
         if (r.size() < kParallelRange) {
             // scratch_ is shared by concurrent tasks; each uses only its own range of it.
             std::uint32_t l = r.begin, g = r.begin;
@@ -426,10 +426,10 @@ private:
             right_at[k] = mid + std::uint32_t(k) * kBlock - left_at[k];
             left_at[k] += r.begin;
         }
-        std::vector<std::array<Box, 2>> block_sides(lefts.size());
+        std::vector<std::array<Box4, 2>> block_sides(lefts.size());
         for_blocks(r.begin, r.end, [&](std::uint32_t b, std::uint32_t e, std::uint32_t k) {
             std::uint32_t l = left_at[k], g = right_at[k];
-            std::array<Box, 2> side{Box::empty(), Box::empty()};
+            std::array<Box4, 2> side{Box4::empty(), Box4::empty()};
             for (std::uint32_t i = b; i < e; ++i) {
                 const std::uint32_t p = indices_[i];
                 const bool left = goes_left(p);
@@ -439,7 +439,7 @@ private:
             block_sides[k] = side;
         });
         // In block order: with NaN coordinates, min and max depend on the order taken in.
-        for (const std::array<Box, 2>& side : block_sides) {
+        for (const std::array<Box4, 2>& side : block_sides) {
             sides[0].grow(side[0]);
             sides[1].grow(side[1]);
         }
@@ -471,7 +471,7 @@ private:
 
     LargeVector<std::uint32_t>& indices_;
     std::span<const std::uint8_t> kinds_;
-    LargeVector<Box> boxes_;
+    LargeVector<Box4> boxes_;
     LargeVector<Float4> centroids_;
     LargeVector<std::uint32_t> scratch_;
     std::uint32_t max_leaf_ = 4;

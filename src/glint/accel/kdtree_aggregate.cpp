@@ -33,11 +33,11 @@ struct Split {
     float cost = kInfinity;
 };
 
-class Builder {
+class KdTreeBuilder {
 public:
-    Builder(std::span<const Bounds3> boxes, std::span<const std::uint32_t> global,
-            const KdBuildOptions& options, std::vector<KdNode>& nodes,
-            std::vector<std::uint32_t>& leaf_primitives)
+    KdTreeBuilder(std::span<const Bounds3> boxes, std::span<const std::uint32_t> global,
+                  const KdBuildOptions& options, std::vector<KdNode>& nodes,
+                  std::vector<std::uint32_t>& leaf_primitives)
         : boxes_(boxes),
           global_(global),
           options_(options),
@@ -202,7 +202,7 @@ KdTreeAggregate::KdTreeAggregate(std::span<const Primitive> primitives,
                    (x.position == y.position && x.primitive < y.primitive);
         });
     }
-    Builder builder(boxes, bounded, options, nodes_, leaf_primitives_);
+    KdTreeBuilder builder(boxes, bounded, options, nodes_, leaf_primitives_);
     builder.build(tree_bounds_, std::move(events), 0, 0);
     depth_ = builder.deepest();
     nodes_.shrink_to_fit();

@@ -23,7 +23,7 @@ namespace {
 using Clock = std::chrono::steady_clock;
 
 // The first byte of every message of the frames' protocol; apart from the tiles' (1 to 3).
-enum class Kind : std::uint8_t {
+enum class FrameMessage : std::uint8_t {
     frame = 11,       // to a rank: a frame to render, and its saved state if it has one
     stop = 12,        // to a rank: stop the frame (1 follows: at once; 0: after its pass)
     over = 13,        // to a rank: no more frames
@@ -35,7 +35,7 @@ enum class Kind : std::uint8_t {
 std::string frame_message(int frame, const std::string& text, const RenderState* saved,
                           int tile_size) {
     ByteWriter out;
-    out.u8(std::uint8_t(Kind::frame));
+    out.u8(std::uint8_t(FrameMessage::frame));
     out.i32(frame);
     out.text(text);
     out.u8(saved ? 1 : 0);
@@ -50,7 +50,8 @@ std::string encoded(const RenderState& state, int tile_size) {
 }
 
 // A frame's state, `encoded`, after the kind and the frame.
-std::string state_message(Kind kind, int frame, const std::string& state, bool complete = false) {
+std::string state_message(FrameMessage kind, int frame, const std::string& state,
+                          bool complete = false) {
     ByteWriter out;
     out.u8(std::uint8_t(kind));
     out.i32(frame);
@@ -58,7 +59,7 @@ std::string state_message(Kind kind, int frame, const std::string& state, bool c
     return std::move(out.bytes()) + state;
 }
 
-std::string short_message(Kind kind, int value) {
+std::string short_message(FrameMessage kind, int value) {
     ByteWriter out;
     out.u8(std::uint8_t(kind));
     out.i32(value);
@@ -227,7 +228,8 @@ bool share_frames_as_root(Transport& transport, const std::vector<int>& frames,
     const auto stop_all = [&](bool now) {
         local.stop(now);
         for (int r = 1; r < ranks; ++r)
-            if (held[std::size_t(r)].frame >= 0) transport.send(r, short_message(Kind::stop, now));
+            if (held[std::size_t(r)].frame >= 0)
+                transport.send(r, short_message(FrameMessage::stop, now));
     };
     // A message from a rank that holds a frame: it is alive, at a checkpoint, or done.
     const auto take_message = [&](const Message& message) {
@@ -243,8 +245,9 @@ bool share_frames_as_root(Transport& transport, const std::vector<int>& frames,
             ByteReader<> in = reader_of(message);
             kind = in.u8();
             if (in.i32() != holder.frame) throw std::runtime_error("news of another frame");
-            if (kind == std::uint8_t(Kind::alive)) return;
-            if (kind != std::uint8_t(Kind::checkpoint) && kind != std::uint8_t(Kind::done))
+            if (kind == std::uint8_t(FrameMessage::alive)) return;
+            if (kind != std::uint8_t(FrameMessage::checkpoint) &&
+                kind != std::uint8_t(FrameMessage::done))
                 throw std::runtime_error("a message of an unknown kind");
             complete = in.u8() != 0;
             state.emplace(book.fresh_state(holder.frame));
@@ -254,7 +257,7 @@ bool share_frames_as_root(Transport& transport, const std::vector<int>& frames,
             throw ClusterError("a message from " + name(r) + " makes no sense: " + e.what());
         }
         // Outside the try: a frame that cannot be written is not the rank's fault.
-        if (kind == std::uint8_t(Kind::checkpoint))
+        if (kind == std::uint8_t(FrameMessage::checkpoint))
             book.checkpoint(holder.frame, *state);
         else
             finish(std::exchange(holder.frame, -1), r, *state, complete);
@@ -304,7 +307,7 @@ bool share_frames_as_root(Transport& transport, const std::vector<int>& frames,
         check_answers_come();
     }
     if (const std::exception_ptr error = local.error()) std::rethrow_exception(error);
-    for (int r = 1; r < ranks; ++r) transport.send(r, short_message(Kind::over, 0));
+    for (int r = 1; r < ranks; ++r) transport.send(r, short_message(FrameMessage::over, 0));
     if (frames_by_rank) *frames_by_rank = by_rank;
     return all_complete && queue.empty();
 }
@@ -323,13 +326,13 @@ void share_frames_as_worker(Transport& transport, const FrameRendering& renderin
             if (message->from != 0) throw ClusterError("a message came from a rank other than 0");
             ByteReader<> in = reader_of(*message);
             const std::uint8_t kind = in.u8();
-            if (kind == std::uint8_t(Kind::over)) {
+            if (kind == std::uint8_t(FrameMessage::over)) {
                 if (renderer.busy()) throw ClusterError("rank 0 ended the frames while one runs");
                 return;
             }
-            if (kind == std::uint8_t(Kind::stop)) {
+            if (kind == std::uint8_t(FrameMessage::stop)) {
                 renderer.stop(in.i32() != 0);
-            } else if (kind == std::uint8_t(Kind::frame)) {
+            } else if (kind == std::uint8_t(FrameMessage::frame)) {
                 if (renderer.busy()) throw ClusterError("rank 0 sent a frame while one runs");
                 const int frame = in.i32();
                 std::string text = in.text();
@@ -350,12 +353,12 @@ void share_frames_as_worker(Transport& transport, const FrameRendering& renderin
             }
         }
         if (const std::optional<FrameRenderer::Checkpoint> c = renderer.take_checkpoint())
-            send(state_message(Kind::checkpoint, c->frame, c->state));
+            send(state_message(FrameMessage::checkpoint, c->frame, c->state));
         if (const std::optional<FrameRenderer::Done> done = renderer.take_done())
-            send(state_message(Kind::done, done->frame, encoded(done->state, rendering.tile_size),
-                               done->complete));
+            send(state_message(FrameMessage::done, done->frame,
+                               encoded(done->state, rendering.tile_size), done->complete));
         else if (renderer.busy() && Clock::now() - last_word >= rendering.heartbeat)
-            send(short_message(Kind::alive, renderer.frame()));
+            send(short_message(FrameMessage::alive, renderer.frame()));
     }
 }
 

@@ -68,9 +68,9 @@ std::string stb_reason() {
 // stb_image reading from memory through callbacks, noting whether a decoder asked for bytes
 // beyond the end: stb hands it zeros, which would turn a truncated file into an image with a
 // black end, without a word.
-class MemoryReader {
+class StbMemoryReader {
 public:
-    explicit MemoryReader(std::span<const unsigned char> bytes) : bytes_(bytes) {}
+    explicit StbMemoryReader(std::span<const unsigned char> bytes) : bytes_(bytes) {}
 
     static const stbi_io_callbacks& callbacks() {
         static const stbi_io_callbacks c{read, skip, eof};
@@ -80,7 +80,7 @@ public:
 
 private:
     static int read(void* user, char* data, int size) {
-        auto& r = *static_cast<MemoryReader*>(user);
+        auto& r = *static_cast<StbMemoryReader*>(user);
         const std::size_t n = std::min(std::size_t(std::max(size, 0)), r.bytes_.size() - r.at_);
         if (n == 0 && size > 0) r.ran_out_ = true;
         if (n > 0) std::memcpy(data, r.bytes_.data() + r.at_, n);
@@ -88,7 +88,7 @@ private:
         return int(n);
     }
     static void skip(void* user, int n) {
-        auto& r = *static_cast<MemoryReader*>(user);
+        auto& r = *static_cast<StbMemoryReader*>(user);
         if (n < 0) {  // stb skips back only within what it has read
             r.at_ -= std::min(r.at_, std::size_t(-std::int64_t(n)));
             return;
@@ -97,7 +97,7 @@ private:
         r.at_ += std::min(std::size_t(n), r.bytes_.size() - r.at_);
     }
     static int eof(void* user) {
-        const auto& r = *static_cast<MemoryReader*>(user);
+        const auto& r = *static_cast<StbMemoryReader*>(user);
         return r.at_ >= r.bytes_.size() ? 1 : 0;
     }
 
@@ -106,14 +106,15 @@ private:
     bool ran_out_ = false;
 };
 
-// Decodes with stb's `load` (8-bit, 16-bit or float) through a MemoryReader: nothing, with the
+// Decodes with stb's `load` (8-bit, 16-bit or float) through a StbMemoryReader: nothing, with the
 // reason in `error`, when stb fails or the data ends early.
 template <typename T, typename Load>
 std::unique_ptr<T, StbFree> decode(std::span<const unsigned char> bytes, Load load, int width,
                                    int height, std::string& error) {
-    MemoryReader reader(bytes);
+    StbMemoryReader reader(bytes);
     int w = 0, h = 0, n = 0;
-    std::unique_ptr<T, StbFree> decoded(load(&MemoryReader::callbacks(), &reader, &w, &h, &n, 3));
+    std::unique_ptr<T, StbFree> decoded(
+        load(&StbMemoryReader::callbacks(), &reader, &w, &h, &n, 3));
     if (reader.ran_out()) {
         error = kTruncatedTexture;
         return nullptr;

@@ -27,6 +27,7 @@ struct Color {
 constexpr Color operator*(float s, Color c) { return c * s; }
 
 constexpr float max_channel(Color c) { return std::max({c.r, c.g, c.b}); }
+constexpr float mean(Color c) { return (c.r + c.g + c.b) / 3; }
 constexpr bool is_black(Color c) { return c.r == 0 && c.g == 0 && c.b == 0; }
 inline bool is_finite(Color c) {
     return std::isfinite(c.r) && std::isfinite(c.g) && std::isfinite(c.b);

@@ -15,8 +15,6 @@ namespace glint {
 
 namespace {
 
-float mean(Color c) { return (c.r + c.g + c.b) / 3; }
-
 Point2 image_uv(Vector3 w) {
     const float phi = std::atan2(-w.x, w.z);
     const float theta = std::acos(std::clamp(w.y, -1.0f, 1.0f));

@@ -17,8 +17,6 @@ namespace {
 
 constexpr std::size_t kLargest = 5;
 
-float brightness(Color c) { return (c.r + c.g + c.b) / 3; }
-
 // The name of Emitters' emitter `index`: the lights, the emitting objects, then the sky.
 std::string emitter_name(const World& world, std::size_t index) {
     const std::size_t lights = world.lights().size(), objects = world.object_lights().size();
@@ -59,7 +57,7 @@ ParticleReport particle_report(const World& world, const PixelSample& which) {
         // Keep the largest few: sorted, brightest first.
         std::sort(report.largest.begin(), report.largest.end(),
                   [](const ParticleContribution& a, const ParticleContribution& b) {
-                      return brightness(a.value * a.weight) > brightness(b.value * b.weight);
+                      return mean(a.value * a.weight) > mean(b.value * b.weight);
                   });
         if (report.largest.size() > kLargest) report.largest.pop_back();
     };

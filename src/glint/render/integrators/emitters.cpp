@@ -7,12 +7,6 @@
 
 namespace glint {
 
-namespace {
-
-float mean(Color c) { return (c.r + c.g + c.b) / 3; }
-
-}  // namespace
-
 Emitters::Emitters(const World& world)
     : world_(world), scene_{world.scene_center(), world.scene_radius()} {
     std::vector<float> power;

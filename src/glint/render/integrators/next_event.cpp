@@ -11,12 +11,6 @@
 
 namespace glint {
 
-namespace {
-
-float mean(Color c) { return (c.r + c.g + c.b) / 3; }
-
-}  // namespace
-
 NextEventLights::NextEventLights(const World& world) {
     std::vector<float> power;
     const float radius = world.scene_radius();

@@ -10,8 +10,6 @@ namespace glint {
 
 namespace {
 
-float mean(Color c) { return (c.r + c.g + c.b) / 3; }
-
 // A value is used only when finite; a NaN in a file never reaches the renderer.
 Color finite_or(Color c, Color fallback) { return is_finite(c) ? c : fallback; }
 
