@@ -43,7 +43,7 @@ Bsdf::Bsdf(const BsdfInputs& in, TransportMode mode) : in_(in), mode_(mode) {
     transmit_delta_ = in.transmit_roughness < kMirrorRoughness;
     if (!transmit_delta_) transmit_exponent_ = phong_exponent_of_roughness(in.transmit_roughness);
     // Each part by the share of light it scatters: the diffuse colour by its mean.
-    pick_ = {(diffuse_.r + diffuse_.g + diffuse_.b) / 3, highlight_, reflect_, transmit_};
+    pick_ = {mean(diffuse_), highlight_, reflect_, transmit_};
     float total = 0;
     for (const float w : pick_) total += w;
     if (total > 0)
@@ -142,8 +142,16 @@ std::optional<BsdfSample> Bsdf::sample(float u_lobe, Point2 u) const {
     if (!(pick_[l] > 0)) return std::nullopt;  // scatters nothing, or u_lobe rounded past it
     BsdfSample s;
     s.lobe = BsdfLobe(l);
-    const bool delta = (s.lobe == BsdfLobe::reflect && reflect_delta_) ||
-                       (s.lobe == BsdfLobe::transmit && transmit_delta_);
+    if ((s.lobe == BsdfLobe::reflect && reflect_delta_) ||
+        (s.lobe == BsdfLobe::transmit && transmit_delta_)) {
+        // The part whole, weighed by how seldom it is picked.
+        std::optional<BsdfSample> part = delta_part(s.lobe);
+        if (part) {
+            part->pdf = pick_[l];
+            part->weight *= 1 / pick_[l];
+        }
+        return part;
+    }
     switch (s.lobe) {
         case BsdfLobe::diffuse:
             s.wi = from_frame(sample_phong_lobe(u, 1), to_vector(in_.n));  // cosine-weighted
@@ -152,24 +160,15 @@ std::optional<BsdfSample> Bsdf::sample(float u_lobe, Point2 u) const {
             s.wi = from_frame(sample_phong_lobe(u, in_.shininess), mirror_);
             break;
         case BsdfLobe::reflect:
-            s.wi = delta ? mirror_ : from_frame(sample_phong_lobe(u, reflect_exponent_), mirror_);
+            s.wi = from_frame(sample_phong_lobe(u, reflect_exponent_), mirror_);
             break;
         case BsdfLobe::transmit:
-            s.wi = delta ? refracted_
-                         : from_frame(sample_phong_lobe(u, transmit_exponent_), refracted_);
+            s.wi = from_frame(sample_phong_lobe(u, transmit_exponent_), refracted_);
             break;
     }
     s.transmitted = s.lobe == BsdfLobe::transmit;
     // A direction on the wrong side of the surface scatters nothing.
     if (reflects(s.wi) == s.transmitted) return std::nullopt;
-    if (delta) {
-        s.delta = true;
-        s.pdf = pick_[l];
-        const float w = s.transmitted ? transmit_ * compression_ : reflect_;
-        s.weight = Color::gray(w / pick_[l] * adjoint_factor(s.wi));
-        s.weight *= s.transmitted ? in_.transmit_filter : reflect_color_;
-        return s;
-    }
     s.f = eval(s.wi);
     s.pdf = pdf(s.wi);
     if (!(s.pdf > 0)) return std::nullopt;

@@ -55,8 +55,8 @@ public:
     void record_into(RayRecorder* recorder) { recorder_ = recorder; }
 
 private:
-    template <bool kRecord>
     // `throughput`: the product of the branch factors above, what this ray's colour counts for.
+    template <bool kRecord>
     Color eye_ray(const Ray& ray, int depth, const MediumStack& media, Color throughput,
                   SampleStream& stream, const RayDifferential* pencil, RayStats& stats);
     // The photons' estimate of the light reflected at c, and how many were found.
