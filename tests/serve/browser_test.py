@@ -175,7 +175,7 @@ def test_the_page_renders_orbits_explains_and_follows_edits(served, browser):
     body = browser.find_element(By.TAG_NAME, "body")
     depth = wait_for(lambda: (s := shown_frame(browser)) and
                      body.get_attribute("data-shown-view") == "depth" and s, what="the depth view")
-    height = browser.execute_script("return document.getElementById('image').naturalHeight")
+    height = int(body.get_attribute("data-shown-height"))
     assert height > 600, height  # the legend's strip
     assert picture(browser) != before
     browser.save_screenshot(str(folder / "5-depth.png"))

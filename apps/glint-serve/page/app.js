@@ -89,6 +89,8 @@ image.addEventListener("load", () => {
   const params = new URL(image.currentSrc).searchParams;
   document.body.dataset.shown = params.get("frame");
   document.body.dataset.shownView = params.get("view");
+  // Read at once: while the next frame's image loads, the element's own size may be 0.
+  document.body.dataset.shownHeight = image.naturalHeight;
 });
 
 // The image's size; an output variable's picture is as wide, with its legend below.
