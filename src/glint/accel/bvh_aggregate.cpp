@@ -1,6 +1,9 @@
 // Building the scene-level BVH over references, and its two queries.
 #include "glint/accel/bvh_aggregate.h"
 
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
 #include <algorithm>
 #include <stdexcept>
 
@@ -17,6 +20,15 @@ namespace {
 constexpr std::uint8_t kWholeShape = 0;
 constexpr std::uint8_t kTriangle = 1;
 constexpr std::uint8_t kSphere = 2;
+
+// f(i) for every i in [0, n), on all threads: the per-triangle loops of a mesh of millions.
+template <typename F>
+void in_parallel(std::size_t n, F&& f) {
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, 4096),
+                      [&](const tbb::blocked_range<std::size_t>& r) {
+                          for (std::size_t i = r.begin(); i != r.end(); ++i) f(i);
+                      });
+}
 
 const MeshData* mesh_of(const Primitive& p) {
     const auto* mesh = std::get_if<TriangleMesh>(&p.shape);
@@ -54,13 +66,16 @@ BvhAggregate::BvhAggregate(std::span<const Primitive> primitives) : primitives_(
     for (std::uint32_t i = 0; i < primitives.size(); ++i) {
         const Primitive& p = primitives[i];
         if (const MeshData* mesh = mesh_of(p)) {
-            for (std::uint32_t t = 0; t < mesh->triangles.size(); ++t) {
+            const std::size_t at = bounded.size(), count = mesh->triangles.size();
+            bounded.resize(at + count);
+            boxes.resize(at + count);
+            kinds.resize(at + count, kTriangle);
+            in_parallel(count, [&](std::size_t t) {
                 Bounds3 b;
                 for (const std::uint32_t v : mesh->triangles[t]) b = merge(b, mesh->positions[v]);
-                bounded.push_back(first_reference_[i] + t);
-                boxes.push_back(b);
-                kinds.push_back(kTriangle);
-            }
+                bounded[at + t] = first_reference_[i] + std::uint32_t(t);
+                boxes[at + t] = b;
+            });
             bounds_ = merge(bounds_, mesh->bounds);
             continue;
         }
@@ -80,7 +95,9 @@ BvhAggregate::BvhAggregate(std::span<const Primitive> primitives) : primitives_(
     // rounding of the slab test, so ties at equal t resolve as in the list.
     const float margin = rounding_margin(bounds_);
     const Vector3 grow{margin, margin, margin};
-    for (Bounds3& b : boxes) b = {b.min - grow, b.max + grow};
+    in_parallel(boxes.size(), [&](std::size_t k) {
+        boxes[k] = {boxes[k].min - grow, boxes[k].max + grow};
+    });
     // SAH counts triangles and spheres in blocks of four and other shapes one by one, as leaves
     // test them.
     bvh_ = build_wide_bvh(boxes, kWideBvhTriangleBuildOptions, kinds);

@@ -2,6 +2,9 @@
 // blocks.
 #include "glint/accel/wide_bvh.h"
 
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
 #include <algorithm>
 #include <array>
 #include <cassert>
@@ -169,69 +172,105 @@ WideBvh build_wide_bvh(std::span<const Bounds3> bounds, const BvhBuildOptions& o
 
 namespace {
 
-// The leaf's primitives as blocks of one kind, appended to `blocks`; false (and nothing appended)
-// when one of them is not of that kind. Lanes run in ascending id. `items` is scratch space, kept
-// from leaf to leaf.
-template <typename Item, typename Block, typename EmptyBlock, typename SetLane>
-bool pack_leaf(std::span<const std::uint32_t> leaf,
-               const std::function<std::optional<Item>(std::uint32_t)>& item_of,
-               std::vector<Item>& items, LargeVector<Block>& blocks, EmptyBlock&& empty_block,
-               SetLane&& set_lane) {
+// A leaf child of a wide node, with where its primitives are in primitive_indices.
+struct LeafSlot {
+    WideBvhNode* node;
+    int k;
+    std::uint32_t first, count;
+};
+
+enum class LeafKind : std::uint8_t { kept, triangles, spheres };
+
+// The leaf's primitives as items of one kind, into items[0, leaf.size()) sorted by id (lanes run
+// in ascending id); false when one of them is not of that kind.
+template <typename Item>
+bool gather_leaf(std::span<const std::uint32_t> leaf,
+                 const std::function<std::optional<Item>(std::uint32_t)>& item_of, Item* items) {
     if (!item_of) return false;
-    items.clear();
-    for (const std::uint32_t p : leaf) {
-        const auto item = item_of(p);
+    for (std::size_t i = 0; i < leaf.size(); ++i) {
+        const auto item = item_of(leaf[i]);
         if (!item) return false;
-        items.push_back(*item);
+        items[i] = *item;
     }
-    std::sort(items.begin(), items.end(), [](const Item& a, const Item& b) { return a.id < b.id; });
-    for (std::size_t i = 0; i < items.size(); ++i) {
-        if (i % 4 == 0) blocks.push_back(empty_block());
-        set_lane(blocks.back(), int(i % 4), items[i]);
-    }
+    std::sort(items, items + leaf.size(), [](const Item& a, const Item& b) { return a.id < b.id; });
     return true;
 }
+
+std::uint32_t blocks_for(std::uint32_t count) { return (count + 3) / 4; }
 
 }  // namespace
 
 void pack_block_leaves(WideBvh& bvh,
                        const std::function<std::optional<BlockTriangle>(std::uint32_t)>& triangle,
                        const std::function<std::optional<BlockSphere>(std::uint32_t)>& sphere) {
-    LargeVector<std::uint32_t> kept;  // primitive_indices of the leaves that stay as they are
-    std::vector<BlockTriangle> triangles;
-    std::vector<BlockSphere> spheres;
-    for (WideBvhNode& node : bvh.nodes) {
+    std::vector<LeafSlot> leaves;
+    for (WideBvhNode& node : bvh.nodes)
         for (int k = 0; k < kWideBvhWidth; ++k) {
             if (!node.is_leaf(k) || node.count[k] == 0) continue;
             assert((node.child[k] & kWideLeafKind) == kWidePrimitiveLeaf);
-            const std::span<const std::uint32_t> leaf(
-                bvh.primitive_indices.data() + (node.child[k] & kWideLeafIndex), node.count[k]);
-            const auto first_triangles = std::uint32_t(bvh.blocks.size());
-            const auto first_spheres = std::uint32_t(bvh.sphere_blocks.size());
-            if (pack_leaf(leaf, triangle, triangles, bvh.blocks, empty_triangle_block,
-                          [](TriangleBlock& b, int lane, const BlockTriangle& t) {
-                              set_block_lane(b, lane, t.v0, t.v1, t.v2, t.id);
-                          })) {
-                node.child[k] = kWideLeaf | kWideTriangleLeaf | first_triangles;
-                node.count[k] = std::uint8_t(bvh.blocks.size() - first_triangles);
-            } else if (pack_leaf(leaf, sphere, spheres, bvh.sphere_blocks, empty_sphere_block,
-                                 [](SphereBlock& b, int lane, const BlockSphere& s) {
-                                     set_sphere_lane(b, lane, s.sphere, s.id);
-                                 })) {
-                node.child[k] = kWideLeaf | kWideSphereLeaf | first_spheres;
-                node.count[k] = std::uint8_t(bvh.sphere_blocks.size() - first_spheres);
-            } else {
-                node.child[k] = kWideLeaf | kWidePrimitiveLeaf | std::uint32_t(kept.size());
-                kept.insert(kept.end(), leaf.begin(), leaf.end());
-            }
-            assert(bvh.blocks.size() <= kWideBvhMaxPrimitives &&
-                   bvh.sphere_blocks.size() <= kWideBvhMaxPrimitives);
+            leaves.push_back({&node, k, node.child[k] & kWideLeafIndex, node.count[k]});
         }
+    // Each leaf's items go where its primitives are in primitive_indices (the leaves' ranges do
+    // not overlap), so that the leaves are gathered in parallel and laid out in order after.
+    const std::size_t n = bvh.primitive_indices.size();
+    LargeVector<BlockTriangle> triangle_items(triangle ? n : 0);
+    LargeVector<BlockSphere> sphere_items(sphere ? n : 0);
+    std::vector<LeafKind> kinds(leaves.size());
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, leaves.size(), 256),
+                      [&](const tbb::blocked_range<std::size_t>& r) {
+                          for (std::size_t i = r.begin(); i != r.end(); ++i) {
+                              const LeafSlot& l = leaves[i];
+                              const std::span<const std::uint32_t> leaf(
+                                  bvh.primitive_indices.data() + l.first, l.count);
+                              kinds[i] =
+                                  gather_leaf(leaf, triangle, triangle_items.data() + l.first)
+                                      ? LeafKind::triangles
+                                  : gather_leaf(leaf, sphere, sphere_items.data() + l.first)
+                                      ? LeafKind::spheres
+                                      : LeafKind::kept;
+                          }
+                      });
+    // Where each leaf's blocks (or kept indices) start, in the leaves' order.
+    std::vector<std::uint32_t> starts(leaves.size());
+    std::uint32_t triangle_blocks = 0, sphere_blocks = 0, kept = 0;
+    for (std::size_t i = 0; i < leaves.size(); ++i) {
+        LeafSlot& l = leaves[i];
+        std::uint32_t& next = kinds[i] == LeafKind::triangles ? triangle_blocks
+                              : kinds[i] == LeafKind::spheres ? sphere_blocks
+                                                              : kept;
+        starts[i] = next;
+        next += kinds[i] == LeafKind::kept ? l.count : blocks_for(l.count);
+        const std::uint32_t tag = kinds[i] == LeafKind::triangles ? kWideTriangleLeaf
+                                  : kinds[i] == LeafKind::spheres ? kWideSphereLeaf
+                                                                  : kWidePrimitiveLeaf;
+        l.node->child[l.k] = kWideLeaf | tag | starts[i];
+        if (kinds[i] != LeafKind::kept) l.node->count[l.k] = std::uint8_t(blocks_for(l.count));
     }
-    kept.shrink_to_fit();
-    bvh.primitive_indices = std::move(kept);
-    bvh.blocks.shrink_to_fit();
-    bvh.sphere_blocks.shrink_to_fit();
+    assert(triangle_blocks <= kWideBvhMaxPrimitives && sphere_blocks <= kWideBvhMaxPrimitives);
+    LargeVector<std::uint32_t> kept_indices(kept);
+    bvh.blocks.assign(triangle_blocks, empty_triangle_block());
+    bvh.sphere_blocks.assign(sphere_blocks, empty_sphere_block());
+    tbb::parallel_for(
+        tbb::blocked_range<std::size_t>(0, leaves.size(), 256),
+        [&](const tbb::blocked_range<std::size_t>& r) {
+            for (std::size_t i = r.begin(); i != r.end(); ++i) {
+                const LeafSlot& l = leaves[i];
+                for (std::uint32_t j = 0; j < l.count; ++j) {
+                    const std::uint32_t block = starts[i] + j / 4;
+                    const int lane = int(j % 4);
+                    if (kinds[i] == LeafKind::triangles) {
+                        const BlockTriangle& t = triangle_items[l.first + j];
+                        set_block_lane(bvh.blocks[block], lane, t.v0, t.v1, t.v2, t.id);
+                    } else if (kinds[i] == LeafKind::spheres) {
+                        const BlockSphere& s = sphere_items[l.first + j];
+                        set_sphere_lane(bvh.sphere_blocks[block], lane, s.sphere, s.id);
+                    } else {
+                        kept_indices[starts[i] + j] = bvh.primitive_indices[l.first + j];
+                    }
+                }
+            }
+        });
+    bvh.primitive_indices = std::move(kept_indices);
 }
 
 }  // namespace glint
