@@ -103,9 +103,10 @@ struct BlockSphere {
 // Turns every leaf whose primitives are all triangles into a leaf of TriangleBlocks, and every
 // leaf whose primitives are all spheres into one of SphereBlocks: triangle(i) and sphere(i)
 // return primitive i as such, or nothing when it is not one (either may be empty: no such
-// leaves). Within a leaf, lanes run in ascending id, so that the lowest lane at equal t is the
-// lowest id. The entries of primitive_indices that such leaves used are dropped. Builds whose
-// leaves may mix kinds should separate them (build_bvh's kinds).
+// leaves; both are called from several threads at once). Within a leaf, lanes run in ascending
+// id, so that the lowest lane at equal t is the lowest id. The entries of primitive_indices that
+// such leaves used are dropped. Builds whose leaves may mix kinds should separate them (build_bvh's
+// kinds).
 void pack_block_leaves(WideBvh& bvh,
                        const std::function<std::optional<BlockTriangle>(std::uint32_t)>& triangle,
                        const std::function<std::optional<BlockSphere>(std::uint32_t)>& sphere = {});
