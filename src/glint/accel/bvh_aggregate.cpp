@@ -5,6 +5,7 @@
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
+#include <functional>
 #include <stdexcept>
 
 #include "glint/accel/rounding_margin.h"
@@ -101,10 +102,15 @@ BvhAggregate::BvhAggregate(std::span<const Primitive> primitives) : primitives_(
     // SAH counts triangles and spheres in blocks of four and other shapes one by one, as leaves
     // test them.
     bvh_ = build_wide_bvh(boxes, kWideBvhTriangleBuildOptions, kinds);
-    // Triangle lanes name references; sphere lanes, and leaves of whole shapes, primitives.
-    pack_block_leaves(
-        bvh_,
-        [&](std::uint32_t i) -> std::optional<BlockTriangle> {
+    // Triangle lanes name references; sphere lanes, and leaves of whole shapes, primitives. A kind
+    // the scene has none of gets no function, and pack_block_leaves no room for its items.
+    const auto any = [&](std::uint8_t kind) {
+        return std::find(kinds.begin(), kinds.end(), kind) != kinds.end();
+    };
+    std::function<std::optional<BlockTriangle>(std::uint32_t)> triangle_of;
+    std::function<std::optional<BlockSphere>(std::uint32_t)> sphere_of;
+    if (any(kTriangle))
+        triangle_of = [&](std::uint32_t i) -> std::optional<BlockTriangle> {
             if (kinds[i] != kTriangle) return std::nullopt;
             const std::uint32_t ref = bounded[i];
             const Reference r = reference(ref);
@@ -117,12 +123,14 @@ BvhAggregate::BvhAggregate(std::span<const Primitive> primitives) : primitives_(
             const auto& t = mesh.triangles[r.triangle];
             return BlockTriangle{mesh.positions[t[0]], mesh.positions[t[1]], mesh.positions[t[2]],
                                  ref};
-        },
-        [&](std::uint32_t i) -> std::optional<BlockSphere> {
+        };
+    if (any(kSphere))
+        sphere_of = [&](std::uint32_t i) -> std::optional<BlockSphere> {
             if (kinds[i] != kSphere) return std::nullopt;
             const std::uint32_t primitive = reference(bounded[i]).primitive;
             return BlockSphere{std::get<Sphere>(primitives[primitive].shape), primitive};
-        });
+        };
+    pack_block_leaves(bvh_, triangle_of, sphere_of);
     for (std::uint32_t& i : bvh_.primitive_indices) i = reference(bounded[i]).primitive;
 }
 

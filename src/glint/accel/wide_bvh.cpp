@@ -181,12 +181,14 @@ struct LeafSlot {
 
 enum class LeafKind : std::uint8_t { kept, triangles, spheres };
 
-// The leaf's primitives as items of one kind, into items[0, leaf.size()) sorted by id (lanes run
-// in ascending id); false when one of them is not of that kind.
+// The leaf's primitives as items of one kind, into items[first, first + leaf.size()) sorted by
+// id (lanes run in ascending id); false when one of them is not of that kind.
 template <typename Item>
 bool gather_leaf(std::span<const std::uint32_t> leaf,
-                 const std::function<std::optional<Item>(std::uint32_t)>& item_of, Item* items) {
-    if (!item_of) return false;
+                 const std::function<std::optional<Item>(std::uint32_t)>& item_of,
+                 LargeVector<Item>& all_items, std::uint32_t first) {
+    if (!item_of) return false;  // and no items: all_items is empty
+    Item* items = all_items.data() + first;
     for (std::size_t i = 0; i < leaf.size(); ++i) {
         const auto item = item_of(leaf[i]);
         if (!item) return false;
@@ -222,12 +224,11 @@ void pack_block_leaves(WideBvh& bvh,
                               const LeafSlot& l = leaves[i];
                               const std::span<const std::uint32_t> leaf(
                                   bvh.primitive_indices.data() + l.first, l.count);
-                              kinds[i] =
-                                  gather_leaf(leaf, triangle, triangle_items.data() + l.first)
-                                      ? LeafKind::triangles
-                                  : gather_leaf(leaf, sphere, sphere_items.data() + l.first)
-                                      ? LeafKind::spheres
-                                      : LeafKind::kept;
+                              kinds[i] = gather_leaf(leaf, triangle, triangle_items, l.first)
+                                             ? LeafKind::triangles
+                                         : gather_leaf(leaf, sphere, sphere_items, l.first)
+                                             ? LeafKind::spheres
+                                             : LeafKind::kept;
                           }
                       });
     // Where each leaf's blocks (or kept indices) start, in the leaves' order.
