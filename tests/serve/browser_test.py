@@ -75,9 +75,11 @@ def shown_frame(driver):
 
 
 def picture(driver):
-    """The pixels of the image on the page, summed per channel: enough to see it change."""
-    return driver.execute_script("""
+    """The pixels of the image on the page, summed per channel: enough to see it change. Waits
+    while a next frame's image loads: until then the element has no size."""
+    return wait_for(lambda: driver.execute_script("""
         const image = document.getElementById('image');
+        if (!image.complete || image.naturalWidth === 0) return null;
         const canvas = document.createElement('canvas');
         canvas.width = image.naturalWidth; canvas.height = image.naturalHeight;
         const context = canvas.getContext('2d');
@@ -85,7 +87,7 @@ def picture(driver):
         const data = context.getImageData(0, 0, canvas.width, canvas.height).data;
         const sums = [0, 0, 0];
         for (let i = 0; i < data.length; i += 4) for (let c = 0; c < 3; ++c) sums[c] += data[i + c];
-        return sums;""")
+        return sums;"""), what="the image to load")
 
 
 def next_finished_frame(driver, after):
