@@ -172,14 +172,17 @@ WideBvh build_wide_bvh(std::span<const Bounds3> bounds, const BvhBuildOptions& o
 
 namespace {
 
-// A leaf child of a wide node, with where its primitives are in primitive_indices.
+enum class LeafKind : std::uint8_t { kept, triangles, spheres };
+
+// A leaf child of a wide node: where its primitives are in primitive_indices, what they turned
+// out to be, and where its blocks (or kept indices) start.
 struct LeafSlot {
     WideBvhNode* node;
     int k;
     std::uint32_t first, count;
+    LeafKind kind = LeafKind::kept;
+    std::uint32_t start = 0;
 };
-
-enum class LeafKind : std::uint8_t { kept, triangles, spheres };
 
 // The leaf's primitives as items of one kind, into items[first, first + leaf.size()) sorted by
 // id (lanes run in ascending id); false when one of them is not of that kind.
@@ -210,67 +213,74 @@ void pack_block_leaves(WideBvh& bvh,
         for (int k = 0; k < kWideBvhWidth; ++k) {
             if (!node.is_leaf(k) || node.count[k] == 0) continue;
             assert((node.child[k] & kWideLeafKind) == kWidePrimitiveLeaf);
-            leaves.push_back({&node, k, node.child[k] & kWideLeafIndex, node.count[k]});
+            leaves.push_back({.node = &node,
+                              .k = k,
+                              .first = node.child[k] & kWideLeafIndex,
+                              .count = node.count[k]});
         }
     // Each leaf's items go where its primitives are in primitive_indices (the leaves' ranges do
     // not overlap), so that the leaves are gathered in parallel and laid out in order after.
     const std::size_t n = bvh.primitive_indices.size();
     LargeVector<BlockTriangle> triangle_items(triangle ? n : 0);
     LargeVector<BlockSphere> sphere_items(sphere ? n : 0);
-    std::vector<LeafKind> kinds(leaves.size());
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, leaves.size(), 256),
                       [&](const tbb::blocked_range<std::size_t>& r) {
                           for (std::size_t i = r.begin(); i != r.end(); ++i) {
-                              const LeafSlot& l = leaves[i];
+                              LeafSlot& l = leaves[i];
                               const std::span<const std::uint32_t> leaf(
                                   bvh.primitive_indices.data() + l.first, l.count);
-                              kinds[i] = gather_leaf(leaf, triangle, triangle_items, l.first)
-                                             ? LeafKind::triangles
-                                         : gather_leaf(leaf, sphere, sphere_items, l.first)
-                                             ? LeafKind::spheres
-                                             : LeafKind::kept;
+                              l.kind = gather_leaf(leaf, triangle, triangle_items, l.first)
+                                           ? LeafKind::triangles
+                                       : gather_leaf(leaf, sphere, sphere_items, l.first)
+                                           ? LeafKind::spheres
+                                           : LeafKind::kept;
                           }
                       });
     // Where each leaf's blocks (or kept indices) start, in the leaves' order.
-    std::vector<std::uint32_t> starts(leaves.size());
     std::uint32_t triangle_blocks = 0, sphere_blocks = 0, kept = 0;
-    for (std::size_t i = 0; i < leaves.size(); ++i) {
-        LeafSlot& l = leaves[i];
-        std::uint32_t& next = kinds[i] == LeafKind::triangles ? triangle_blocks
-                              : kinds[i] == LeafKind::spheres ? sphere_blocks
-                                                              : kept;
-        starts[i] = next;
-        next += kinds[i] == LeafKind::kept ? l.count : blocks_for(l.count);
-        const std::uint32_t tag = kinds[i] == LeafKind::triangles ? kWideTriangleLeaf
-                                  : kinds[i] == LeafKind::spheres ? kWideSphereLeaf
-                                                                  : kWidePrimitiveLeaf;
-        l.node->child[l.k] = kWideLeaf | tag | starts[i];
-        if (kinds[i] != LeafKind::kept) l.node->count[l.k] = std::uint8_t(blocks_for(l.count));
+    for (LeafSlot& l : leaves) {
+        std::uint32_t tag = kWidePrimitiveLeaf;
+        std::uint32_t* next = &kept;
+        if (l.kind == LeafKind::triangles) {
+            tag = kWideTriangleLeaf;
+            next = &triangle_blocks;
+        } else if (l.kind == LeafKind::spheres) {
+            tag = kWideSphereLeaf;
+            next = &sphere_blocks;
+        }
+        l.start = *next;
+        *next += l.kind == LeafKind::kept ? l.count : blocks_for(l.count);
+        l.node->child[l.k] = kWideLeaf | tag | l.start;
+        if (l.kind != LeafKind::kept) l.node->count[l.k] = std::uint8_t(blocks_for(l.count));
     }
     assert(triangle_blocks <= kWideBvhMaxPrimitives && sphere_blocks <= kWideBvhMaxPrimitives);
     LargeVector<std::uint32_t> kept_indices(kept);
     bvh.blocks.assign(triangle_blocks, empty_triangle_block());
     bvh.sphere_blocks.assign(sphere_blocks, empty_sphere_block());
-    tbb::parallel_for(
-        tbb::blocked_range<std::size_t>(0, leaves.size(), 256),
-        [&](const tbb::blocked_range<std::size_t>& r) {
-            for (std::size_t i = r.begin(); i != r.end(); ++i) {
-                const LeafSlot& l = leaves[i];
+    const auto fill = [&](const LeafSlot& l) {
+        switch (l.kind) {
+            case LeafKind::triangles:
                 for (std::uint32_t j = 0; j < l.count; ++j) {
-                    const std::uint32_t block = starts[i] + j / 4;
-                    const int lane = int(j % 4);
-                    if (kinds[i] == LeafKind::triangles) {
-                        const BlockTriangle& t = triangle_items[l.first + j];
-                        set_block_lane(bvh.blocks[block], lane, t.v0, t.v1, t.v2, t.id);
-                    } else if (kinds[i] == LeafKind::spheres) {
-                        const BlockSphere& s = sphere_items[l.first + j];
-                        set_sphere_lane(bvh.sphere_blocks[block], lane, s.sphere, s.id);
-                    } else {
-                        kept_indices[starts[i] + j] = bvh.primitive_indices[l.first + j];
-                    }
+                    const BlockTriangle& t = triangle_items[l.first + j];
+                    set_block_lane(bvh.blocks[l.start + j / 4], int(j % 4), t.v0, t.v1, t.v2, t.id);
                 }
-            }
-        });
+                break;
+            case LeafKind::spheres:
+                for (std::uint32_t j = 0; j < l.count; ++j) {
+                    const BlockSphere& s = sphere_items[l.first + j];
+                    set_sphere_lane(bvh.sphere_blocks[l.start + j / 4], int(j % 4), s.sphere, s.id);
+                }
+                break;
+            case LeafKind::kept:
+                std::copy_n(bvh.primitive_indices.data() + l.first, l.count,
+                            kept_indices.data() + l.start);
+                break;
+        }
+    };
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, leaves.size(), 256),
+                      [&](const tbb::blocked_range<std::size_t>& r) {
+                          for (std::size_t i = r.begin(); i != r.end(); ++i) fill(leaves[i]);
+                      });
     bvh.primitive_indices = std::move(kept_indices);
 }
 
