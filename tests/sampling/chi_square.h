@@ -101,7 +101,8 @@ double adaptive_simpson_2d(const F& f, double x0, double x1, double y0, double y
     // Inner integrals ten times finer, so their noise does not drive the outer refinement.
     const double inner_tolerance = 0.1 * tolerance / (y1 - y0);
     const auto row = [&](double y) {
-        return adaptive_simpson([&](double x) { return f(x, y); }, x0, x1, inner_tolerance);
+        const auto along_row = [&f, y](double x) { return f(x, y); };
+        return adaptive_simpson(along_row, x0, x1, inner_tolerance);
     };
     return adaptive_simpson(row, y0, y1, tolerance);
 }
