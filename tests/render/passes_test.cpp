@@ -6,6 +6,7 @@
 #include <cstring>
 #include <thread>
 
+#include "common/under_sanitizer.h"
 #include "glint/render/render.h"
 #include "glint/scene/yaml/yaml_scene_loader.h"
 
@@ -108,9 +109,11 @@ TEST(Passes, RenderStoppedAfterEachPassAndContinuedIsIdentical) {
 TEST(Passes, RenderStoppedBetweenTilesAndContinuedIsIdentical) {
     int mid_pass = 0;
     for (Case& c : cases()) {
-        // Larger, in small tiles: the stops, timed by another thread, fall within passes.
-        c.scene.settings.width *= 3;
-        c.scene.settings.height *= 3;
+        // Larger, in small tiles: the stops, timed by another thread, fall within passes. Twice
+        // as large under a sanitizer, where each of the many restarts costs more.
+        const int scale = testing::kUnderSanitizer ? 2 : 3;
+        c.scene.settings.width *= scale;
+        c.scene.settings.height *= scale;
         const World world(c.scene);
         RenderOptions options = options_of(1, 3);
         options.tile_size = 4;
