@@ -21,7 +21,7 @@
 #include "glint/accel/wide_bvh_traversal.h"
 #include "glint/geometry/simd_path.h"
 
-namespace glint {
+namespace glint::wide_bvh_test {
 namespace {
 
 // A million under a sanitizer takes minutes (ThreadSanitizer: 284 s); 100,000 still makes the
@@ -707,4 +707,4 @@ TEST(SimdPath, ScalarIsAlwaysSupportedAndSwitchable) {
 }
 
 }  // namespace
-}  // namespace glint
+}  // namespace glint::wide_bvh_test

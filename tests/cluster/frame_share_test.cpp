@@ -18,7 +18,7 @@
 #include "glint/render/state_transfer.h"
 #include "glint/scene/animation.h"
 
-namespace glint {
+namespace glint::frame_share_test {
 namespace {
 
 using testing::ThreadCluster;
@@ -195,4 +195,4 @@ TEST_F(FrameShare, ASilentRankEndsTheJobNamingIt) {
 }
 
 }  // namespace
-}  // namespace glint
+}  // namespace glint::frame_share_test

@@ -7,7 +7,7 @@
 #include "glint/geometry/sphere.h"
 #include "shape_property_checks.h"
 
-namespace glint {
+namespace glint::quadric_test {
 namespace {
 
 using testing::expect_shape_properties;
@@ -232,4 +232,4 @@ TEST(Quadric, InsideExtentCompletesTheSquares) {
 }
 
 }  // namespace
-}  // namespace glint
+}  // namespace glint::quadric_test

@@ -12,7 +12,7 @@
 #include "glint/math/constants.h"
 #include "glint/sampling/random.h"
 
-namespace glint {
+namespace glint::surface_sampler_test {
 namespace {
 
 Point2 u_of(int i) { return {random_float(i, 0, 0, 1), random_float(i, 0, 1, 1)}; }
@@ -118,4 +118,4 @@ TEST(SurfaceSampler, ConvexPolygonsAreDrawnOnConcaveOnesAndUnboundedShapesAreNot
 }
 
 }  // namespace
-}  // namespace glint
+}  // namespace glint::surface_sampler_test

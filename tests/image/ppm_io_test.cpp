@@ -10,7 +10,7 @@
 #include "glint/image/srgb.h"
 #include "test_files.h"
 
-namespace glint {
+namespace glint::ppm_io_test {
 namespace {
 
 using namespace std::string_literals;
@@ -130,4 +130,4 @@ TEST(Ppm, MissingFileIsAnError) {
 }
 
 }  // namespace
-}  // namespace glint
+}  // namespace glint::ppm_io_test

@@ -9,7 +9,7 @@
 
 #include "glint/math/constants.h"
 
-namespace glint {
+namespace glint::animated_transform_test {
 namespace {
 
 void expect_near(Point3 a, Point3 b, float tol) {
@@ -344,4 +344,4 @@ TEST(MotionBounds, StaticEmptyAndUnboundedBoxes) {
 }
 
 }  // namespace
-}  // namespace glint
+}  // namespace glint::animated_transform_test

@@ -10,7 +10,7 @@
 #include "chi_square.h"
 #include "glint/sampling/random.h"
 
-namespace glint {
+namespace glint::filter_sampling_test {
 namespace {
 
 constexpr std::uint64_t kSamples = 1'000'000;
@@ -160,4 +160,4 @@ TEST(FilterSampling, WeightedMeansAreTheFiltersWeightedMeans) {
 }
 
 }  // namespace
-}  // namespace glint
+}  // namespace glint::filter_sampling_test

@@ -12,7 +12,7 @@
 #include "chi_square.h"
 #include "glint/sampling/random.h"
 
-namespace glint {
+namespace glint::warp_test {
 namespace {
 
 constexpr double kPiD = std::numbers::pi;
@@ -474,4 +474,4 @@ TEST(VisibleWavelength, EndsMedianAndMonotonicity) {
 }
 
 }  // namespace
-}  // namespace glint
+}  // namespace glint::warp_test

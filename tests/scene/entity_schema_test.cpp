@@ -17,7 +17,7 @@
 #include "glint/scene/yaml/yaml_shapes.h"
 #include "glint/shading/material.h"
 
-namespace glint {
+namespace glint::entity_schema_test {
 namespace {
 
 std::string read_text(const std::string& relative) {
@@ -193,4 +193,4 @@ TEST(EntitySchema, TheFuzzDictionaryHoldsEveryKey) {
 }
 
 }  // namespace
-}  // namespace glint
+}  // namespace glint::entity_schema_test

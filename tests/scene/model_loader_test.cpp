@@ -12,7 +12,7 @@
 #include "glint/scene/scene_error.h"
 #include "glint/shading/texture.h"
 
-namespace glint {
+namespace glint::model_loader_test {
 namespace {
 
 const std::filesystem::path kMeshes = std::filesystem::path(GLINT_SOURCE_DIR) / "tests/data/meshes";
@@ -278,4 +278,4 @@ TEST(ModelLoader, ErrorsAreSceneErrorsNamingTheFile) {
 }
 
 }  // namespace
-}  // namespace glint
+}  // namespace glint::model_loader_test

@@ -18,7 +18,7 @@
 #include "bad_file_checks.h"
 #include "glint/scene/nff/nff_to_scene.h"
 
-namespace glint {
+namespace glint::nff_parser_test {
 namespace {
 
 const std::filesystem::path kSource(GLINT_SOURCE_DIR);
@@ -390,4 +390,4 @@ TEST(BadNffFiles, EachGivesItsStatedError) {
 }
 
 }  // namespace
-}  // namespace glint
+}  // namespace glint::nff_parser_test

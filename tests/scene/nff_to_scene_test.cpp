@@ -9,7 +9,7 @@
 
 #include "glint/scene/nff/nff_parser.h"
 
-namespace glint {
+namespace glint::nff_to_scene_test {
 namespace {
 
 const char* const kView =
@@ -75,4 +75,4 @@ TEST(NffToScene, RepeatedMaterialsBecomeOne) {
 }
 
 }  // namespace
-}  // namespace glint
+}  // namespace glint::nff_to_scene_test

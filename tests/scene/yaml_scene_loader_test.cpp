@@ -8,7 +8,7 @@
 #include <sstream>
 #include <variant>
 
-namespace glint {
+namespace glint::yaml_scene_loader_test {
 namespace {
 
 const std::filesystem::path kSourceDir = GLINT_SOURCE_DIR;
@@ -519,4 +519,4 @@ TEST(YamlScene, EmitsLightOnAMaterialWithoutEmissionIsWarnedAbout) {
 }
 
 }  // namespace
-}  // namespace glint
+}  // namespace glint::yaml_scene_loader_test

@@ -10,7 +10,7 @@
 #include <string>
 #include <thread>
 
-namespace glint::serve {
+namespace glint::serve::watched_scene_test {
 namespace {
 
 namespace fs = std::filesystem;
@@ -86,4 +86,4 @@ TEST(WatchedScene, ASaveWhileTheSceneLoadsIsLoadedAtTheNextLook) {
 }
 
 }  // namespace
-}  // namespace glint::serve
+}  // namespace glint::serve::watched_scene_test

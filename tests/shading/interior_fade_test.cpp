@@ -8,7 +8,7 @@
 
 #include "glint/math/interval.h"
 
-namespace glint {
+namespace glint::interior_fade_test {
 namespace {
 
 void expect_near(Color a, Color b, float tol = 1e-6f) {
@@ -59,4 +59,4 @@ TEST(InteriorFade, DescribesNumbersNoSceneMayGive) {
 }
 
 }  // namespace
-}  // namespace glint
+}  // namespace glint::interior_fade_test

@@ -9,7 +9,7 @@
 #include "glint/math/constants.h"
 #include "glint/sampling/random.h"
 
-namespace glint {
+namespace glint::noise_test {
 namespace {
 
 constexpr float kInf = std::numeric_limits<float>::infinity();
@@ -443,4 +443,4 @@ TEST(BumpNormal, NoiseBumpsGiveUnitNormalsOnTheSameSide) {
 }
 
 }  // namespace
-}  // namespace glint
+}  // namespace glint::noise_test

@@ -9,7 +9,7 @@
 
 #include "glint/shading/noise.h"
 
-namespace glint {
+namespace glint::normal_pattern_test {
 namespace {
 
 NormalPattern gradient_x(float amount) {
@@ -133,4 +133,4 @@ TEST(NormalPattern, NothingToAddLeavesTheNormal) {
 }
 
 }  // namespace
-}  // namespace glint
+}  // namespace glint::normal_pattern_test

@@ -6,7 +6,7 @@
 
 #include "glint/math/constants.h"
 
-namespace glint {
+namespace glint::optics_test {
 namespace {
 
 void expect_near(Vector3 a, Vector3 b, float tol = 1e-5f) {
@@ -58,4 +58,4 @@ TEST(Optics, TotalInternalReflectionPastTheCriticalAngle) {
 }
 
 }  // namespace
-}  // namespace glint
+}  // namespace glint::optics_test

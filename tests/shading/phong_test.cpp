@@ -2,7 +2,7 @@
 
 #include <gtest/gtest.h>
 
-namespace glint {
+namespace glint::phong_test {
 namespace {
 
 void expect_near(Color a, Color b, float tol = 1e-5f) {
@@ -87,4 +87,4 @@ TEST(Phong, MetallicTintsTheHighlight) {
 }
 
 }  // namespace
-}  // namespace glint
+}  // namespace glint::phong_test

@@ -8,7 +8,7 @@
 #include "glint/scene/pov/pov_scene.h"
 #include "glint/scene/scene_error.h"
 
-namespace glint {
+namespace glint::pov_radiosity_test {
 namespace {
 
 Scene parse(const std::string& text) {
@@ -127,4 +127,4 @@ TEST(PovRadiosity, EmissionFollowsThePigment) {
 }
 
 }  // namespace
-}  // namespace glint
+}  // namespace glint::pov_radiosity_test

@@ -15,7 +15,7 @@
 #include "glint/sampling/perlin_noise.h"
 #include "glint/scene/scene_error.h"
 
-namespace glint {
+namespace glint::pov_scene_test {
 namespace {
 
 Scene parse(const std::string& text) {
@@ -1473,4 +1473,4 @@ TEST(PovScene, DefaultTexturesApplyToLaterObjectsWithoutOne) {
 }
 
 }  // namespace
-}  // namespace glint
+}  // namespace glint::pov_scene_test
