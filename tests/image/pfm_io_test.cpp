@@ -10,8 +10,7 @@
 
 #include "test_files.h"
 
-namespace glint {
-namespace {
+namespace glint::pfm_io_test {
 
 using namespace std::string_literals;
 
@@ -115,5 +114,4 @@ TEST(Pfm, MalformedFilesNameTheFileAndTheProblem) {
     expect_error("no_gap.pfm", "PF\n1 1\n-1.0", "no single whitespace byte");
 }
 
-}  // namespace
-}  // namespace glint
+}  // namespace glint::pfm_io_test

@@ -4,8 +4,7 @@
 
 #include <gtest/gtest.h>
 
-namespace glint {
-namespace {
+namespace glint::setting_overrides_test {
 
 RenderSettings scene_settings() {
     RenderSettings s;
@@ -85,5 +84,4 @@ TEST(SettingOverrides, TheSettingsAsAWholeAreCheckedAsAScenesAre) {
     EXPECT_EQ(error_of({.height = 65536}).key(), "");
 }
 
-}  // namespace
-}  // namespace glint
+}  // namespace glint::setting_overrides_test

@@ -7,8 +7,7 @@
 
 #include "glint/scene/yaml/yaml_scene_loader.h"
 
-namespace glint {
-namespace {
+namespace glint::yaml_placement_test {
 
 constexpr const char* kCamera = "camera: {from: [0, 0, -5], at: [0, 0, 0]}\n";
 
@@ -141,5 +140,4 @@ objects:
     expect_near(c.world_from_object()(Point3{0, 1, 0}), {0, 2, 3});
 }
 
-}  // namespace
-}  // namespace glint
+}  // namespace glint::yaml_placement_test

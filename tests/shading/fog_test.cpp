@@ -11,8 +11,7 @@
 
 #include "glint/math/interval.h"
 
-namespace glint {
-namespace {
+namespace glint::fog_test {
 
 constexpr double kPi = std::numbers::pi;
 
@@ -150,5 +149,4 @@ TEST(Fog, TurbulenceThinsNearFogAndLeavesDistantFogAlone) {
     EXPECT_NEAR(optical_depth(fog, {{1, 2, 3}, {0, 0, 1}}, 4), 0.4, 1e-12);
 }
 
-}  // namespace
-}  // namespace glint
+}  // namespace glint::fog_test

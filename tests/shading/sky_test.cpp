@@ -10,8 +10,7 @@
 #include "glint/sampling/random.h"
 #include "sampling/chi_square.h"
 
-namespace glint {
-namespace {
+namespace glint::sky_test {
 
 constexpr double kPiD = std::numbers::pi;
 
@@ -178,5 +177,4 @@ TEST(Sky, ImportanceSamplesEstimateTheIntegralOfTheRadiance) {
     EXPECT_NEAR(sky.mean_radiance().r * 4 * kPiD / exact, 1, 0.02);
 }
 
-}  // namespace
-}  // namespace glint
+}  // namespace glint::sky_test

@@ -7,8 +7,7 @@
 
 #include "glint/sampling/random.h"
 
-namespace glint {
-namespace {
+namespace glint::spectrum_test {
 
 void expect_near(Color a, Color b, float tol) {
     EXPECT_NEAR(a.r, b.r, tol);
@@ -166,5 +165,4 @@ TEST(Dispersion, CauchyIndexBelowZeroIsAProblemBelowOneIsNot) {
     EXPECT_EQ(describe_problem(not_finite, 1), "cauchy coefficients must be finite, got nan");
 }
 
-}  // namespace
-}  // namespace glint
+}  // namespace glint::spectrum_test
