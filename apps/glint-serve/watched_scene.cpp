@@ -1,6 +1,8 @@
 // Files are compared by size and modification time: an editor's save changes one or the other,
 // and reading them whole at every look would cost as much as loading the scene. They are stamped
-// before they are read, so that a save while the scene loads is seen at the next look.
+// before they are read, so that a save while the scene loads is seen at the next look. A change
+// is loaded at the look after the one that saw it, if nothing changed in between: a save that
+// truncates the file and then writes it would otherwise load, now and then, as an empty scene.
 #include "watched_scene.h"
 
 #include <algorithm>
@@ -54,7 +56,15 @@ void WatchedScene::watch(const Scene* scene, const std::vector<Stamp>& seen) {
 bool WatchedScene::reload_if_changed() {
     std::vector<Stamp> seen;
     for (const Stamp& stamp : stamps_) seen.push_back(stamp_of(stamp.path));
-    if (seen == stamps_) return false;
+    if (seen == stamps_) {
+        settling_.clear();
+        return false;
+    }
+    if (seen != settling_) {  // still changing, or changed just now: look again first
+        settling_ = std::move(seen);
+        return false;
+    }
+    settling_.clear();
     std::shared_ptr<const Scene> scene;
     std::string error;
     try {

@@ -27,8 +27,9 @@ public:
     Loaded current() const;
     const std::filesystem::path& file() const { return file_; }
 
-    // Looks at the files' sizes and times, and loads the scene again when one changed. Returns
-    // whether it did. Called by one thread at a time.
+    // Looks at the files' sizes and times, and loads the scene again when one changed and has
+    // stayed as it is since the previous look: an editor that empties the file, then writes it,
+    // is not caught in between. Returns whether it loaded. Called by one thread at a time.
     bool reload_if_changed();
 
 private:
@@ -46,8 +47,9 @@ private:
 
     std::filesystem::path file_;
     LoadOptions options_;
-    std::vector<Stamp> stamps_;  // the scene file's first
-    mutable std::mutex mutex_;   // over loaded_
+    std::vector<Stamp> stamps_;    // the scene file's first
+    std::vector<Stamp> settling_;  // what the last look saw, when it differed from stamps_
+    mutable std::mutex mutex_;     // over loaded_
     Loaded loaded_;
 };
 
