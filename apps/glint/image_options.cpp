@@ -1,6 +1,8 @@
 // The image options as the command line takes them; the library applies and checks them.
 #include "image_options.h"
 
+#include <CLI/CLI.hpp>
+
 #include "glint/sampling/sampler.h"
 #include "usage_error.h"
 #include "whole_number_option.h"

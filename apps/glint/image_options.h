@@ -2,12 +2,15 @@
 // (`render`, `explain`): an explained sample is the rendered one only under the same settings.
 #pragma once
 
-#include <CLI/CLI.hpp>
 #include <optional>
 #include <string>
 
 #include "glint/scene/scene.h"
 #include "glint/scene/setting_overrides.h"
+
+namespace CLI {
+class App;
+}  // namespace CLI
 
 namespace glint::cli {
 

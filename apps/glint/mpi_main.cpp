@@ -6,12 +6,11 @@
 #include <mpi.h>
 #include <stdlib.h>
 
-#include <CLI/CLI.hpp>
 #include <algorithm>
 #include <csignal>
 #include <cstdio>
 #include <filesystem>
-#include <sstream>
+#include <optional>
 #include <string>
 
 #include "command_errors.h"
@@ -19,8 +18,8 @@
 #include "glint/cluster/frame_share.h"
 #include "glint/scene/animation.h"
 #include "glint/scene/load_scene.h"
+#include "mpi_command_line.h"
 #include "mpi_transport.h"
-#include "render_cli.h"
 #include "render_command.h"
 #include "render_setup.h"
 #include "scene_broadcast.h"
@@ -32,13 +31,6 @@
 
 namespace glint::cli {
 namespace {
-
-constexpr const char* kExamples = R"(
-Examples:
-  mpirun -np 4 glint-mpi render scenes/showcase.yaml -o showcase.exr
-  mpirun --hostfile hosts -np 32 glint-mpi render big.yaml -o big.exr --checkpoint 10
-  srun glint-mpi render big.yaml -o big.exr --threads 8
-)";
 
 // What decides each rank's share of the render: ranks whose texts differ did not load the same
 // scene with the same options.
@@ -200,27 +192,13 @@ int main(int argc, char** argv) {
     int rank = 0;
     MPI_Comm_rank(MPI_COMM_WORLD, &rank);
 
-    CLI::App app{"glint-mpi: glint render across the ranks of an MPI job (mpirun, srun)"};
-    app.footer(kExamples);
-    app.set_version_flag("--version", std::string("glint ") + GLINT_VERSION + " (glint-mpi)");
-    app.require_subcommand(1);
-    RenderCommand render;
-    CLI::App* render_app = add_render_command(app, render);
-    double rank_timeout = 300;
-    render_app
-        ->add_option("--rank-timeout", rank_timeout,
-                     "How long rank 0 waits for a rank that holds work before ending the job "
-                     "(seconds; default 300)")
-        ->check(CLI::PositiveNumber);
-    try {
-        app.parse(argc, argv);
-    } catch (const CLI::ParseError& e) {
-        // Every rank reads the same command: rank 0 alone says what is wrong.
-        std::ostringstream quiet;
-        const int code = rank == 0 ? app.exit(e) : app.exit(e, quiet, quiet);
+    MpiCommand command;
+    if (const std::optional<int> status = parse_mpi_command_line(argc, argv, rank != 0, command)) {
         MPI_Finalize();
-        return code == 0 ? 0 : kExitBadInput;
+        return *status;
     }
+    const RenderCommand& render = command.render;
+    const double rank_timeout = command.rank_timeout;
     int code = 0;
     {
         MpiTransport transport;

@@ -1,6 +1,7 @@
 // The options of `glint render`, which glint-mpi's `render` takes too.
 #include "render_cli.h"
 
+#include <CLI/CLI.hpp>
 #include <cstdint>
 #include <limits>
 #include <string>

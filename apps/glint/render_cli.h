@@ -1,9 +1,11 @@
 // `render` and its options on a command line: glint's and glint-mpi's.
 #pragma once
 
-#include <CLI/CLI.hpp>
-
 #include "render_command.h"
+
+namespace CLI {
+class App;
+}  // namespace CLI
 
 namespace glint::cli {
 
