@@ -213,24 +213,29 @@ double seconds_on(int threads, F&& f) {
     return seconds;
 }
 
-enum class Build { binary, wide, scene_wide, scene_embree };
+enum class Build { binary, collapse, wide, scene_wide, scene_embree };
 
-// Builds over the scene's largest mesh (binary; wide: the mesh's own tree of triangle blocks), or
-// the whole scene as the renderer needs it (scene_wide: the scene-level tree over all primitives
-// and triangles; scene_embree: Embree's one BVH over the same). Manual time: the build alone, on
-// `threads`.
+// Builds over the scene's largest mesh (binary; collapse: the binary tree made wide, its build not
+// timed; wide: the mesh's own tree of triangle blocks), or the whole scene as the renderer needs
+// it (scene_wide: the scene-level tree over all primitives and triangles; scene_embree: Embree's
+// one BVH over the same). Manual time: the build alone, on `threads`.
 void build(benchmark::State& state, const std::string& file, Build what, int threads) {
     Subject* s = subject(file);
-    if (!s || ((what == Build::binary || what == Build::wide) && !s->mesh)) {
+    if (!s || (what != Build::scene_wide && what != Build::scene_embree && !s->mesh)) {
         state.SkipWithError("scene or mesh not available");
         return;
     }
     const std::span<const Primitive> prims = s->world->primitives();
     for (auto _ : state) {
+        Bvh binary;
+        if (what == Build::collapse) binary = s->mesh_binary;
         const double seconds = seconds_on(threads, [&] {
             switch (what) {
                 case Build::binary:
                     benchmark::DoNotOptimize(build_bvh(s->triangle_bounds).nodes.data());
+                    break;
+                case Build::collapse:
+                    benchmark::DoNotOptimize(collapse_to_wide_bvh(std::move(binary)).nodes.data());
                     break;
                 case Build::wide:
                     benchmark::DoNotOptimize(MeshBvh(s->mesh).tree().nodes.data());
@@ -273,6 +278,10 @@ void register_all() {
             if (mesh_level) {
                 benchmark::RegisterBenchmark(("Build/" + name + "/mesh_binary" + suffix).c_str(),
                                              build, file, Build::binary, threads)
+                    ->UseManualTime()
+                    ->Unit(benchmark::kMillisecond);
+                benchmark::RegisterBenchmark(("Build/" + name + "/mesh_collapse" + suffix).c_str(),
+                                             build, file, Build::collapse, threads)
                     ->UseManualTime()
                     ->Unit(benchmark::kMillisecond);
                 benchmark::RegisterBenchmark(("Build/" + name + "/mesh_wide" + suffix).c_str(),
