@@ -6,6 +6,7 @@
 #include <string>
 
 #include "bench_command.h"
+#include "command_errors.h"
 #include "explain_command.h"
 #include "info_command.h"
 #include "merge_command.h"
@@ -67,7 +68,7 @@ int run_glint_command_line(int argc, char** argv) {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {
         // --help and --version end parsing with a success code; all else is bad usage.
-        return app.exit(e) == 0 ? 0 : 2;
+        return app.exit(e) == 0 ? 0 : kExitBadInput;
     }
     if (bench_app->parsed()) return run_bench(bench);
     if (explain_app->parsed()) return run_explain(explain);

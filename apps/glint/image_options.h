@@ -5,12 +5,9 @@
 #include <optional>
 #include <string>
 
+#include "cli_app_forward.h"
 #include "glint/scene/scene.h"
 #include "glint/scene/setting_overrides.h"
-
-namespace CLI {
-class App;
-}  // namespace CLI
 
 namespace glint::cli {
 

@@ -1,11 +1,8 @@
 // `render` and its options on a command line: glint's and glint-mpi's.
 #pragma once
 
+#include "cli_app_forward.h"
 #include "render_command.h"
-
-namespace CLI {
-class App;
-}  // namespace CLI
 
 namespace glint::cli {
 

@@ -8,11 +8,8 @@
 #include <string>
 #include <vector>
 
+#include "cli_app_forward.h"
 #include "glint/scene/load_scene.h"
-
-namespace CLI {
-class App;
-}  // namespace CLI
 
 namespace glint::cli {
 
