@@ -9,13 +9,18 @@
 #include <tbb/task_arena.h>
 
 #include <chrono>
+#include <cstdlib>
 #include <filesystem>
 #include <map>
 #include <memory>
+#include <sstream>
 #include <string>
 #include <vector>
 
 #include "glint/accel/bvh.h"
+#ifdef GLINT_HAVE_EMBREE
+#include "glint/accel/embree_aggregate.h"
+#endif
 #include "glint/accel/make_aggregate.h"
 #include "glint/accel/mesh_bvh.h"
 #include "glint/accel/rounding_margin.h"
@@ -213,15 +218,18 @@ double seconds_on(int threads, F&& f) {
     return seconds;
 }
 
-enum class Build { binary, collapse, wide, scene_wide, scene_embree };
+enum class Build { binary, collapse, wide, scene_wide, scene_embree, scene_embree_medium };
 
 // Builds over the scene's largest mesh (binary; collapse: the binary tree made wide, its build not
 // timed; wide: the mesh's own tree of triangle blocks), or the whole scene as the renderer needs
 // it (scene_wide: the scene-level tree over all primitives and triangles; scene_embree: Embree's
-// one BVH over the same). Manual time: the build alone, on `threads`.
+// one BVH over the same, at the high quality glint asks of it, or at medium quality, binned SAH
+// without spatial splits as glint's own build). Manual time: the build alone, on `threads`.
 void build(benchmark::State& state, const std::string& file, Build what, int threads) {
     Subject* s = subject(file);
-    if (!s || (what != Build::scene_wide && what != Build::scene_embree && !s->mesh)) {
+    const bool scene_level = what == Build::scene_wide || what == Build::scene_embree ||
+                             what == Build::scene_embree_medium;
+    if (!s || (!scene_level && !s->mesh)) {
         state.SkipWithError("scene or mesh not available");
         return;
     }
@@ -246,6 +254,12 @@ void build(benchmark::State& state, const std::string& file, Build what, int thr
                 case Build::scene_embree:
                     benchmark::DoNotOptimize(make_aggregate(AccelKind::embree, prims).get());
                     break;
+                case Build::scene_embree_medium:
+#ifdef GLINT_HAVE_EMBREE
+                    benchmark::DoNotOptimize(
+                        std::make_unique<EmbreeAggregate>(prims, EmbreeBuildQuality::medium).get());
+#endif
+                    break;
             }
         });
         state.SetIterationTime(seconds);
@@ -254,10 +268,17 @@ void build(benchmark::State& state, const std::string& file, Build what, int thr
 }
 
 void register_all() {
-    const char* const scenes[] = {"spd/teapot-s30.nff.gz", "spd/tetra-s9.nff.gz", "spd/balls.nff",
-                                  "meshes/stanford-bunny.obj", "meshes/fandisk.obj"};
+    std::vector<std::string> scenes = {"spd/teapot-s30.nff.gz", "spd/tetra-s9.nff.gz",
+                                       "spd/balls.nff", "meshes/stanford-bunny.obj",
+                                       "meshes/fandisk.obj"};
+    // More meshes by path (such as bench/subdivide_obj.py's), separated by ':'.
+    if (const char* extra = std::getenv("GLINT_BVH_BENCH_MESHES")) {
+        std::stringstream list(extra);
+        for (std::string path; std::getline(list, path, ':');)
+            if (!path.empty()) scenes.push_back(path);
+    }
     const char* const set_names[] = {"primary", "incoherent", "shadow"};
-    for (const char* file : scenes) {
+    for (const std::string& file : scenes) {
         const std::string name = std::filesystem::path(file).filename().string();
         // Meshes at the bottom level; the SPD balls (spheres) at the top.
         const bool mesh_level = name != "balls.nff";
@@ -296,6 +317,11 @@ void register_all() {
 #ifdef GLINT_HAVE_EMBREE
             benchmark::RegisterBenchmark(("Build/" + name + "/scene_embree" + suffix).c_str(),
                                          build, file, Build::scene_embree, threads)
+                ->UseManualTime()
+                ->Unit(benchmark::kMillisecond);
+            benchmark::RegisterBenchmark(
+                ("Build/" + name + "/scene_embree_medium" + suffix).c_str(), build, file,
+                Build::scene_embree_medium, threads)
                 ->UseManualTime()
                 ->Unit(benchmark::kMillisecond);
 #endif

@@ -259,7 +259,7 @@ std::vector<float> padded_copy(std::span<const Point3> points) {
 
 }  // namespace
 
-EmbreeAggregate::EmbreeAggregate(std::span<const Primitive> primitives)
+EmbreeAggregate::EmbreeAggregate(std::span<const Primitive> primitives, EmbreeBuildQuality quality)
     : primitives_(primitives), scene_(std::make_unique<Scene>()) {
     if (!device().handle) throw std::runtime_error(device().error);
     if (primitives.size() > std::numeric_limits<std::uint32_t>::max())
@@ -299,7 +299,9 @@ EmbreeAggregate::EmbreeAggregate(std::span<const Primitive> primitives)
     s.handle = rtcNewScene(device().handle);
     check("creating a scene");
     rtcSetSceneFlags(s.handle, RTC_SCENE_FLAG_ROBUST);
-    rtcSetSceneBuildQuality(s.handle, RTC_BUILD_QUALITY_HIGH);
+    rtcSetSceneBuildQuality(s.handle, quality == EmbreeBuildQuality::high
+                                          ? RTC_BUILD_QUALITY_HIGH
+                                          : RTC_BUILD_QUALITY_MEDIUM);
 
     std::unordered_map<const MeshData*, std::size_t> copy_of;  // shared meshes are copied once
     for (unsigned id = 0; id < s.geometries.size(); ++id) {

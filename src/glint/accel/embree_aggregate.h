@@ -16,8 +16,9 @@ namespace glint {
 // other bounded shape is an Embree user geometry whose callbacks call glint's bounds() and
 // intersect(); unbounded shapes (planes) are tested one by one beside the scene, as in
 // BvhAggregate. The scene is built with RTC_SCENE_FLAG_ROBUST (watertight triangles, conservative
-// boxes) and RTC_BUILD_QUALITY_HIGH (spatial splits for triangles): render quality over build
-// speed. Visibility masks are Embree's geometry masks.
+// boxes) and, by default, RTC_BUILD_QUALITY_HIGH (spatial splits for triangles): render quality
+// over build speed. Medium quality (binned SAH alone, as glint's own build) is the reference for
+// build times. Visibility masks are Embree's geometry masks.
 //
 // Differences from the other aggregates, all from Embree's own triangle test:
 // - Triangle t values may differ from glint's Moeller-Trumbore in the last bits, and a ray that
@@ -26,11 +27,14 @@ namespace glint {
 // - At exactly equal t, hits between user geometries and the plane list follow nearer() (the lower
 //   primitive index); a tie that involves an Embree triangle may resolve either way.
 // - Embree traces only in front of the origin: a negative t_range.min counts as 0.
+enum class EmbreeBuildQuality { medium, high };
+
 class EmbreeAggregate final : public Aggregate {
 public:
     // Throws std::runtime_error when Embree cannot create its device or build the scene (with
     // Embree's message). Builds run on the calling thread's oneTBB arena.
-    explicit EmbreeAggregate(std::span<const Primitive> primitives);
+    explicit EmbreeAggregate(std::span<const Primitive> primitives,
+                             EmbreeBuildQuality quality = EmbreeBuildQuality::high);
     ~EmbreeAggregate() override;
     EmbreeAggregate(const EmbreeAggregate&) = delete;
     EmbreeAggregate& operator=(const EmbreeAggregate&) = delete;
