@@ -8,6 +8,8 @@
 #include <tbb/info.h>
 #include <tbb/task_arena.h>
 
+#include <algorithm>
+#include <bit>
 #include <chrono>
 #include <cstdlib>
 #include <filesystem>
@@ -25,6 +27,7 @@
 #include "glint/accel/mesh_bvh.h"
 #include "glint/accel/rounding_margin.h"
 #include "glint/accel/wide_bvh.h"
+#include "glint/accel/wide_bvh_packet.h"
 #include "glint/accel/wide_bvh_traversal.h"
 #include "glint/geometry/simd_path.h"
 #include "glint/render/ray_sets.h"
@@ -100,7 +103,7 @@ Subject* subject(const std::string& file) {
     return slot.get();
 }
 
-enum class Tree { binary, wide };
+enum class Tree { binary, wide, packet };
 
 // Traces one set through the binary tree, one triangle at a time; returns the hits (to check
 // that the trees agree).
@@ -132,6 +135,25 @@ std::size_t trace_mesh(const MeshBvh& mesh, const RaySet& set) {
         hits += set.query == RayQuery::occluded
                     ? mesh.occluded(set.rays[i], set.range(i))
                     : mesh.intersect(set.rays[i], set.range(i)).has_value();
+    }
+    return hits;
+}
+
+// The same in packets of eight neighbouring rays of the set (wide_bvh_packet.h).
+std::size_t trace_mesh_packets(const MeshBvh& mesh, const RaySet& set) {
+    std::size_t hits = 0;
+    for (std::size_t first = 0; first < set.rays.size(); first += kRayPacketSize) {
+        const std::size_t n = std::min(set.rays.size() - first, std::size_t(kRayPacketSize));
+        const std::span<const Ray> rays(set.rays.data() + first, n);
+        Interval ranges[kRayPacketSize];
+        for (std::size_t i = 0; i < n; ++i) ranges[i] = set.range(first + i);
+        if (set.query == RayQuery::occluded) {
+            hits += std::size_t(std::popcount(mesh.occluded_packet(rays, ranges)));
+        } else {
+            std::optional<ShapeHit> found[kRayPacketSize];
+            mesh.intersect_packet(rays, ranges, found);
+            for (std::size_t i = 0; i < n; ++i) hits += found[i].has_value();
+        }
     }
     return hits;
 }
@@ -177,8 +199,9 @@ void traverse(benchmark::State& state, const std::string& file, bool mesh_level,
     std::size_t hits = 0;
     for (auto _ : state) {
         if (mesh_level) {
-            hits = tree == Tree::binary ? trace_mesh(s->mesh_binary, *s->mesh, set)
-                                        : trace_mesh(*s->mesh_wide, set);
+            hits = tree == Tree::binary   ? trace_mesh(s->mesh_binary, *s->mesh, set)
+                   : tree == Tree::packet ? trace_mesh_packets(*s->mesh_wide, set)
+                                          : trace_mesh(*s->mesh_wide, set);
         } else {
             hits = tree == Tree::binary ? trace_top(s->top_binary, *s, set)
                                         : trace_top(s->top_wide, *s, set);
@@ -291,6 +314,9 @@ void register_all() {
                 benchmark::RegisterBenchmark(
                     (prefix + "wide_" + std::string(simd_path_name(path))).c_str(), traverse, file,
                     mesh_level, set, Tree::wide, path);
+            if (mesh_level)
+                benchmark::RegisterBenchmark((prefix + "packet8_avx2").c_str(), traverse, file,
+                                             mesh_level, set, Tree::packet, SimdPath::avx2);
         }
         const int all = tbb::info::default_concurrency();
         for (const int threads : {1, all}) {

@@ -3,11 +3,13 @@
 
 #include <tbb/parallel_for.h>
 
+#include <array>
+#include <cassert>
 #include <unordered_map>
 #include <utility>
 #include <vector>
 
-#include "glint/accel/wide_bvh_traversal.h"
+#include "glint/accel/wide_bvh_packet.h"
 
 namespace glint {
 
@@ -27,39 +29,97 @@ MeshBvh::MeshBvh(std::shared_ptr<const MeshData> mesh) : mesh_(std::move(mesh)) 
     });
 }
 
+namespace {
+
+// The nearest hit so far of one ray, and the leaf test that finds nearer ones.
+struct NearestTriangle {
+    ShapeHit hit;
+    bool found = false;
+
+    // The leaf's triangles against the ray: a nearer hit (at equal t the lower triangle, whatever
+    // the order of the leaves) is kept and brings range.max to it.
+    template <bool kSimd>
+    [[gnu::always_inline]] inline void test(const BlockTester& tester,
+                                            std::span<const TriangleBlock> blocks,
+                                            Interval& range) {
+        for (const TriangleBlock& block : blocks) {
+            const BlockHit h = tester.nearest<kSimd>(block, range, kEveryLane);
+            if (!h) continue;
+            const std::uint32_t part = block.id[h.lane];
+            if (found && h.t == hit.t && part > hit.part) continue;
+            hit = ShapeHit{h.t, h.u, h.v, part};
+            found = true;
+            range.max = h.t;
+        }
+    }
+};
+
+template <bool kSimd>
+[[gnu::always_inline]] inline bool blocks_occlude(const BlockTester& tester,
+                                                  std::span<const TriangleBlock> blocks,
+                                                  Interval range) {
+    for (const TriangleBlock& block : blocks)
+        if (tester.any<kSimd>(block, range, kEveryLane)) return true;
+    return false;
+}
+
+}  // namespace
+
 std::optional<ShapeHit> MeshBvh::intersect(const Ray& ray, Interval t_range) const {
     const BlockTester tester(ray);
-    ShapeHit nearest;
-    bool found = false;
+    NearestTriangle nearest;
     bvh_closest_leaf(bvh_, ray, t_range,
                      [&](auto kernel, std::uint32_t leaf, std::uint32_t count, Interval& range)
                          GLINT_INLINE_LEAF {
-                             for (const TriangleBlock& block : leaf_blocks(bvh_, leaf, count)) {
-                                 const BlockHit hit = tester.nearest<decltype(kernel)::kSimd>(
-                                     block, range, kEveryLane);
-                                 if (!hit) continue;
-                                 const std::uint32_t part = block.id[hit.lane];
-                                 // At equal t the lower triangle, whatever the order of the leaves.
-                                 if (found && hit.t == nearest.t && part > nearest.part) continue;
-                                 nearest = ShapeHit{hit.t, hit.u, hit.v, part};
-                                 found = true;
-                                 range.max = hit.t;
-                             }
+                             nearest.test<decltype(kernel)::kSimd>(
+                                 tester, leaf_blocks(bvh_, leaf, count), range);
                          });
-    if (!found) return std::nullopt;
-    return nearest;
+    if (!nearest.found) return std::nullopt;
+    return nearest.hit;
 }
 
 bool MeshBvh::occluded(const Ray& ray, Interval t_range) const {
     const BlockTester tester(ray);
     return bvh_any_leaf(bvh_, ray, t_range,
-                        [&](auto kernel, std::uint32_t leaf, std::uint32_t count,
-                            Interval range) GLINT_INLINE_LEAF {
-                            for (const TriangleBlock& block : leaf_blocks(bvh_, leaf, count))
-                                if (tester.any<decltype(kernel)::kSimd>(block, range, kEveryLane))
-                                    return true;
-                            return false;
-                        });
+                        [&](auto kernel, std::uint32_t leaf, std::uint32_t count, Interval range)
+                            GLINT_INLINE_LEAF {
+                                return blocks_occlude<decltype(kernel)::kSimd>(
+                                    tester, leaf_blocks(bvh_, leaf, count), range);
+                            });
+}
+
+void MeshBvh::intersect_packet(std::span<const Ray> rays, const Interval* t_ranges,
+                               std::optional<ShapeHit>* hits) const {
+    assert(rays.size() <= std::size_t(kRayPacketSize));
+    std::array<std::optional<BlockTester>, kRayPacketSize> testers;
+    std::array<NearestTriangle, kRayPacketSize> nearest;
+    std::array<Interval, kRayPacketSize> ranges;
+    for (std::size_t i = 0; i < rays.size(); ++i) {
+        testers[i].emplace(rays[i]);
+        ranges[i] = t_ranges[i];
+    }
+    bvh_closest_leaf_packet(
+        bvh_, rays, ranges.data(),
+        [&](auto kernel, std::uint32_t leaf, std::uint32_t count, int lane, Interval& range)
+            GLINT_INLINE_LEAF {
+                nearest[std::size_t(lane)].test<decltype(kernel)::kSimd>(
+                    *testers[std::size_t(lane)], leaf_blocks(bvh_, leaf, count), range);
+            });
+    for (std::size_t i = 0; i < rays.size(); ++i)
+        hits[i] = nearest[i].found ? std::optional<ShapeHit>(nearest[i].hit) : std::nullopt;
+}
+
+unsigned MeshBvh::occluded_packet(std::span<const Ray> rays, const Interval* t_ranges) const {
+    assert(rays.size() <= std::size_t(kRayPacketSize));
+    std::array<std::optional<BlockTester>, kRayPacketSize> testers;
+    for (std::size_t i = 0; i < rays.size(); ++i) testers[i].emplace(rays[i]);
+    return bvh_any_leaf_packet(
+        bvh_, rays, t_ranges,
+        [&](auto kernel, std::uint32_t leaf, std::uint32_t count, int lane, Interval range)
+            GLINT_INLINE_LEAF {
+                return blocks_occlude<decltype(kernel)::kSimd>(
+                    *testers[std::size_t(lane)], leaf_blocks(bvh_, leaf, count), range);
+            });
 }
 
 namespace {

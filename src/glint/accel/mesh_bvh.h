@@ -27,6 +27,11 @@ public:
     // answers of TriangleMesh's triangle-by-triangle test, the lower triangle at equal t.
     std::optional<ShapeHit> intersect(const Ray& ray, Interval t_range) const override;
     bool occluded(const Ray& ray, Interval t_range) const override;
+    // Up to kRayPacketSize rays traced together (wide_bvh_packet.h): hits[i], and bit i of
+    // occluded_packet's result, as intersect() and occluded() answer for rays[i] alone.
+    void intersect_packet(std::span<const Ray> rays, const Interval* t_ranges,
+                          std::optional<ShapeHit>* hits) const;
+    unsigned occluded_packet(std::span<const Ray> rays, const Interval* t_ranges) const;
 
     const WideBvh& tree() const { return bvh_; }
 

@@ -81,13 +81,14 @@ struct StackEntry {
     count = hit[0].count;
 }
 
+// From the subtree `child` (count as in StackEntry; the root, a node, by default).
 template <typename Kernel, typename Visit>
 [[gnu::always_inline]] inline void closest_hit(const WideBvh& bvh, const Ray& ray, Interval t_range,
-                                               Visit& visit) {
+                                               Visit& visit, std::uint32_t child = 0,
+                                               std::uint32_t count = 0) {
     const typename Kernel::Ray r{BvhRay(ray)};
     std::array<StackEntry, kStackSize> stack;
     int top = 0;
-    std::uint32_t child = 0, count = 0;  // the root, a node
     for (;;) {
         if ((child & kWideLeaf) == 0) {
             const WideBvhNode& node = bvh.nodes[child];
@@ -135,11 +136,11 @@ template <typename Kernel, typename Visit>
 
 template <typename Kernel, typename Visit>
 [[gnu::always_inline]] inline bool any_hit(const WideBvh& bvh, const Ray& ray, Interval t_range,
-                                           Visit& visit) {
+                                           Visit& visit, std::uint32_t child = 0,
+                                           std::uint32_t count = 0) {
     const typename Kernel::Ray r{BvhRay(ray)};
     std::array<StackEntry, kStackSize> stack;
     int top = 0;
-    std::uint32_t child = 0, count = 0;
     for (;;) {
         if ((child & kWideLeaf) == 0) {
             const WideBvhNode& node = bvh.nodes[child];
