@@ -139,19 +139,35 @@ std::size_t trace_mesh(const MeshBvh& mesh, const RaySet& set) {
     return hits;
 }
 
-// The same in packets of eight neighbouring rays of the set (wide_bvh_packet.h).
-std::size_t trace_mesh_packets(const MeshBvh& mesh, const RaySet& set) {
+// The same in packets of eight neighbouring rays (wide_bvh_packet.h): primary rays in tiles of
+// 4x2 pixels, the others eight consecutive rays of the set (the surface points of neighbouring
+// pixels in scanline order).
+std::size_t trace_mesh_packets(const MeshBvh& mesh, const RaySet& set, int width) {
+    std::vector<std::size_t> order(set.rays.size());
+    for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+    if (set.name == "primary" && width > 0) {
+        std::size_t k = 0;
+        const auto w = std::size_t(width), h = set.rays.size() / w;
+        for (std::size_t y = 0; y < h; y += 2)
+            for (std::size_t x = 0; x < w; x += 4)
+                for (std::size_t dy = 0; dy < 2 && y + dy < h; ++dy)
+                    for (std::size_t dx = 0; dx < 4 && x + dx < w; ++dx)
+                        order[k++] = (y + dy) * w + x + dx;
+    }
     std::size_t hits = 0;
-    for (std::size_t first = 0; first < set.rays.size(); first += kRayPacketSize) {
-        const std::size_t n = std::min(set.rays.size() - first, std::size_t(kRayPacketSize));
-        const std::span<const Ray> rays(set.rays.data() + first, n);
+    for (std::size_t first = 0; first < order.size(); first += kRayPacketSize) {
+        const std::size_t n = std::min(order.size() - first, std::size_t(kRayPacketSize));
+        Ray rays[kRayPacketSize];
         Interval ranges[kRayPacketSize];
-        for (std::size_t i = 0; i < n; ++i) ranges[i] = set.range(first + i);
+        for (std::size_t i = 0; i < n; ++i) {
+            rays[i] = set.rays[order[first + i]];
+            ranges[i] = set.range(order[first + i]);
+        }
         if (set.query == RayQuery::occluded) {
-            hits += std::size_t(std::popcount(mesh.occluded_packet(rays, ranges)));
+            hits += std::size_t(std::popcount(mesh.occluded_packet({rays, n}, ranges)));
         } else {
             std::optional<ShapeHit> found[kRayPacketSize];
-            mesh.intersect_packet(rays, ranges, found);
+            mesh.intersect_packet({rays, n}, ranges, found);
             for (std::size_t i = 0; i < n; ++i) hits += found[i].has_value();
         }
     }
@@ -200,7 +216,7 @@ void traverse(benchmark::State& state, const std::string& file, bool mesh_level,
     for (auto _ : state) {
         if (mesh_level) {
             hits = tree == Tree::binary   ? trace_mesh(s->mesh_binary, *s->mesh, set)
-                   : tree == Tree::packet ? trace_mesh_packets(*s->mesh_wide, set)
+                   : tree == Tree::packet ? trace_mesh_packets(*s->mesh_wide, set, s->sets.width)
                                           : trace_mesh(*s->mesh_wide, set);
         } else {
             hits = tree == Tree::binary ? trace_top(s->top_binary, *s, set)
