@@ -339,7 +339,10 @@ private:
             }
         }
         // cost(split after bin k) = traversal + (A_left T_left + A_right T_right) / A_node, T the
-        // leaf tests of a side, swept from both ends so that each candidate costs O(1).
+        // leaf tests of a side, swept from both ends so that each candidate costs O(1). Only
+        // splits after a bin that holds something are costed: after an empty bin the sides, and
+        // so the cost, are those of the split before it, which comes first and wins the tie; a
+        // split with nothing on the left costs a leaf's tests plus a traversal, never chosen.
         const int count = g.count;
         float best_cost = kInfinity;
         int best = -1;
@@ -347,22 +350,31 @@ private:
         for (int a = 0; a < 3; ++a) {
             if (!g.used[a]) continue;
             const Bins& axis_bins = bins[std::size_t(a)];
+            std::array<int, kMaxBins> held;  // the bins that hold something, in order
+            int m = 0;
+            for (int k = 0; k < count; ++k)
+                if (axis_bins[std::size_t(k)].count != 0) held[std::size_t(m++)] = k;
+            // right_cost[k]: the bins after k.
             std::array<float, kMaxBins> right_cost;
             Box4 acc = Box4::empty();
             std::uint32_t n = 0, nb = 0;
-            for (int k = count - 1; k > 0; --k) {
-                acc.grow(axis_bins[std::size_t(k)].bounds);
-                n += axis_bins[std::size_t(k)].count;
-                nb += axis_bins[std::size_t(k)].blocked;
-                right_cost[std::size_t(k - 1)] = acc.area() * tests(n, nb);
+            for (int i = m - 1; i >= 0; --i) {
+                const Bin& bin = axis_bins[std::size_t(held[std::size_t(i)])];
+                right_cost[std::size_t(held[std::size_t(i)])] = acc.area() * tests(n, nb);
+                acc.grow(bin.bounds);
+                n += bin.count;
+                nb += bin.blocked;
             }
-            range_blocked = nb + axis_bins[0].blocked;
+            range_blocked = nb;
             acc = Box4::empty();
             n = nb = 0;
-            for (int k = 0; k < count - 1; ++k) {
-                acc.grow(axis_bins[std::size_t(k)].bounds);
-                n += axis_bins[std::size_t(k)].count;
-                nb += axis_bins[std::size_t(k)].blocked;
+            for (int i = 0; i < m; ++i) {
+                const int k = held[std::size_t(i)];
+                if (k == count - 1) break;
+                const Bin& bin = axis_bins[std::size_t(k)];
+                acc.grow(bin.bounds);
+                n += bin.count;
+                nb += bin.blocked;
                 const float cost = acc.area() * tests(n, nb) + right_cost[std::size_t(k)];
                 if (cost < best_cost) best_cost = cost, best = k, axis = a;
             }
