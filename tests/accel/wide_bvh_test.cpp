@@ -509,12 +509,50 @@ TEST(WideBvh, BuildIsIdenticalForAnyThreadCount) {
                   0)
             << threads << " threads";
         EXPECT_EQ(binary.primitive_indices, reference_binary.primitive_indices);
+        ASSERT_EQ(binary.node_ranges.size(), reference_binary.node_ranges.size());
+        for (std::size_t i = 0; i < binary.node_ranges.size(); ++i) {
+            EXPECT_EQ(binary.node_ranges[i].begin, reference_binary.node_ranges[i].begin);
+            EXPECT_EQ(binary.node_ranges[i].parent, reference_binary.node_ranges[i].parent);
+        }
         ASSERT_EQ(wide.nodes.size(), reference.nodes.size()) << threads << " threads";
         EXPECT_EQ(std::memcmp(wide.nodes.data(), reference.nodes.data(),
                               wide.nodes.size() * sizeof(WideBvhNode)),
                   0)
             << threads << " threads";
         EXPECT_EQ(wide.primitive_indices, reference.primitive_indices);
+    }
+}
+
+// The build's node ranges, which the collapse solves in parallel from the leaves up: they tile the
+// nodes in order, and a node's children are in its own range or begin a range below it.
+TEST(WideBvh, NodeRangesHoldEachNodesChildren) {
+    const std::vector<Bounds3> b =
+        random_boxes(testing::kUnderSanitizer ? 60'000 : 200'000, 4, 100, 3);
+    const Bvh bvh = build_bvh(b);
+    const std::vector<BvhNodeRange>& ranges = bvh.node_ranges;
+    ASSERT_GT(ranges.size(), 10u);  // subtrees were built as tasks
+    std::vector<std::int32_t> range_of(bvh.nodes.size(), -1);
+    std::vector<std::int32_t> starting(bvh.nodes.size(), -1);
+    std::uint32_t next = 0;
+    for (std::size_t r = 0; r < ranges.size(); ++r) {
+        ASSERT_EQ(ranges[r].begin, next);
+        ASSERT_LT(ranges[r].begin, ranges[r].end);
+        ASSERT_LT(ranges[r].parent, std::int32_t(r));
+        ASSERT_EQ(ranges[r].parent < 0, r == 0);
+        for (std::uint32_t n = ranges[r].begin; n < ranges[r].end; ++n)
+            range_of[n] = std::int32_t(r);
+        starting[ranges[r].begin] = std::int32_t(r);
+        next = ranges[r].end;
+    }
+    ASSERT_EQ(next, bvh.nodes.size());
+    for (std::uint32_t n = 0; n < bvh.nodes.size(); ++n) {
+        if (bvh.nodes[n].is_leaf()) continue;
+        const std::int32_t r = range_of[n];
+        EXPECT_EQ(range_of[n + 1], r) << n;
+        const std::uint32_t second = bvh.nodes[n].offset;
+        EXPECT_TRUE(range_of[second] == r ||
+                    (starting[second] >= 0 && ranges[std::size_t(starting[second])].parent == r))
+            << n;
     }
 }
 

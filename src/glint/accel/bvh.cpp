@@ -500,16 +500,18 @@ std::size_t node_count(const Chunk& chunk) {
 }
 
 // Appends the chunk's nodes and then, in order, each remote chunk's, with second-child indices
-// moved to their final places.
-void flatten(const Chunk& chunk, LargeVector<BvhNode>& out) {
-    const auto base = std::uint32_t(out.size());
+// moved to their final places, and the range each chunk took.
+void flatten(const Chunk& chunk, std::int32_t parent, Bvh& out) {
+    const auto base = std::uint32_t(out.nodes.size());
     for (BvhNode node : chunk.nodes) {
         if (!node.is_leaf()) node.offset += base;
-        out.push_back(node);
+        out.nodes.push_back(node);
     }
+    const auto self = std::int32_t(out.node_ranges.size());
+    out.node_ranges.push_back({base, std::uint32_t(out.nodes.size()), parent});
     for (const Chunk::Remote& remote : chunk.remote) {
-        out[base + remote.node].offset = std::uint32_t(out.size());
-        flatten(*remote.chunk, out);
+        out.nodes[base + remote.node].offset = std::uint32_t(out.nodes.size());
+        flatten(*remote.chunk, self, out);
     }
 }
 
@@ -529,9 +531,10 @@ Bvh build_bvh(std::span<const Bounds3> bounds, const BvhBuildOptions& options,
     if (chunk.remote.empty()) {
         bvh.nodes = std::move(chunk.nodes);
         bvh.nodes.shrink_to_fit();
+        bvh.node_ranges.push_back({0, std::uint32_t(bvh.nodes.size()), -1});
     } else {
         bvh.nodes.reserve(node_count(chunk));
-        flatten(chunk, bvh.nodes);
+        flatten(chunk, -1, bvh);
     }
     return bvh;
 }

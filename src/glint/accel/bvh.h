@@ -48,10 +48,21 @@ struct BvhBuildOptions {
     float shape_cost = 1;
 };
 
+// Nodes that one build task laid out, [begin, end) of Bvh::nodes: a node's children are in its
+// own range or are the first nodes of ranges whose parent is its range. Passes from the leaves
+// up can take ranges in parallel, each after the ranges below it.
+struct BvhNodeRange {
+    std::uint32_t begin = 0, end = 0;
+    std::int32_t parent = -1;  // index in Bvh::node_ranges; -1 for the root's range
+};
+
 struct Bvh {
     LargeVector<BvhNode> nodes;  // nodes[0] is the root; empty for no primitives
     // Leaves refer to ranges of this permutation of the primitives' indices.
     LargeVector<std::uint32_t> primitive_indices;
+    // In order of begin, so each after its parent; empty for a tree not made by build_bvh (one
+    // range then).
+    std::vector<BvhNodeRange> node_ranges;
 
     Bounds3 bounds() const { return nodes.empty() ? Bounds3{} : nodes[0].bounds; }
 };

@@ -4,6 +4,7 @@
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
+#include <tbb/task_group.h>
 
 #include <algorithm>
 #include <array>
@@ -21,13 +22,44 @@ namespace {
 // Through Compressed Wide BVHs", section 4.1, without its leaf merging).
 class CollapsePlan {
 public:
-    explicit CollapsePlan(const LargeVector<BvhNode>& binary)
-        : binary_(binary),
-          cost_(binary.size() * kWideBvhWidth),
-          choice_(binary.size() * kWideBvhWidth) {
-        // Children come after their parents in the binary array: solve from the end.
-        for (std::size_t n = binary.size(); n-- > 0;) {
-            const BvhNode& node = binary[n];
+    // Solved from the leaves up: each of the build's node ranges after the ranges below it (in
+    // parallel, as tasks), its own nodes from its end (children come after their parents).
+    explicit CollapsePlan(const Bvh& binary)
+        : binary_(binary.nodes),
+          cost_(binary.nodes.size() * kWideBvhWidth),
+          choice_(binary.nodes.size() * kWideBvhWidth) {
+        const std::vector<BvhNodeRange>& ranges = binary.node_ranges;
+        if (ranges.empty()) {
+            solve_nodes(0, binary.nodes.size());
+            return;
+        }
+        std::vector<std::vector<std::uint32_t>> below(ranges.size());
+        for (std::uint32_t i = 1; i < ranges.size(); ++i)
+            below[std::size_t(ranges[i].parent)].push_back(i);
+        solve_range(ranges, below, 0);
+    }
+
+    // The children of the wide node made of binary node `n`: its subtree cut at the nodes and
+    // leaves the plan keeps whole, in depth-first order.
+    void children(std::uint32_t n, std::array<std::uint32_t, kWideBvhWidth>& slot,
+                  int& count) const {
+        const int j = split(n, 1);
+        emit(n + 1, j, slot, count);
+        emit(binary_[n].offset, kWideBvhWidth - j, slot, count);
+    }
+
+private:
+    void solve_range(const std::vector<BvhNodeRange>& ranges,
+                     const std::vector<std::vector<std::uint32_t>>& below, std::uint32_t r) {
+        tbb::task_group group;
+        for (const std::uint32_t b : below[r]) group.run([&, b] { solve_range(ranges, below, b); });
+        group.wait();
+        solve_nodes(ranges[r].begin, ranges[r].end);
+    }
+
+    void solve_nodes(std::size_t begin, std::size_t end) {
+        for (std::size_t n = end; n-- > begin;) {
+            const BvhNode& node = binary_[n];
             if (node.is_leaf()) {
                 for (int k = 1; k <= kWideBvhWidth; ++k) set(n, k, 0, 0, true);
                 continue;
@@ -57,16 +89,6 @@ public:
         }
     }
 
-    // The children of the wide node made of binary node `n`: its subtree cut at the nodes and
-    // leaves the plan keeps whole, in depth-first order.
-    void children(std::uint32_t n, std::array<std::uint32_t, kWideBvhWidth>& slot,
-                  int& count) const {
-        const int j = split(n, 1);
-        emit(n + 1, j, slot, count);
-        emit(binary_[n].offset, kWideBvhWidth - j, slot, count);
-    }
-
-private:
     std::size_t index(std::size_t n, int k) const { return n * kWideBvhWidth + std::size_t(k - 1); }
     double cost(std::size_t n, int k) const { return cost_[index(n, k)]; }
     int split(std::size_t n, int k) const { return choice_[index(n, k)] & kSplit; }
@@ -101,8 +123,8 @@ private:
 
 class Collapser {
 public:
-    Collapser(const LargeVector<BvhNode>& binary, LargeVector<WideBvhNode>& wide)
-        : binary_(binary), wide_(wide), plan_(binary) {}
+    Collapser(const Bvh& binary, LargeVector<WideBvhNode>& wide)
+        : binary_(binary.nodes), wide_(wide), plan_(binary) {}
 
     // Fills wide_[index] from the binary subtree at `root` (a lone leaf becomes the only child),
     // then its descendants. The interior children of a node are placed side by side, so that a
@@ -159,7 +181,7 @@ WideBvh collapse_to_wide_bvh(Bvh binary) {
     // Each wide node opens at least one interior binary node, and half the nodes are leaves.
     wide.nodes.reserve(binary.nodes.size() / 2 + 1);
     wide.nodes.resize(1);
-    Collapser(binary.nodes, wide.nodes).collapse(0, 0);
+    Collapser(binary, wide.nodes).collapse(0, 0);
     wide.nodes.shrink_to_fit();
     wide.primitive_indices = std::move(binary.primitive_indices);
     return wide;
