@@ -141,6 +141,22 @@ GLINT_AVX2 inline unsigned reaching(unsigned lanes, float t, const PacketRanges&
     return lane_bits(Avx2Kernel::splat8(t) <= r.t_max) & lanes;
 }
 
+// Replaces `current`, a node, by its child that its lanes enter (nearest first, or the lowest slot)
+// and pushes the others to come after it; false when no lane enters a child.
+template <bool kNearestFirst>
+GLINT_AVX2 inline bool descend(const WideBvh& bvh, const Packet8& p, const PacketRanges& r,
+                               PacketEntry& current, PacketEntry* stack, int& top) {
+    const WideBvhNode& node = bvh.nodes[current.child];
+    count_nodes();
+    PacketEntry hit[kWideBvhWidth];
+    const int n = enter_children(node, p, current.lanes, r, hit);
+    if (n == 0) return false;
+    if constexpr (kNearestFirst) sort_by_distance(hit, n);
+    for (int i = n - 1; i > 0; --i) stack[top++] = hit[i];
+    current = hit[0];
+    return true;
+}
+
 // Closest hits: visit(kernel, leaf, count, lane, Interval& range) tests one lane's ray against a
 // leaf and brings ranges[lane].max to a nearer hit. Children are taken nearest first (by their
 // nearest lane) and dropped when no lane's range reaches them any more.
@@ -167,16 +183,7 @@ GLINT_AVX2 void closest_hit_packet(const WideBvh& bvh, std::span<const Ray> rays
             }
             r.load(ranges, rays.size());
         } else if ((current.child & kWideLeaf) == 0) {
-            const WideBvhNode& node = bvh.nodes[current.child];
-            count_nodes();
-            PacketEntry hit[kWideBvhWidth];
-            const int n = enter_children(node, p, current.lanes, r, hit);
-            if (n > 0) {
-                sort_by_distance(hit, n);
-                for (int i = n - 1; i > 0; --i) stack[std::size_t(top++)] = hit[i];
-                current = hit[0];
-                continue;
-            }
+            if (descend<true>(bvh, p, r, current, stack.data(), top)) continue;
         } else {
             for (unsigned m = current.lanes; m != 0; m &= m - 1) {
                 const int lane = __builtin_ctz(m);
@@ -222,16 +229,8 @@ GLINT_AVX2 unsigned any_hit_packet(const WideBvh& bvh, std::span<const Ray> rays
                     blocked |= 1u << lane;
             }
         } else if ((current.child & kWideLeaf) == 0) {
-            const WideBvhNode& node = bvh.nodes[current.child];
-            count_nodes();
-            PacketEntry hit[kWideBvhWidth];
-            const int n = enter_children(node, p, current.lanes, r, hit);
-            if (n > 0) {
-                // Slot order, as a single ray's any hit takes them.
-                for (int i = n - 1; i > 0; --i) stack[std::size_t(top++)] = hit[i];
-                current = hit[0];
-                continue;
-            }
+            // Slot order, as a single ray's any hit takes them.
+            if (descend<false>(bvh, p, r, current, stack.data(), top)) continue;
         } else {
             for (unsigned m = current.lanes; m != 0; m &= m - 1) {
                 const int lane = __builtin_ctz(m);
