@@ -21,6 +21,8 @@
 
 #include "glint/accel/bvh.h"
 #ifdef GLINT_HAVE_EMBREE
+#include <embree3/rtcore.h>
+
 #include "glint/accel/embree_aggregate.h"
 #endif
 #include "glint/accel/make_aggregate.h"
@@ -55,6 +57,9 @@ struct Subject {
     std::vector<Bounds3> primitive_bounds;
     Bvh top_binary;
     WideBvh top_wide;
+#ifdef GLINT_HAVE_EMBREE
+    std::unique_ptr<class EmbreeMesh> embree_mesh;  // made when first traced
+#endif
 };
 
 std::vector<Bounds3> triangle_boxes(const MeshData& mesh) {
@@ -103,7 +108,7 @@ Subject* subject(const std::string& file) {
     return slot.get();
 }
 
-enum class Tree { binary, wide, packet };
+enum class Tree { binary, wide, packet, embree_single, embree_packet };
 
 // Traces one set through the binary tree, one triangle at a time; returns the hits (to check
 // that the trees agree).
@@ -139,21 +144,25 @@ std::size_t trace_mesh(const MeshBvh& mesh, const RaySet& set) {
     return hits;
 }
 
-// The same in packets of eight neighbouring rays (wide_bvh_packet.h): primary rays in tiles of
-// 4x2 pixels, the others eight consecutive rays of the set (the surface points of neighbouring
-// pixels in scanline order).
-std::size_t trace_mesh_packets(const MeshBvh& mesh, const RaySet& set, int width) {
+// The order in which a set's rays go into packets of eight: primary rays in tiles of 4x2 pixels,
+// the others as they come (the surface points of neighbouring pixels in scanline order).
+std::vector<std::size_t> packet_order(const RaySet& set, int width) {
     std::vector<std::size_t> order(set.rays.size());
     for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
-    if (set.name == "primary" && width > 0) {
-        std::size_t k = 0;
-        const auto w = std::size_t(width), h = set.rays.size() / w;
-        for (std::size_t y = 0; y < h; y += 2)
-            for (std::size_t x = 0; x < w; x += 4)
-                for (std::size_t dy = 0; dy < 2 && y + dy < h; ++dy)
-                    for (std::size_t dx = 0; dx < 4 && x + dx < w; ++dx)
-                        order[k++] = (y + dy) * w + x + dx;
-    }
+    if (set.name != "primary" || width <= 0) return order;
+    std::size_t k = 0;
+    const auto w = std::size_t(width), h = set.rays.size() / w;
+    for (std::size_t y = 0; y < h; y += 2)
+        for (std::size_t x = 0; x < w; x += 4)
+            for (std::size_t dy = 0; dy < 2 && y + dy < h; ++dy)
+                for (std::size_t dx = 0; dx < 4 && x + dx < w; ++dx)
+                    order[k++] = (y + dy) * w + x + dx;
+    return order;
+}
+
+// The same in packets of eight neighbouring rays (wide_bvh_packet.h), in packet_order.
+std::size_t trace_mesh_packets(const MeshBvh& mesh, const RaySet& set, int width) {
+    const std::vector<std::size_t> order = packet_order(set, width);
     std::size_t hits = 0;
     for (std::size_t first = 0; first < order.size(); first += kRayPacketSize) {
         const std::size_t n = std::min(order.size() - first, std::size_t(kRayPacketSize));
@@ -173,6 +182,112 @@ std::size_t trace_mesh_packets(const MeshBvh& mesh, const RaySet& set, int width
     }
     return hits;
 }
+
+#ifdef GLINT_HAVE_EMBREE
+// The mesh as one Embree triangle geometry, built as EmbreeAggregate builds it (robust, high
+// quality), for Embree's single-ray and packet API on the same rays.
+class EmbreeMesh {
+public:
+    explicit EmbreeMesh(const MeshData& mesh) {
+        device_ = rtcNewDevice(nullptr);
+        scene_ = rtcNewScene(device_);
+        rtcSetSceneFlags(scene_, RTC_SCENE_FLAG_ROBUST);
+        rtcSetSceneBuildQuality(scene_, RTC_BUILD_QUALITY_HIGH);
+        RTCGeometry g = rtcNewGeometry(device_, RTC_GEOMETRY_TYPE_TRIANGLE);
+        auto* v = static_cast<float*>(rtcSetNewGeometryBuffer(
+            g, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, 12, mesh.positions.size()));
+        for (std::size_t i = 0; i < mesh.positions.size(); ++i) {
+            v[3 * i] = mesh.positions[i].x;
+            v[3 * i + 1] = mesh.positions[i].y;
+            v[3 * i + 2] = mesh.positions[i].z;
+        }
+        auto* t = static_cast<std::uint32_t*>(rtcSetNewGeometryBuffer(
+            g, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, 12, mesh.triangles.size()));
+        for (std::size_t i = 0; i < mesh.triangles.size(); ++i)
+            for (int k = 0; k < 3; ++k)
+                t[3 * i + std::size_t(k)] = mesh.triangles[i][std::size_t(k)];
+        rtcCommitGeometry(g);
+        rtcAttachGeometry(scene_, g);
+        rtcReleaseGeometry(g);
+        rtcCommitScene(scene_);
+    }
+    ~EmbreeMesh() {
+        rtcReleaseScene(scene_);
+        rtcReleaseDevice(device_);
+    }
+    EmbreeMesh(const EmbreeMesh&) = delete;
+    EmbreeMesh& operator=(const EmbreeMesh&) = delete;
+
+    std::size_t trace_single(const RaySet& set) const {
+        RTCIntersectContext context;
+        rtcInitIntersectContext(&context);
+        std::size_t hits = 0;
+        for (std::size_t i = 0; i < set.rays.size(); ++i) {
+            RTCRayHit rh{};
+            fill(rh.ray, set.rays[i], set.range(i));
+            if (set.query == RayQuery::occluded) {
+                rtcOccluded1(scene_, &context, &rh.ray);
+                hits += rh.ray.tfar < 0;
+            } else {
+                rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+                rtcIntersect1(scene_, &context, &rh);
+                hits += rh.hit.geomID != RTC_INVALID_GEOMETRY_ID;
+            }
+        }
+        return hits;
+    }
+
+    std::size_t trace_packets(const RaySet& set, int width) const {
+        const std::vector<std::size_t> order = packet_order(set, width);
+        RTCIntersectContext context;
+        rtcInitIntersectContext(&context);
+        context.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT;
+        std::size_t hits = 0;
+        for (std::size_t first = 0; first < order.size(); first += 8) {
+            alignas(32) int valid[8];
+            alignas(32) RTCRayHit8 rh{};
+            for (int l = 0; l < 8; ++l) {
+                const std::size_t k = first + std::size_t(l);
+                valid[l] = k < order.size() ? -1 : 0;
+                const std::size_t i = order[std::min(k, order.size() - 1)];
+                const Ray& r = set.rays[i];
+                const Interval range = set.range(i);
+                rh.ray.org_x[l] = r.origin.x, rh.ray.org_y[l] = r.origin.y;
+                rh.ray.org_z[l] = r.origin.z;
+                rh.ray.dir_x[l] = r.direction.x, rh.ray.dir_y[l] = r.direction.y;
+                rh.ray.dir_z[l] = r.direction.z;
+                rh.ray.tnear[l] = std::max(range.min, 0.0f);
+                rh.ray.tfar[l] = range.max;
+                rh.ray.mask[l] = 0xffffffffu;
+                rh.hit.geomID[l] = RTC_INVALID_GEOMETRY_ID;
+            }
+            if (set.query == RayQuery::occluded) {
+                rtcOccluded8(valid, scene_, &context, &rh.ray);
+                for (int l = 0; l < 8; ++l) hits += valid[l] && rh.ray.tfar[l] < 0;
+            } else {
+                rtcIntersect8(valid, scene_, &context, &rh);
+                for (int l = 0; l < 8; ++l)
+                    hits += valid[l] && rh.hit.geomID[l] != RTC_INVALID_GEOMETRY_ID;
+            }
+        }
+        return hits;
+    }
+
+private:
+    static void fill(RTCRay& out, const Ray& r, Interval range) {
+        out.org_x = r.origin.x, out.org_y = r.origin.y, out.org_z = r.origin.z;
+        out.dir_x = r.direction.x, out.dir_y = r.direction.y, out.dir_z = r.direction.z;
+        out.tnear = std::max(range.min, 0.0f);
+        out.tfar = range.max;
+        out.mask = 0xffffffffu;
+        out.flags = 0;
+        out.time = 0;
+    }
+
+    RTCDevice device_;
+    RTCScene scene_;
+};
+#endif
 
 template <typename BvhType>
 std::size_t trace_top(const BvhType& bvh, const Subject& s, const RaySet& set) {
@@ -215,9 +330,26 @@ void traverse(benchmark::State& state, const std::string& file, bool mesh_level,
     std::size_t hits = 0;
     for (auto _ : state) {
         if (mesh_level) {
-            hits = tree == Tree::binary   ? trace_mesh(s->mesh_binary, *s->mesh, set)
-                   : tree == Tree::packet ? trace_mesh_packets(*s->mesh_wide, set, s->sets.width)
-                                          : trace_mesh(*s->mesh_wide, set);
+            switch (tree) {
+                case Tree::binary:
+                    hits = trace_mesh(s->mesh_binary, *s->mesh, set);
+                    break;
+                case Tree::wide:
+                    hits = trace_mesh(*s->mesh_wide, set);
+                    break;
+                case Tree::packet:
+                    hits = trace_mesh_packets(*s->mesh_wide, set, s->sets.width);
+                    break;
+                case Tree::embree_single:
+                case Tree::embree_packet:
+#ifdef GLINT_HAVE_EMBREE
+                    if (!s->embree_mesh) s->embree_mesh = std::make_unique<EmbreeMesh>(*s->mesh);
+                    hits = tree == Tree::embree_single
+                               ? s->embree_mesh->trace_single(set)
+                               : s->embree_mesh->trace_packets(set, s->sets.width);
+#endif
+                    break;
+            }
         } else {
             hits = tree == Tree::binary ? trace_top(s->top_binary, *s, set)
                                         : trace_top(s->top_wide, *s, set);
@@ -330,9 +462,18 @@ void register_all() {
                 benchmark::RegisterBenchmark(
                     (prefix + "wide_" + std::string(simd_path_name(path))).c_str(), traverse, file,
                     mesh_level, set, Tree::wide, path);
-            if (mesh_level)
+            if (mesh_level) {
                 benchmark::RegisterBenchmark((prefix + "packet8_avx2").c_str(), traverse, file,
                                              mesh_level, set, Tree::packet, SimdPath::avx2);
+#ifdef GLINT_HAVE_EMBREE
+                benchmark::RegisterBenchmark((prefix + "embree_single").c_str(), traverse, file,
+                                             mesh_level, set, Tree::embree_single,
+                                             best_simd_path());
+                benchmark::RegisterBenchmark((prefix + "embree_packet8").c_str(), traverse, file,
+                                             mesh_level, set, Tree::embree_packet,
+                                             best_simd_path());
+#endif
+            }
         }
         const int all = tbb::info::default_concurrency();
         for (const int threads : {1, all}) {
