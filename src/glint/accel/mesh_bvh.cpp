@@ -3,8 +3,11 @@
 
 #include <tbb/parallel_for.h>
 
+#include <algorithm>
 #include <array>
 #include <cassert>
+#include <new>
+#include <type_traits>
 #include <unordered_map>
 #include <utility>
 #include <vector>
@@ -63,6 +66,27 @@ template <bool kSimd>
     return false;
 }
 
+// The block testers of a packet's rays, each made when its ray first reaches a leaf (a ray that
+// enters no leaf needs none), in storage that is not cleared first.
+class PacketTesters {
+public:
+    explicit PacketTesters(std::span<const Ray> rays) : rays_(rays) {}
+
+    const BlockTester& operator[](std::size_t lane) {
+        if ((made_ >> lane & 1) == 0) {
+            ::new (storage_[lane]) BlockTester(rays_[lane]);
+            made_ |= 1u << lane;
+        }
+        return *std::launder(reinterpret_cast<const BlockTester*>(storage_[lane]));
+    }
+
+private:
+    static_assert(std::is_trivially_destructible_v<BlockTester>);
+    std::span<const Ray> rays_;
+    unsigned made_ = 0;
+    alignas(BlockTester) unsigned char storage_[kRayPacketSize][sizeof(BlockTester)];
+};
+
 }  // namespace
 
 std::optional<ShapeHit> MeshBvh::intersect(const Ray& ray, Interval t_range) const {
@@ -91,19 +115,16 @@ bool MeshBvh::occluded(const Ray& ray, Interval t_range) const {
 void MeshBvh::intersect_packet(std::span<const Ray> rays, const Interval* t_ranges,
                                std::optional<ShapeHit>* hits) const {
     assert(rays.size() <= std::size_t(kRayPacketSize));
-    std::array<std::optional<BlockTester>, kRayPacketSize> testers;
+    PacketTesters testers(rays);
     std::array<NearestTriangle, kRayPacketSize> nearest;
     std::array<Interval, kRayPacketSize> ranges;
-    for (std::size_t i = 0; i < rays.size(); ++i) {
-        testers[i].emplace(rays[i]);
-        ranges[i] = t_ranges[i];
-    }
+    std::copy_n(t_ranges, rays.size(), ranges.begin());
     bvh_closest_leaf_packet(
         bvh_, rays, ranges.data(),
         [&](auto kernel, std::uint32_t leaf, std::uint32_t count, int lane, Interval& range)
             GLINT_INLINE_LEAF {
                 nearest[std::size_t(lane)].test<decltype(kernel)::kSimd>(
-                    *testers[std::size_t(lane)], leaf_blocks(bvh_, leaf, count), range);
+                    testers[std::size_t(lane)], leaf_blocks(bvh_, leaf, count), range);
             });
     for (std::size_t i = 0; i < rays.size(); ++i)
         hits[i] = nearest[i].found ? std::optional<ShapeHit>(nearest[i].hit) : std::nullopt;
@@ -111,14 +132,13 @@ void MeshBvh::intersect_packet(std::span<const Ray> rays, const Interval* t_rang
 
 unsigned MeshBvh::occluded_packet(std::span<const Ray> rays, const Interval* t_ranges) const {
     assert(rays.size() <= std::size_t(kRayPacketSize));
-    std::array<std::optional<BlockTester>, kRayPacketSize> testers;
-    for (std::size_t i = 0; i < rays.size(); ++i) testers[i].emplace(rays[i]);
+    PacketTesters testers(rays);
     return bvh_any_leaf_packet(
         bvh_, rays, t_ranges,
         [&](auto kernel, std::uint32_t leaf, std::uint32_t count, int lane, Interval range)
             GLINT_INLINE_LEAF {
                 return blocks_occlude<decltype(kernel)::kSimd>(
-                    *testers[std::size_t(lane)], leaf_blocks(bvh_, leaf, count), range);
+                    testers[std::size_t(lane)], leaf_blocks(bvh_, leaf, count), range);
             });
 }
 
