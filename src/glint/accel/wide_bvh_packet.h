@@ -126,16 +126,6 @@ GLINT_AVX2 inline int enter_children(const WideBvhNode& node, const Packet8& p, 
     return n;
 }
 
-// Sorts n entries by t_near, nearest first; stable (the lower slot first at a tie).
-inline void sort_by_distance(PacketEntry* e, int n) {
-    for (int i = 1; i < n; ++i) {
-        const PacketEntry x = e[i];
-        int m = i;
-        for (; m > 0 && x.t_near < e[m - 1].t_near; --m) e[m] = e[m - 1];
-        e[m] = x;
-    }
-}
-
 // The lanes of `lanes` whose range still reaches t.
 GLINT_AVX2 inline unsigned reaching(unsigned lanes, float t, const PacketRanges& r) {
     return lane_bits(Avx2Kernel::splat8(t) <= r.t_max) & lanes;

@@ -36,10 +36,12 @@ struct StackEntry {
 };
 
 // Sorts n (at most kWideBvhWidth) entries by t_near, nearest first; stable, so that at equal t_near
-// the lower slot stays first and the order does not depend on the kernel.
-[[gnu::always_inline]] inline void sort_by_distance(StackEntry* e, int n) {
+// the lower slot stays first and the order does not depend on the kernel. Entries of a single ray
+// or of a packet (wide_bvh_packet.h).
+template <typename Entry>
+[[gnu::always_inline]] inline void sort_by_distance(Entry* e, int n) {
     for (int i = 1; i < n; ++i) {
-        const StackEntry x = e[i];
+        const Entry x = e[i];
         int m = i;
         for (; m > 0 && x.t_near < e[m - 1].t_near; --m) e[m] = e[m - 1];
         e[m] = x;
