@@ -175,11 +175,18 @@ template <typename Kernel, bool kAny, typename Visit>
     }
 }
 
-#ifdef GLINT_WIDE_BVH_HAS_SIMD
 // One instantiation per instruction set: the traversal and the callback inline into these, and
-// take their target's instructions.
+// take their target's instructions. Out of line, so that query_on_path, which every ray passes
+// through, stays a switch without the traversals' stacks in its frame.
 template <bool kAny, typename Visit>
-bool query_sse(const WideBvh& bvh, const Ray& ray, Interval t_range, Visit& visit) {
+[[gnu::noinline]] bool query_scalar(const WideBvh& bvh, const Ray& ray, Interval t_range,
+                                    Visit& visit) {
+    return query<ScalarKernel, kAny>(bvh, ray, t_range, visit);
+}
+#ifdef GLINT_WIDE_BVH_HAS_SIMD
+template <bool kAny, typename Visit>
+[[gnu::noinline]] bool query_sse(const WideBvh& bvh, const Ray& ray, Interval t_range,
+                                 Visit& visit) {
     return query<SseKernel, kAny>(bvh, ray, t_range, visit);
 }
 template <bool kAny, typename Visit>
@@ -203,7 +210,7 @@ bool query_on_path(const WideBvh& bvh, const Ray& ray, Interval t_range, Visit& 
             break;
     }
 #endif
-    return query<ScalarKernel, kAny>(bvh, ray, t_range, visit);
+    return query_scalar<kAny>(bvh, ray, t_range, visit);
 }
 
 }  // namespace wide_bvh

@@ -279,6 +279,16 @@ std::vector<Point3> bridged_outline(std::span<const std::vector<Point3>> outline
     return joined;
 }
 
+namespace {
+
+bool is_parallelogram(const std::vector<Point3>& v) {
+    if (v.size() != 4) return false;
+    const Vector3 gap = (v[0] - v[1]) + (v[2] - v[3]);  // zero when v0 + v2 = v1 + v3
+    return length(gap) <= 1e-5f * (length(v[1] - v[0]) + length(v[3] - v[0]));
+}
+
+}  // namespace
+
 std::variant<Polygon, std::string> make_polygon(std::vector<Point3> vertices, InsideTest test) {
     if (auto problem = polygon_problem(vertices)) return std::move(problem->message);
     Polygon polygon;
@@ -307,6 +317,9 @@ std::variant<Polygon, std::string> make_polygon(std::vector<Point3> vertices, In
     }
     outline.bands = edge_bands(outline.projected, outline.projected_min, outline.projected_max);
     polygon.outline = std::make_shared<const PolygonOutline>(std::move(outline));
+    if (is_parallelogram(vertices))
+        polygon.parallelogram_pdf =
+            1 / length(cross(vertices[1] - vertices[0], vertices[3] - vertices[0]));
     polygon.vertices = std::move(vertices);
     return polygon;
 }
@@ -377,20 +390,12 @@ float fan_double_area(const std::vector<Point3>& v, std::size_t i) {
     return length(cross(v[i] - v[0], v[i + 1] - v[0]));
 }
 
-bool is_parallelogram(const std::vector<Point3>& v) {
-    if (v.size() != 4) return false;
-    const Vector3 gap = (v[0] - v[1]) + (v[2] - v[3]);  // zero when v0 + v2 = v1 + v3
-    return length(gap) <= 1e-5f * (length(v[1] - v[0]) + length(v[3] - v[0]));
-}
-
 }  // namespace
 
 SurfaceSample Polygon::sample(Point2 u) const {
     const auto& v = vertices;
-    if (is_parallelogram(v)) {
-        const Vector3 e1 = v[1] - v[0], e2 = v[3] - v[0];
-        return {v[0] + e1 * u.x + e2 * u.y, normal, 1 / length(cross(e1, e2))};
-    }
+    if (parallelogram_pdf > 0)
+        return {v[0] + (v[1] - v[0]) * u.x + (v[3] - v[0]) * u.y, normal, parallelogram_pdf};
     // A fan triangle picked by its area with u.x, which is then stretched back over [0, 1).
     float total = 0;
     for (std::size_t i = 1; i + 1 < v.size(); ++i) total += fan_double_area(v, i);

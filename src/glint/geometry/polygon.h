@@ -71,6 +71,9 @@ struct Polygon {
     // and never folds the outline.
     std::uint8_t axis_u = 0, axis_v = 1;
     std::shared_ptr<const PolygonOutline> outline;  // never null once made
+    // When the vertices make a parallelogram, which sample() maps u onto bilinearly, one over
+    // its area; else 0.
+    float parallelogram_pdf = 0;
 
     Bounds3 bounds() const;
     // The notes' plane step t = -(D + N.P0) / (N.R), then the inside test on the projected hit

@@ -68,8 +68,9 @@ Grid grid_for(std::uint32_t count) {
     return {count / rows, rows};
 }
 
-Point2 regular_2d(std::uint32_t index, std::uint32_t count, std::uint32_t dimension,
-                  const PatternKeys& keys) {
+// Out of line, as jittered_2d: inlined, their registers would be saved for Sobol's points too.
+[[gnu::noinline]] Point2 regular_2d(std::uint32_t index, std::uint32_t count,
+                                    std::uint32_t dimension, const PatternKeys& keys) {
     const Grid g = grid_for(count);
     // The pixel position keeps scanline order (sample i in cell (i mod n, i div n)); the other
     // dimensions shuffle the cells, so that dimensions do not move in lockstep.
@@ -82,7 +83,8 @@ Point2 regular_2d(std::uint32_t index, std::uint32_t count, std::uint32_t dimens
 // Kensler's correlated multi-jitter: point s lies in cell (s mod m, s div m) of the m x n grid,
 // and inside it in the sub-cell that permutations of the rows and columns choose, so that the
 // points also stratify the m n x m n fine grid's rows and columns.
-Point2 jittered_2d(std::uint32_t index, std::uint32_t count, Grid g, const PatternKeys& keys) {
+[[gnu::noinline]] Point2 jittered_2d(std::uint32_t index, std::uint32_t count, Grid g,
+                                     const PatternKeys& keys) {
     const std::uint32_t s = permute(index, count, keys.cells);
     const std::uint32_t column = s % g.columns, row = s / g.columns;
     const std::uint32_t sx = permute(column, g.columns, keys.columns);
@@ -106,7 +108,8 @@ constexpr std::uint32_t reverse_bits(std::uint32_t x) {
 
 // Laine and Karras' hash, in Burley's (2020) improved form: each output bit depends only on the
 // bits below it, which makes reverse_bits(hash(reverse_bits(x))) a nested uniform (Owen)
-// scramble.
+// scramble. The code below keeps values bit-reversed between scrambles, so that the reversals in
+// between cancel: a reversal costs more than the hash.
 std::uint32_t laine_karras_permutation(std::uint32_t x, std::uint32_t seed) {
     x += seed;
     x ^= x * 0x6c50b47cu;
@@ -114,10 +117,6 @@ std::uint32_t laine_karras_permutation(std::uint32_t x, std::uint32_t seed) {
     x ^= x * 0xc7afe638u;
     x ^= x * 0x8d22f6e6u;
     return x;
-}
-
-std::uint32_t nested_uniform_scramble(std::uint32_t x, std::uint32_t seed) {
-    return reverse_bits(laine_karras_permutation(reverse_bits(x), seed));
 }
 
 // The Sobol sequence's dimensions 1 to 5 from their direction numbers, the first rows of Joe and
@@ -140,8 +139,9 @@ constexpr std::array<DirectionNumbers, 5> kJoeKuo{{
 
 // A dimension's generator matrix applied a byte of the index at a time: the index is scrambled,
 // so all 32 of its bits are set as often as not, and a loop over them with a branch a bit took a
-// third of a path tracer's time. The columns are kept bit-reversed, as the Owen scramble takes
-// them (nested_uniform_scramble's first reverse_bits).
+// third of a path tracer's time. Both sides are kept bit-reversed: the tables take the scrambled
+// index as the hash leaves it (its bits reversed) and give the point's bits reversed, as the Owen
+// scramble takes them.
 struct SobolTables {
     std::array<std::array<std::uint32_t, 256>, 4> byte;
 };
@@ -157,13 +157,14 @@ constexpr SobolTables make_sobol_tables(const DirectionNumbers& d) {
             if ((d.coefficients >> (d.degree - 1 - j)) & 1) v ^= m[std::size_t(k - j)] << j;
         m[std::size_t(k)] = v;
     }
-    // The column of index bit k - 1 is m_k / 2^k, as a 32-bit fraction.
+    // The column of index bit k - 1 is m_k / 2^k, as a 32-bit fraction; that index bit is bit
+    // 32 - k of the reversed index.
     SobolTables t{};
     for (int b = 0; b < 4; ++b)
         for (std::uint32_t value = 0; value < 256; ++value)
             for (int bit = 0; bit < 8; ++bit)
                 if (value & (1u << bit)) {
-                    const int k = 8 * b + bit + 1;
+                    const int k = 32 - (8 * b + bit);
                     t.byte[std::size_t(b)][value] ^= reverse_bits(m[std::size_t(k)] << (32 - k));
                 }
     return t;
@@ -178,22 +179,39 @@ constexpr std::array<SobolTables, sizeof...(D)> make_all_sobol_tables(std::index
 constexpr std::array<SobolTables, kJoeKuo.size()> kSobolTables =
     make_all_sobol_tables(std::make_index_sequence<kJoeKuo.size()>());
 
-// Sobol dimension d in [1, 5] (unscrambled) of point `index`, as a 32-bit fraction with its bits
-// reversed.
-std::uint32_t reversed_sobol(int d, std::uint32_t index) {
+// Sobol dimension d in [0, 5] (unscrambled) of the index whose bits reversed are r, with the
+// point's bits reversed: for the van der Corput dimension 0, the index itself.
+std::uint32_t reversed_sobol(int d, std::uint32_t r) {
+    if (d == 0) return reverse_bits(r);
     const auto& t = kSobolTables[std::size_t(d - 1)].byte;
-    return t[0][index & 255] ^ t[1][(index >> 8) & 255] ^ t[2][(index >> 16) & 255] ^
-           t[3][index >> 24];
+    return t[0][r & 255] ^ t[1][(r >> 8) & 255] ^ t[2][(r >> 16) & 255] ^ t[3][r >> 24];
+}
+
+// The index's nested uniform scramble by `seed`, its bits reversed: the Owen scramble without
+// its last reversal, which the tables take back.
+std::uint32_t reversed_scrambled_index(std::uint32_t index, std::uint32_t seed) {
+    return laine_karras_permutation(reverse_bits(index), seed);
+}
+
+// Sobol dimension d of the scrambled index whose bits reversed are r, Owen-scrambled by `seed`,
+// its bits still reversed.
+std::uint32_t reversed_scrambled_sobol(int d, std::uint32_t r, std::uint32_t seed) {
+    return laine_karras_permutation(reversed_sobol(d, r), seed);
 }
 
 float to_unit(std::uint32_t x) { return float(x >> 8) * 0x1.0p-24f; }
 
-// Sobol dimension d of the (already scrambled) index i, Owen-scrambled by `seed`: the nested
-// uniform scramble of the point, whose bits reversed are i itself for the van der Corput
-// dimension 0.
-float scrambled_sobol(int d, std::uint32_t i, std::uint32_t seed) {
-    const std::uint32_t reversed = d == 0 ? i : reversed_sobol(d, i);
-    return to_unit(reverse_bits(laine_karras_permutation(reversed, seed)));
+// Two reversed 32-bit fractions as a point: both reversed at once, as one 64-bit word.
+Point2 unit_point_of_reversed(std::uint32_t x, std::uint32_t y) {
+    std::uint64_t v = std::uint64_t(x) | (std::uint64_t(y) << 32);
+    v = (v << 32) | (v >> 32);
+    v = ((v & 0x0000ffff0000ffffull) << 16) | ((v >> 16) & 0x0000ffff0000ffffull);
+    v = ((v & 0x00ff00ff00ff00ffull) << 8) | ((v >> 8) & 0x00ff00ff00ff00ffull);
+    v = ((v & 0x0f0f0f0f0f0f0f0full) << 4) | ((v >> 4) & 0x0f0f0f0f0f0f0f0full);
+    v = ((v & 0x3333333333333333ull) << 2) | ((v >> 2) & 0x3333333333333333ull);
+    v = ((v & 0x5555555555555555ull) << 1) | ((v >> 1) & 0x5555555555555555ull);
+    // The whole word reversed: x's bits reversed are the upper half.
+    return {to_unit(std::uint32_t(v >> 32)), to_unit(std::uint32_t(v))};
 }
 
 // Which of Sobol's dimensions the camera's dimensions take when their points are the pixel's
@@ -220,21 +238,20 @@ static_assert(kFirstFreeDimension == kJointSobol.size());
 // indices a net.
 Point2 sobol_2d(std::uint32_t index, const PatternKeys& keys, JointSobol joint) {
     const std::uint64_t k = keys.cells;
-    if (joint.y != joint_sobol_none) {
-        const std::uint32_t i = nested_uniform_scramble(index, std::uint32_t(keys.pixel));
-        return {scrambled_sobol(joint.x, i, std::uint32_t(k)),
-                scrambled_sobol(joint.y, i, std::uint32_t(k >> 32))};
-    }
-    const std::uint32_t i = nested_uniform_scramble(index, std::uint32_t(keys.key));
-    return {scrambled_sobol(0, i, std::uint32_t(k)), scrambled_sobol(1, i, std::uint32_t(k >> 32))};
+    const bool together = joint.y != joint_sobol_none;
+    const std::uint32_t r =
+        reversed_scrambled_index(index, std::uint32_t(together ? keys.pixel : keys.key));
+    const int dx = together ? joint.x : 0, dy = together ? joint.y : 1;
+    return unit_point_of_reversed(reversed_scrambled_sobol(dx, r, std::uint32_t(k)),
+                                  reversed_scrambled_sobol(dy, r, std::uint32_t(k >> 32)));
 }
 
 float sobol_1d(std::uint32_t index, const PatternKeys& keys, JointSobol joint) {
-    if (joint.x != joint_sobol_none)
-        return scrambled_sobol(joint.x, nested_uniform_scramble(index, std::uint32_t(keys.pixel)),
-                               std::uint32_t(keys.cells));
-    return scrambled_sobol(0, nested_uniform_scramble(index, std::uint32_t(keys.key)),
-                           std::uint32_t(keys.cells));
+    const bool together = joint.x != joint_sobol_none;
+    const std::uint32_t r =
+        reversed_scrambled_index(index, std::uint32_t(together ? keys.pixel : keys.key));
+    return to_unit(reverse_bits(
+        reversed_scrambled_sobol(together ? joint.x : 0, r, std::uint32_t(keys.cells))));
 }
 
 // The joint dimensions of `dimension`, when its pattern is the pixel's samples.
