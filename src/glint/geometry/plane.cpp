@@ -1,19 +1,10 @@
-// The notes' ray-plane intersection, the hit point snapped onto the plane, and planar uv.
+// The hit point snapped onto the plane, and planar uv (the notes' intersection: plane.h, inline).
 #include "glint/geometry/plane.h"
 
 namespace glint {
 
 Bounds3 Plane::bounds() const {
     return {{-kInfinity, -kInfinity, -kInfinity}, {kInfinity, kInfinity, kInfinity}};
-}
-
-std::optional<ShapeHit> Plane::intersect(const Ray& ray, Interval t_range) const {
-    const float n_dot_r = dot(normal, ray.direction);
-    if (n_dot_r == 0) return std::nullopt;  // parallel to the plane
-    const float d = -dot(normal, to_vector(point));
-    const float t = -(d + dot(normal, to_vector(ray.origin))) / n_dot_r;
-    if (!t_range.contains(t)) return std::nullopt;
-    return ShapeHit{t};
 }
 
 SurfacePoint Plane::surface_at(const Ray& ray, const ShapeHit& hit) const {

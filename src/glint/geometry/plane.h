@@ -18,7 +18,14 @@ struct Plane {
     // the whole space. Acceleration structures keep unbounded shapes apart.
     Bounds3 bounds() const;
     // t = -(D + N.P0) / (N.R) with D = -N.point (the notes' ray-polygon plane step).
-    std::optional<ShapeHit> intersect(const Ray& ray, Interval t_range) const;
+    std::optional<ShapeHit> intersect(const Ray& ray, Interval t_range) const {
+        const float n_dot_r = dot(normal, ray.direction);
+        if (n_dot_r == 0) return std::nullopt;  // parallel to the plane
+        const float d = -dot(normal, to_vector(point));
+        const float t = -(d + dot(normal, to_vector(ray.origin))) / n_dot_r;
+        if (!t_range.contains(t)) return std::nullopt;
+        return ShapeHit{t};
+    }
     // uv: world-unit coordinates along two perpendicular directions in the plane.
     SurfacePoint surface_at(const Ray& ray, const ShapeHit& hit) const;
 };

@@ -44,6 +44,12 @@ inline Bounds3 bounds(const Shape& shape) {
 }
 
 inline std::optional<ShapeHit> intersect(const Shape& shape, const Ray& ray, Interval t_range) {
+    // Planes without the variant's jump table: every ray tests the unbounded shapes beside the
+    // acceleration structure, and a floor plane is the common one.
+    if (const auto* plane = std::get_if<Plane>(&shape)) {
+        count_primitives();
+        return plane->intersect(ray, t_range);
+    }
     return std::visit(
         [&](const auto& s) {
             // A mesh's block tests count its triangles instead.
