@@ -194,8 +194,9 @@ std::uint32_t reversed_scrambled_index(std::uint32_t index, std::uint32_t seed) 
 }
 
 // Sobol dimension d of the scrambled index whose bits reversed are r, Owen-scrambled by `seed`,
-// its bits still reversed.
-std::uint32_t reversed_scrambled_sobol(int d, std::uint32_t r, std::uint32_t seed) {
+// its bits still reversed. Inlined: a call, twice a point, cost a tenth of the point.
+[[gnu::always_inline]] inline std::uint32_t reversed_scrambled_sobol(int d, std::uint32_t r,
+                                                                     std::uint32_t seed) {
     return laine_karras_permutation(reversed_sobol(d, r), seed);
 }
 
