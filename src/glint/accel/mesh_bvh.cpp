@@ -6,13 +6,12 @@
 #include <algorithm>
 #include <array>
 #include <cassert>
-#include <new>
-#include <type_traits>
 #include <unordered_map>
 #include <utility>
 #include <vector>
 
 #include "glint/accel/wide_bvh_packet.h"
+#include "glint/geometry/made_on_first_use.h"
 
 namespace glint {
 
@@ -66,26 +65,8 @@ template <bool kSimd>
     return false;
 }
 
-// The block testers of a packet's rays, each made when its ray first reaches a leaf (a ray that
-// enters no leaf needs none), in storage that is not cleared first.
-class PacketTesters {
-public:
-    explicit PacketTesters(std::span<const Ray> rays) : rays_(rays) {}
-
-    const BlockTester& operator[](std::size_t lane) {
-        if ((made_ >> lane & 1) == 0) {
-            ::new (storage_[lane]) BlockTester(rays_[lane]);
-            made_ |= 1u << lane;
-        }
-        return *std::launder(reinterpret_cast<const BlockTester*>(storage_[lane]));
-    }
-
-private:
-    static_assert(std::is_trivially_destructible_v<BlockTester>);
-    std::span<const Ray> rays_;
-    unsigned made_ = 0;
-    alignas(BlockTester) unsigned char storage_[kRayPacketSize][sizeof(BlockTester)];
-};
+// The block testers of a packet's rays.
+using PacketTesters = EachMadeOnFirstUse<BlockTester, Ray, kRayPacketSize>;
 
 }  // namespace
 
@@ -124,7 +105,7 @@ void MeshBvh::intersect_packet(std::span<const Ray> rays, const Interval* t_rang
         [&](auto kernel, std::uint32_t leaf, std::uint32_t count, int lane, Interval& range)
             GLINT_INLINE_LEAF {
                 nearest[std::size_t(lane)].test<decltype(kernel)::kSimd>(
-                    testers[std::size_t(lane)], leaf_blocks(bvh_, leaf, count), range);
+                    testers.get(std::size_t(lane)), leaf_blocks(bvh_, leaf, count), range);
             });
     for (std::size_t i = 0; i < rays.size(); ++i)
         hits[i] = nearest[i].found ? std::optional<ShapeHit>(nearest[i].hit) : std::nullopt;
@@ -138,7 +119,7 @@ unsigned MeshBvh::occluded_packet(std::span<const Ray> rays, const Interval* t_r
         [&](auto kernel, std::uint32_t leaf, std::uint32_t count, int lane, Interval range)
             GLINT_INLINE_LEAF {
                 return blocks_occlude<decltype(kernel)::kSimd>(
-                    testers[std::size_t(lane)], leaf_blocks(bvh_, leaf, count), range);
+                    testers.get(std::size_t(lane)), leaf_blocks(bvh_, leaf, count), range);
             });
 }
 
