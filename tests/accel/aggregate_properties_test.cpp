@@ -1,9 +1,11 @@
 // Every acceleration structure that accel_names() lists returns exactly the brute-force list's
-// closest hits (same t, same primitive) and occlusion answers, on random and adversarial input.
+// closest hits (same t, same primitive) and occlusion answers, on random and adversarial input;
+// and, asked for rays in packets, each ray's own hit bit for bit.
 // Embree is the exception: its own triangle test differs in the last bits, so
 // embree_aggregate_test.cpp compares it with a tolerance instead.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <memory>
@@ -14,6 +16,7 @@
 #include "common/under_sanitizer.h"
 #include "glint/accel/make_aggregate.h"
 #include "glint/accel/primitive_list.h"
+#include "glint/geometry/simd_path.h"
 #include "glint/math/constants.h"
 
 namespace glint {
@@ -51,9 +54,44 @@ public:
                     << name << ", " << what;
             }
         }
+        // Each ray also joins a packet of the rays checked before it over the same range.
+        auto packet = std::find_if(packets_.begin(), packets_.end(),
+                                   [&](const Packet& p) { return same_range(p.range, range); });
+        if (packet == packets_.end()) packet = packets_.insert(packets_.end(), {range, {}});
+        packet->rays.push_back(ray);
+        if (packet->rays.size() == std::size_t(kRayPacketSize)) {
+            check_packet(packet->rays, range, "a packet");
+            packets_.erase(packet);
+        }
+    }
+
+    // Every structure's hits for `rays` asked as one packet, lane by lane against the same
+    // structure's hit for the ray alone: the same t, u, v, part and primitive.
+    void check_packet(std::span<const Ray> rays, Interval range, const std::string& what) {
+        for (const std::uint32_t mask : kMasks)
+            for (const auto& [name, aggregate] : structures_) {
+                std::optional<Hit> got[kRayPacketSize];
+                aggregate->intersect_packet(rays, range, mask, got);
+                for (std::size_t i = 0; i < rays.size(); ++i) {
+                    const std::optional<Hit> alone = aggregate->intersect(rays[i], range, mask);
+                    const std::string where = name + ", " + what + ", lane " + std::to_string(i);
+                    ASSERT_EQ(got[i].has_value(), alone.has_value()) << where;
+                    if (!alone) continue;
+                    ++packet_hits_;
+                    ASSERT_EQ(got[i]->shape_hit.t, alone->shape_hit.t) << where;
+                    ASSERT_EQ(got[i]->shape_hit.u, alone->shape_hit.u) << where;
+                    ASSERT_EQ(got[i]->shape_hit.v, alone->shape_hit.v) << where;
+                    ASSERT_EQ(got[i]->shape_hit.part, alone->shape_hit.part) << where;
+                    ASSERT_EQ(got[i]->primitive, alone->primitive) << where;
+                }
+            }
+    }
+    ~Agreement() {
+        for (const Packet& p : packets_) check_packet(p.rays, p.range, "a last packet");
     }
 
     int hits() const { return hits_; }
+    int packet_hits() const { return packet_hits_; }
     std::size_t structure_count() const { return structures_.size(); }
     const PrimitiveList& list() const { return list_; }
 
@@ -62,9 +100,20 @@ private:
         std::string name;
         std::unique_ptr<Aggregate> aggregate;
     };
+    static bool same_range(Interval a, Interval b) {
+        return (a.min == b.min || (std::isnan(a.min) && std::isnan(b.min))) && a.max == b.max;
+    }
+
     PrimitiveList list_;
     std::vector<Named> structures_;
     int hits_ = 0;
+    int packet_hits_ = 0;
+    // Rays checked alone, waiting to be checked as a packet with others over the same range.
+    struct Packet {
+        Interval range;
+        std::vector<Ray> rays;
+    };
+    std::vector<Packet> packets_;
 };
 
 std::string ray_text(const Ray& r, int i) {
@@ -363,6 +412,45 @@ TEST(AggregateProperties, MeshTrianglesInstancesAndSpheresInOneStructure) {
     ASSERT_TRUE(hit);
     EXPECT_EQ(hit->primitive, 3u);  // the stretched instance at z = -3, met at t = 6
     EXPECT_FLOAT_EQ(hit->shape_hit.t, 6);
+}
+
+// Packets of neighbouring eye rays (tiles of 4 x 2 pixels, as a render traces them), of every
+// size from one ray to eight, with a ray that cannot be traced among them now and then, on every
+// SIMD path: the packet traversal on AVX2, one ray after another elsewhere.
+TEST(AggregateProperties, PacketsOfEyeRaysHitWhatEachRayHitsAlone) {
+    const auto mix = random_mix(2000, 12);
+    const auto meshes = meshes_instances_and_spheres();
+    std::mt19937 rng(13);
+    std::uniform_real_distribution<float> u(-1, 1);
+    const float nan = std::numeric_limits<float>::quiet_NaN();
+    const SimdPath saved = simd_path();
+    for (const SimdPath path : kSimdPaths) {
+        if (!set_simd_path(path)) continue;
+        for (const auto* prims : {&mix, &meshes}) {
+            Agreement agree(*prims);
+            const int packets = testing::kUnderSanitizer ? 100 : 300;
+            for (int n = 0; n < packets; ++n) {
+                // Aimed into the scene: the meshes lie within 1.5 of the origin.
+                const float spread = prims == &mix ? 8.0f : 1.5f;
+                const Point3 eye{u(rng) * 3, u(rng) * 3, 25};
+                const Vector3 centre = (Point3{u(rng) * spread, u(rng) * spread, 0} - eye) / 25;
+                const float pixel = n % 2 ? 0.002f : 0.02f;
+                const std::size_t size = n % 4 == 3 ? std::size_t(1 + n % 8) : 8;
+                std::vector<Ray> rays;
+                for (std::size_t i = 0; i < size; ++i) {
+                    const Vector3 d =
+                        centre + Vector3{float(i % 4) * pixel, float(i / 4) * pixel, 0};
+                    rays.push_back({eye, normalize(d)});
+                }
+                if (n % 10 == 9) rays[std::size_t(n) % size].direction.y = nan;
+                const Interval range = n % 5 == 4 ? Interval{0, 30} : Interval{};
+                agree.check_packet(rays, range, "packet " + std::to_string(n));
+                if (HasFatalFailure()) break;
+            }
+            EXPECT_GT(agree.packet_hits(), packets * 4) << simd_path_name(path);
+        }
+    }
+    set_simd_path(saved);
 }
 
 TEST(AggregateProperties, NanAndZeroLengthDirectionsHitNothingOrAgree) {

@@ -2,9 +2,12 @@
 // set of primitives. Queries never allocate and never throw.
 #pragma once
 
+#include <array>
+#include <cassert>
 #include <cstddef>
 #include <cstdint>
 #include <optional>
+#include <span>
 
 #include "glint/accel/accel_stats.h"
 #include "glint/accel/primitive.h"
@@ -50,6 +53,11 @@ public:
         if (!is_traceable(ray)) return std::nullopt;
         return closest_hit(ray, t_range, ray_mask);
     }
+    // The closest hits of up to kRayPacketSize rays asked together, hits[i] for rays[i], each
+    // exactly what intersect() gives that ray alone: for coherent rays (a tile's eye rays), which
+    // a BVH traces as a packet.
+    void intersect_packet(std::span<const Ray> rays, Interval t_range, std::uint32_t ray_mask,
+                          std::optional<Hit>* hits) const;
     // Whether any primitive visible to ray_mask is hit with t in t_range (shadow feelers).
     bool occluded(const Ray& ray, Interval t_range, std::uint32_t ray_mask) const {
         return is_traceable(ray) && any_hit(ray, t_range, ray_mask);
@@ -65,6 +73,33 @@ protected:
     virtual std::optional<Hit> closest_hit(const Ray& ray, Interval t_range,
                                            std::uint32_t ray_mask) const = 0;
     virtual bool any_hit(const Ray& ray, Interval t_range, std::uint32_t ray_mask) const = 0;
+    // intersect_packet() for traceable rays; by default one after another.
+    virtual void closest_hits(std::span<const Ray> rays, Interval t_range, std::uint32_t ray_mask,
+                              std::optional<Hit>* hits) const {
+        for (std::size_t i = 0; i < rays.size(); ++i)
+            hits[i] = closest_hit(rays[i], t_range, ray_mask);
+    }
 };
+
+inline void Aggregate::intersect_packet(std::span<const Ray> rays, Interval t_range,
+                                        std::uint32_t ray_mask, std::optional<Hit>* hits) const {
+    assert(rays.size() <= std::size_t(kRayPacketSize));
+    // Rays that cannot hit anything leave the packet.
+    std::array<Ray, kRayPacketSize> traced;
+    std::array<std::size_t, kRayPacketSize> slot;
+    std::size_t n = 0;
+    for (std::size_t i = 0; i < rays.size(); ++i) {
+        hits[i].reset();
+        if (is_traceable(rays[i])) {
+            traced[n] = rays[i];
+            slot[n++] = i;
+        }
+    }
+    if (n == rays.size()) return closest_hits(rays, t_range, ray_mask, hits);
+    if (n == 0) return;
+    std::array<std::optional<Hit>, kRayPacketSize> found;
+    closest_hits({traced.data(), n}, t_range, ray_mask, found.data());
+    for (std::size_t k = 0; k < n; ++k) hits[slot[k]] = found[k];
+}
 
 }  // namespace glint

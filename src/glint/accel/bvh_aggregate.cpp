@@ -5,10 +5,13 @@
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
+#include <array>
+#include <cassert>
 #include <functional>
 #include <stdexcept>
 
 #include "glint/accel/rounding_margin.h"
+#include "glint/accel/wide_bvh_packet.h"
 #include "glint/geometry/made_on_first_use.h"
 #include "glint/math/huge_page_allocator.h"
 
@@ -141,61 +144,109 @@ BvhAggregate::Reference BvhAggregate::reference(std::uint32_t ref) const {
     return {primitive, ref - first_reference_[primitive]};
 }
 
-std::optional<Hit> BvhAggregate::closest_hit(const Ray& ray, Interval t_range,
-                                             std::uint32_t ray_mask) const {
-    if (common_visibility_ && (*common_visibility_ & ray_mask) == 0) return std::nullopt;
-    // Plain values, not an std::optional, while the search runs: see BlockHit.
+// Plain values, not an std::optional, while the search runs: see BlockHit.
+struct BvhAggregate::NearestHit {
     Hit closest{};
     bool found = false;
+
     // Keeps a hit nearer than the closest so far (or as near, and first in nearer()'s order) and
     // brings the range's far end to it.
-    const auto consider = [&](const Hit& candidate, Interval& range) {
+    void consider(const Hit& candidate, Interval& range) {
         if (found && !nearer(candidate, closest)) return;
         closest = candidate;
         found = true;
         range.max = candidate.shape_hit.t;
-    };
+    }
+    std::optional<Hit> result() const { return found ? std::optional<Hit>(closest) : std::nullopt; }
+};
+
+void BvhAggregate::closest_in_unbounded(const Ray& ray, std::uint32_t ray_mask, NearestHit& nearest,
+                                        Interval& range) const {
     for (const std::uint32_t i : unbounded_) {
         if (!visible(i, ray_mask)) continue;
-        if (const auto hit = glint::intersect(primitives_[i].shape, ray, t_range))
-            consider({*hit, i}, t_range);
+        if (const auto hit = glint::intersect(primitives_[i].shape, ray, range))
+            nearest.consider({*hit, i}, range);
     }
+}
+
+template <bool kSimd, class Triangles, class Spheres>
+inline GLINT_INLINE_LEAF void BvhAggregate::closest_in_leaf(
+    const Ray& ray, std::uint32_t leaf, std::uint32_t count, std::uint32_t ray_mask,
+    Triangles&& triangles, Spheres&& spheres, NearestHit& nearest, Interval& range) const {
+    switch (leaf_kind(leaf)) {
+        case kWideTriangleLeaf:
+            for (const TriangleBlock& block : leaf_blocks(bvh_, leaf, count)) {
+                const BlockHit hit = triangles().template nearest<kSimd>(
+                    block, range, triangle_lane_visible(block, ray_mask));
+                if (!hit) continue;
+                const Reference r = reference(block.id[hit.lane]);
+                nearest.consider({{hit.t, hit.u, hit.v, r.triangle}, r.primitive}, range);
+            }
+            return;
+        case kWideSphereLeaf:
+            for (const SphereBlock& block : leaf_sphere_blocks(bvh_, leaf, count)) {
+                const BlockHit hit = spheres().template nearest<kSimd>(
+                    block, range, sphere_lane_visible(block, ray_mask));
+                if (hit) nearest.consider({{hit.t}, block.id[hit.lane]}, range);
+            }
+            return;
+        default:
+            for (const std::uint32_t i : leaf_primitives(bvh_, leaf, count)) {
+                if (!visible(i, ray_mask)) continue;
+                if (const auto hit = glint::intersect(primitives_[i].shape, ray, range))
+                    nearest.consider({*hit, i}, range);
+            }
+            return;
+    }
+}
+
+std::optional<Hit> BvhAggregate::closest_hit(const Ray& ray, Interval t_range,
+                                             std::uint32_t ray_mask) const {
+    if (common_visibility_ && (*common_visibility_ & ray_mask) == 0) return std::nullopt;
+    NearestHit nearest;
+    closest_in_unbounded(ray, ray_mask, nearest, t_range);
     // Set up when a ray first reaches a leaf of their kind.
     MadeOnFirstUse<BlockTester, Ray> triangles(ray);
     MadeOnFirstUse<SphereTester, Ray> spheres(ray);
-    bvh_closest_leaf(
-        bvh_, ray, t_range,
-        [&](auto kernel, std::uint32_t leaf, std::uint32_t count, Interval& range)
+    bvh_closest_leaf(bvh_, ray, t_range,
+                     [&](auto kernel, std::uint32_t leaf, std::uint32_t count, Interval& range)
+                         GLINT_INLINE_LEAF {
+                             closest_in_leaf<decltype(kernel)::kSimd>(
+                                 ray, leaf, count, ray_mask,
+                                 [&]() -> const BlockTester& { return triangles.get(); },
+                                 [&]() -> const SphereTester& { return spheres.get(); }, nearest,
+                                 range);
+                         });
+    return nearest.result();
+}
+
+void BvhAggregate::closest_hits(std::span<const Ray> rays, Interval t_range, std::uint32_t ray_mask,
+                                std::optional<Hit>* hits) const {
+    const std::size_t n = rays.size();
+    assert(n <= std::size_t(kRayPacketSize));
+    if (common_visibility_ && (*common_visibility_ & ray_mask) == 0) {
+        std::fill_n(hits, n, std::nullopt);
+        return;
+    }
+    std::array<NearestHit, kRayPacketSize> nearest;
+    std::array<Interval, kRayPacketSize> ranges;
+    for (std::size_t i = 0; i < n; ++i) {
+        ranges[i] = t_range;
+        closest_in_unbounded(rays[i], ray_mask, nearest[i], ranges[i]);
+    }
+    EachMadeOnFirstUse<BlockTester, Ray, kRayPacketSize> triangles(rays);
+    EachMadeOnFirstUse<SphereTester, Ray, kRayPacketSize> spheres(rays);
+    bvh_closest_leaf_packet(
+        bvh_, rays, ranges.data(),
+        [&](auto kernel, std::uint32_t leaf, std::uint32_t count, int lane, Interval& range)
             GLINT_INLINE_LEAF {
-                constexpr bool kSimd = decltype(kernel)::kSimd;
-                switch (leaf_kind(leaf)) {
-                    case kWideTriangleLeaf:
-                        for (const TriangleBlock& block : leaf_blocks(bvh_, leaf, count)) {
-                            const BlockHit hit = triangles.get().nearest<kSimd>(
-                                block, range, triangle_lane_visible(block, ray_mask));
-                            if (!hit) continue;
-                            const Reference r = reference(block.id[hit.lane]);
-                            consider({{hit.t, hit.u, hit.v, r.triangle}, r.primitive}, range);
-                        }
-                        return;
-                    case kWideSphereLeaf:
-                        for (const SphereBlock& block : leaf_sphere_blocks(bvh_, leaf, count)) {
-                            const BlockHit hit = spheres.get().nearest<kSimd>(
-                                block, range, sphere_lane_visible(block, ray_mask));
-                            if (hit) consider({{hit.t}, block.id[hit.lane]}, range);
-                        }
-                        return;
-                    default:
-                        for (const std::uint32_t i : leaf_primitives(bvh_, leaf, count)) {
-                            if (!visible(i, ray_mask)) continue;
-                            if (const auto hit = glint::intersect(primitives_[i].shape, ray, range))
-                                consider({*hit, i}, range);
-                        }
-                        return;
-                }
+                const auto i = std::size_t(lane);
+                closest_in_leaf<decltype(kernel)::kSimd>(
+                    rays[i], leaf, count, ray_mask,
+                    [&]() -> const BlockTester& { return triangles.get(i); },
+                    [&]() -> const SphereTester& { return spheres.get(i); }, nearest[i], range);
             });
-    if (!found) return std::nullopt;
-    return closest;
+    for (std::size_t i = 0; i < n; ++i) hits[i] = nearest[i].result();
 }
 
 bool BvhAggregate::any_hit(const Ray& ray, Interval t_range, std::uint32_t ray_mask) const {

@@ -27,6 +27,20 @@ private:
     std::optional<Hit> closest_hit(const Ray& ray, Interval t_range,
                                    std::uint32_t ray_mask) const override;
     bool any_hit(const Ray& ray, Interval t_range, std::uint32_t ray_mask) const override;
+    // A packet through the wide BVH (wide_bvh_packet.h), each ray's leaves tested as alone.
+    void closest_hits(std::span<const Ray> rays, Interval t_range, std::uint32_t ray_mask,
+                      std::optional<Hit>* hits) const override;
+
+    struct NearestHit;  // the closest hit so far of one ray
+    // One ray against the unbounded primitives, or a leaf's, that ray_mask sees: keeps the
+    // nearest in `nearest` and brings range.max to it. triangles() and spheres() give the ray's
+    // block testers.
+    void closest_in_unbounded(const Ray& ray, std::uint32_t ray_mask, NearestHit& nearest,
+                              Interval& range) const;
+    template <bool kSimd, class Triangles, class Spheres>
+    void closest_in_leaf(const Ray& ray, std::uint32_t leaf, std::uint32_t count,
+                         std::uint32_t ray_mask, Triangles&& triangles, Spheres&& spheres,
+                         NearestHit& nearest, Interval& range) const;
 
     // A reference numbers every triangle of a mesh primitive and every other primitive, in
     // primitive order: the lanes of the tree's blocks name references.

@@ -17,9 +17,6 @@
 
 namespace glint {
 
-// Rays a packet holds.
-inline constexpr int kRayPacketSize = 8;
-
 namespace wide_bvh {
 
 #ifdef GLINT_WIDE_BVH_HAS_SIMD

@@ -23,4 +23,7 @@ struct Ray {
     constexpr Point3 at(float t) const { return origin + direction * t; }
 };
 
+// Rays traced together as one packet, at most (one to a lane of an eight-wide SIMD register).
+inline constexpr int kRayPacketSize = 8;
+
 }  // namespace glint
