@@ -11,6 +11,7 @@
 #include <tbb/task_arena.h>
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <map>
@@ -48,7 +49,88 @@ struct RenderInputs {
     const FilterSampling* filter;  // under adaptive sampling (eye_sample.h); else null
     const typename Integrator::Shared& shared;
     std::mutex& state_mutex;  // held to merge into the state's film and totals
+    bool eye_packets;         // RenderOptions::eye_packets
 };
+
+// Integrators that shade an eye ray from its nearest hit found beforehand, with the rays of
+// neighbouring pixels in one packet.
+template <class Integrator>
+concept ShadesGivenHits = requires(Integrator& i, const Ray& ray, const std::optional<Hit>& hit,
+                                   SampleStream& stream, RayStats& stats) {
+    i.trace_eye_ray(ray, hit, nullptr, stream, stats);
+};
+
+// A tile's eye rays traced as packets (Wald et al. 2001): blocks of 4 x 2 pixels, one sample
+// index at a time, the block's eye rays' nearest hits found together (World::nearest_hits),
+// then each ray shaded as alone. Each pixel still takes its samples in order, and the film's
+// fixed-point sums do not depend on the order of pixels, so the image is bit for bit that of
+// render_tile's loop. Not under adaptive sampling, nor with output variables.
+template <class Integrator>
+void render_tile_in_packets(const Tile& tile, Pass pass, const RenderInputs<Integrator>& in,
+                            RenderState& state, TileTotals& totals) {
+    const World& world = in.world;
+    const Camera& camera = world.camera();
+    const RenderSettings& settings = world.settings();
+    const float pencil_scale =
+        world.carries_pencils() ? eye_pencil_scale(settings.samples_per_pixel) : 0;
+    Integrator integrator(world, in.shared);  // one per tile: it holds per-thread caches
+    FilmTile film_tile = state.film.make_tile(tile);
+    constexpr int kBlockWidth = 4, kBlockHeight = kRayPacketSize / kBlockWidth;
+    struct Lane {
+        int x, y;
+        std::optional<PixelPatterns> patterns;
+        std::optional<SampleStream> stream;
+        EyeSample eye;
+        std::size_t ray;  // its index in the packet; kNone when the camera does not see its film
+    };
+    constexpr std::size_t kNone = kRayPacketSize;
+    std::array<Lane, kRayPacketSize> lanes;
+    std::array<Ray, kRayPacketSize> rays;
+    std::array<std::optional<Hit>, kRayPacketSize> hits;
+    for (int y0 = tile.y0; y0 < tile.y1; y0 += kBlockHeight)
+        for (int x0 = tile.x0; x0 < tile.x1; x0 += kBlockWidth) {
+            std::size_t count = 0;
+            for (int y = y0; y < std::min(y0 + kBlockHeight, tile.y1); ++y)
+                for (int x = x0; x < std::min(x0 + kBlockWidth, tile.x1); ++x) {
+                    const std::size_t pixel =
+                        std::size_t(y) * std::size_t(settings.width) + std::size_t(x);
+                    Lane& lane = lanes[count++];
+                    lane.x = x;
+                    lane.y = y;
+                    lane.patterns.emplace(in.sampler, pixel);
+                    state.samples[pixel] = std::uint32_t(pass.end);
+                }
+            for (int s = pass.begin; s < pass.end; ++s) {
+                std::size_t traced = 0;
+                for (std::size_t i = 0; i < count; ++i) {
+                    Lane& lane = lanes[i];
+                    lane.stream.emplace(*lane.patterns, std::uint32_t(s));
+                    lane.eye =
+                        eye_sample(camera, *lane.stream, lane.x, lane.y, nullptr, pencil_scale);
+                    lane.ray = kNone;
+                    if (camera.sees(lane.eye.film)) {
+                        lane.ray = traced;
+                        rays[traced++] = lane.eye.ray;
+                    }
+                }
+                world.nearest_hits({rays.data(), traced}, hits.data());
+                for (std::size_t i = 0; i < count; ++i) {
+                    Lane& lane = lanes[i];
+                    const Color c = lane.ray == kNone
+                                        ? Color{0, 0, 0}
+                                        : integrator.trace_eye_ray(lane.eye.ray, hits[lane.ray],
+                                                                   lane.eye.pencil_or_null(),
+                                                                   *lane.stream, totals.rays);
+                    if (is_valid_sample(c))
+                        film_tile.add_sample(lane.eye.film, c);
+                    else
+                        totals.bad.add({lane.x, lane.y, s});
+                }
+            }
+        }
+    const std::lock_guard lock(in.state_mutex);
+    state.film.merge(film_tile);
+}
 
 // Compiled twice: with the output variables' code (kAovs) and without, the render's own loop.
 template <class Integrator, bool kAovs>
@@ -72,6 +154,10 @@ void render_tile(const Tile& tile, Pass pass, const RenderInputs<Integrator>& in
                 state.samples[std::size_t(y) * std::size_t(world.settings().width) +
                               std::size_t(x)] = std::uint32_t(pass.end);
         return;
+    }
+    if constexpr (!kAovs && ShadesGivenHits<Integrator>) {
+        if (in.eye_packets && !world.settings().adaptive)
+            return render_tile_in_packets(tile, pass, in, state, totals);
     }
     const FilterSampling* filter = in.filter;
     const Camera& camera = world.camera();
@@ -202,7 +288,8 @@ bool render_work(const World& world, const RenderOptions& options, const std::ve
     std::mutex own_mutex;
     std::mutex& state_mutex = options.state_mutex ? *options.state_mutex : own_mutex;
     const RenderInputs<Integrator> inputs{
-        world, sampler, filter_sampling ? &*filter_sampling : nullptr, shared, state_mutex};
+        world,  sampler,     filter_sampling ? &*filter_sampling : nullptr,
+        shared, state_mutex, options.eye_packets};
     std::atomic<int> tiles_finished{0};
     for (std::size_t first = 0; first < work.size();) {
         // This pass's pieces: work[first, last).

@@ -77,6 +77,14 @@ public:
     std::optional<Hit> intersect(const Ray& ray, Interval t_range, std::uint32_t mask) const {
         return aggregate_->intersect(ray, t_range, mask);
     }
+    // The nearest hit of what camera rays see, and the same for a packet of rays at once (a
+    // tile's eye rays): hits[i] is nearest_hit(rays[i]), bit for bit.
+    std::optional<Hit> nearest_hit(const Ray& ray) const {
+        return aggregate_->intersect(ray, {0, kInfinity}, kVisibleToCameraRays);
+    }
+    void nearest_hits(std::span<const Ray> rays, std::optional<Hit>* hits) const {
+        aggregate_->intersect_packet(rays, {0, kInfinity}, kVisibleToCameraRays, hits);
+    }
     bool occluded(const Ray& ray, Interval t_range, std::uint32_t mask) const {
         return aggregate_->occluded(ray, t_range, mask);
     }

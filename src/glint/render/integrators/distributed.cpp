@@ -31,6 +31,15 @@ Color DistributedIntegrator::trace_eye_ray(const Ray& ray, const RayDifferential
     return trace(ray, 1, 1, stream, stats, world_.eye_media(), pencil);
 }
 
+Color DistributedIntegrator::trace_eye_ray(const Ray& ray, const std::optional<Hit>& hit,
+                                           const RayDifferential* pencil, SampleStream& stream,
+                                           RayStats& stats) {
+    stats.count(RayKind::primary);
+    if (recorder_) [[unlikely]]
+        return trace_recorded(ray, 1, 1, stream, stats, world_.eye_media(), pencil);
+    return shade<false>(ray, hit, 1, 1, stream, stats, world_.eye_media(), pencil);
+}
+
 // shade() and what it calls are compiled twice: with kRecord, telling the recorder every event;
 // without, the renderer's own code, with no trace of the recorder in it.
 
@@ -39,7 +48,7 @@ Color DistributedIntegrator::trace(const Ray& ray, int depth, float weight, Samp
                                    const RayDifferential* pencil) {
     if (recorder_) [[unlikely]]
         return trace_recorded(ray, depth, weight, stream, stats, media, pencil);
-    return shade<false>(ray, depth, weight, stream, stats, media, pencil);
+    return shade<false>(ray, world_.nearest_hit(ray), depth, weight, stream, stats, media, pencil);
 }
 
 template <bool kRecord>
@@ -49,7 +58,8 @@ Color DistributedIntegrator::trace_ray(const Ray& ray, int depth, float weight,
     if constexpr (kRecord)
         return trace_recorded(ray, depth, weight, stream, stats, media, pencil);
     else
-        return shade<false>(ray, depth, weight, stream, stats, media, pencil);
+        return shade<false>(ray, world_.nearest_hit(ray), depth, weight, stream, stats, media,
+                            pencil);
 }
 
 // Out of line: the renderer's code stays as small as it was without a recorder.
@@ -59,17 +69,17 @@ Color DistributedIntegrator::trace_ray(const Ray& ray, int depth, float weight,
                                                               const MediumStack& media,
                                                               const RayDifferential* pencil) {
     recorder_->begin_ray(ray, depth, weight);
-    const Color color = shade<true>(ray, depth, weight, stream, stats, media, pencil);
+    const Color color =
+        shade<true>(ray, world_.nearest_hit(ray), depth, weight, stream, stats, media, pencil);
     recorder_->end_ray(color);
     return color;
 }
 
 template <bool kRecord>
-Color DistributedIntegrator::shade(const Ray& ray, int depth, float weight, SampleStream& stream,
-                                   RayStats& stats, const MediumStack& media,
-                                   const RayDifferential* pencil) {
+Color DistributedIntegrator::shade(const Ray& ray, const std::optional<Hit>& hit, int depth,
+                                   float weight, SampleStream& stream, RayStats& stats,
+                                   const MediumStack& media, const RayDifferential* pencil) {
     const RenderSettings& settings = world_.settings();
-    const auto hit = world_.intersect(ray, {0, kInfinity}, kVisibleToCameraRays);
     const float length = hit ? hit->shape_hit.t : kInfinity;
     std::optional<FogEffect> fog = ray_fog(world_, ray, media, length);
     // Each sample draws where in its intervals the media are evaluated.

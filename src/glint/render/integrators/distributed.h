@@ -9,6 +9,8 @@
 //       + kr I(reflected) + kt I(refracted)
 #pragma once
 
+#include <optional>
+
 #include "glint/math/color.h"
 #include "glint/math/ray.h"
 #include "glint/render/integrators/medium_stack.h"
@@ -35,6 +37,10 @@ public:
     // included.
     Color trace_eye_ray(const Ray& ray, const RayDifferential* pencil, SampleStream& stream,
                         RayStats& stats);
+    // The same, given the eye ray's nearest hit, found with the rays of neighbouring pixels in
+    // one packet (World::nearest_hits).
+    Color trace_eye_ray(const Ray& ray, const std::optional<Hit>& hit,
+                        const RayDifferential* pencil, SampleStream& stream, RayStats& stats);
 
     // The colour seen along a ray at the given depth (eye rays are 1) and weight (the product
     // of kr and kt above it), travelling through the given media. The pencil follows the ray
@@ -53,9 +59,11 @@ private:
     template <bool kRecord>
     Color trace_ray(const Ray& ray, int depth, float weight, SampleStream& stream, RayStats& stats,
                     const MediumStack& media, const RayDifferential* pencil);
+    // The colour along a ray whose nearest hit is `hit`.
     template <bool kRecord>
-    Color shade(const Ray& ray, int depth, float weight, SampleStream& stream, RayStats& stats,
-                const MediumStack& media, const RayDifferential* pencil);
+    Color shade(const Ray& ray, const std::optional<Hit>& hit, int depth, float weight,
+                SampleStream& stream, RayStats& stats, const MediumStack& media,
+                const RayDifferential* pencil);
     // color plus the local term of each light at the surface of c in turn, each area light and
     // emitting object sampled by its shadow rays. (By value: a colour added to through a
     // reference waits on its own stores.)

@@ -29,7 +29,7 @@ Color LightIntegrator::eye_ray(const Ray& ray, int depth, const MediumStack& med
                                RayStats& stats) {
     const RenderSettings& settings = world_.settings();
     if constexpr (kRecord) recorder_->begin_ray(ray, depth, 1);
-    const auto hit = world_.intersect(ray, {0, kInfinity}, kVisibleToCameraRays);
+    const auto hit = world_.nearest_hit(ray);
     // Inside an object that fades, all the ray brings back fades on its way.
     const std::optional<FogEffect> fade = interior_fade(media, hit ? hit->shape_hit.t : kInfinity);
     if (!hit) {
@@ -126,7 +126,7 @@ void LightIntegrator::trace_particle(SampleStream& stream, SplatFilm& film, RayS
     Color throughput{1, 1, 1};  // the product of the weights, for Russian roulette
     bool seen = false;
     for (int depth = 1; depth <= settings.max_depth; ++depth) {
-        const auto hit = world_.intersect(ray, {0, kInfinity}, kVisibleToCameraRays);
+        const auto hit = world_.nearest_hit(ray);
         stats.count(RayKind::particle);
         if (!hit) break;
         if (const auto fade = interior_fade(media, hit->shape_hit.t)) {

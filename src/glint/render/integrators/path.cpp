@@ -62,7 +62,7 @@ Color PathIntegrator::radiance(const Ray& ray, PathState path, SampleStream& str
                                RayStats& stats) {
     const RenderSettings& settings = world_.settings();
     if constexpr (kRecord) recorder_->begin_ray(ray, path.depth, 1);
-    const auto hit = world_.intersect(ray, {0, kInfinity}, kVisibleToCameraRays);
+    const auto hit = world_.nearest_hit(ray);
     // Inside an object that fades, all the ray brings back fades on its way.
     const std::optional<FogEffect> fade =
         interior_fade(path.media, hit ? hit->shape_hit.t : kInfinity);

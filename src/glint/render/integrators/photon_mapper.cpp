@@ -61,7 +61,7 @@ void trace_photon(const World& world, const Emitters& emitters, std::uint64_t in
     Color throughput{1, 1, 1};
     bool direct = true;  // nothing met since the emitter
     for (int depth = 1; depth <= settings.max_depth; ++depth) {
-        const auto hit = world.intersect(ray, {0, kInfinity}, kVisibleToCameraRays);
+        const auto hit = world.nearest_hit(ray);
         stats.count(RayKind::particle);
         if (!hit) break;
         if (const auto fade = interior_fade(media, hit->shape_hit.t)) {
@@ -171,7 +171,7 @@ Color PhotonIntegrator::eye_ray(const Ray& ray, int depth, const MediumStack& me
                                 const RayDifferential* pencil, RayStats& stats) {
     const RenderSettings& settings = world_.settings();
     if constexpr (kRecord) recorder_->begin_ray(ray, depth, max_channel(throughput));
-    const auto hit = world_.intersect(ray, {0, kInfinity}, kVisibleToCameraRays);
+    const auto hit = world_.nearest_hit(ray);
     // Inside an object that fades, all the ray brings back fades on its way.
     const std::optional<FogEffect> fade = interior_fade(media, hit ? hit->shape_hit.t : kInfinity);
     if (!hit) {

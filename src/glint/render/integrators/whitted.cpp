@@ -15,6 +15,15 @@ Color WhittedIntegrator::trace_eye_ray(const Ray& ray, RayStats& stats,
     return trace(ray, 1, 1, stats, world_.eye_media(), pencil);
 }
 
+Color WhittedIntegrator::trace_eye_ray(const Ray& ray, const std::optional<Hit>& hit,
+                                       const RayDifferential* pencil, SampleStream&,
+                                       RayStats& stats) {
+    stats.count(RayKind::primary);
+    if (recorder_) [[unlikely]]
+        return trace_recorded(ray, 1, 1, stats, world_.eye_media(), pencil);
+    return shade<false>(ray, hit, 1, 1, stats, world_.eye_media(), pencil);
+}
+
 // shade() and what it calls are compiled twice: with kRecord, telling the recorder every event;
 // without, the renderer's own code, with no trace of the recorder in it.
 
@@ -22,7 +31,7 @@ Color WhittedIntegrator::trace(const Ray& ray, int depth, float weight, RayStats
                                const MediumStack& media, const RayDifferential* pencil) {
     if (recorder_) [[unlikely]]
         return trace_recorded(ray, depth, weight, stats, media, pencil);
-    return shade<false>(ray, depth, weight, stats, media, pencil);
+    return shade<false>(ray, world_.nearest_hit(ray), depth, weight, stats, media, pencil);
 }
 
 template <bool kRecord>
@@ -31,7 +40,7 @@ Color WhittedIntegrator::trace_ray(const Ray& ray, int depth, float weight, RayS
     if constexpr (kRecord)
         return trace_recorded(ray, depth, weight, stats, media, pencil);
     else
-        return shade<false>(ray, depth, weight, stats, media, pencil);
+        return shade<false>(ray, world_.nearest_hit(ray), depth, weight, stats, media, pencil);
 }
 
 // Out of line: the renderer's code stays as small as it was without a recorder.
@@ -39,16 +48,17 @@ Color WhittedIntegrator::trace_ray(const Ray& ray, int depth, float weight, RayS
                                                           RayStats& stats, const MediumStack& media,
                                                           const RayDifferential* pencil) {
     recorder_->begin_ray(ray, depth, weight);
-    const Color color = shade<true>(ray, depth, weight, stats, media, pencil);
+    const Color color =
+        shade<true>(ray, world_.nearest_hit(ray), depth, weight, stats, media, pencil);
     recorder_->end_ray(color);
     return color;
 }
 
 template <bool kRecord>
-Color WhittedIntegrator::shade(const Ray& ray, int depth, float weight, RayStats& stats,
-                               const MediumStack& media, const RayDifferential* pencil) {
+Color WhittedIntegrator::shade(const Ray& ray, const std::optional<Hit>& hit, int depth,
+                               float weight, RayStats& stats, const MediumStack& media,
+                               const RayDifferential* pencil) {
     const RenderSettings& settings = world_.settings();
-    const auto hit = world_.intersect(ray, {0, kInfinity}, kVisibleToCameraRays);
     const float length = hit ? hit->shape_hit.t : kInfinity;
     const std::optional<FogEffect> fog = with_media(world_, feelers_, media, ray, length, 0.5f,
                                                     stats, ray_fog(world_, ray, media, length));

@@ -5,6 +5,8 @@
 //       + kr I(reflected) + kt I(refracted)
 #pragma once
 
+#include <optional>
+
 #include "glint/math/color.h"
 #include "glint/math/ray.h"
 #include "glint/render/integrators/medium_stack.h"
@@ -36,6 +38,10 @@ public:
                         RayStats& stats) {
         return trace_eye_ray(ray, stats, pencil);
     }
+    // The same, given the eye ray's nearest hit, found with the rays of neighbouring pixels in
+    // one packet (World::nearest_hits).
+    Color trace_eye_ray(const Ray& ray, const std::optional<Hit>& hit,
+                        const RayDifferential* pencil, SampleStream& stream, RayStats& stats);
 
     // The colour seen along a ray at the given depth of the ray tree (eye rays are depth 1)
     // whose contribution to the pixel is scaled by weight (the product of kr and kt above it),
@@ -55,9 +61,10 @@ private:
     template <bool kRecord>
     Color trace_ray(const Ray& ray, int depth, float weight, RayStats& stats,
                     const MediumStack& media, const RayDifferential* pencil);
+    // The colour along a ray whose nearest hit is `hit`.
     template <bool kRecord>
-    Color shade(const Ray& ray, int depth, float weight, RayStats& stats, const MediumStack& media,
-                const RayDifferential* pencil);
+    Color shade(const Ray& ray, const std::optional<Hit>& hit, int depth, float weight,
+                RayStats& stats, const MediumStack& media, const RayDifferential* pencil);
 
     const World& world_;
     ShadowFeelers feelers_;
