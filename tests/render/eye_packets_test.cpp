@@ -1,5 +1,5 @@
 // Eye rays traced in packets of neighbouring pixels (render.cpp) give the image of eye rays traced
-// one by one, bit for bit, and the same ray counts: over the feature scenes of both integrators
+// one by one, bit for bit, and the same ray counts: over the feature scenes of the integrators
 // that take packets, with tiles and images whose sides are not multiples of the 4 x 2 blocks,
 // filters that reach across pixels, and lenses, shutters, pencils and dispersion.
 #include <gtest/gtest.h>
@@ -30,6 +30,8 @@ constexpr Case kCases[] = {
     {"dispersion.yaml", IntegratorKind::distributed},
     {"soft-shadows.yaml", IntegratorKind::distributed},
     {"media.yaml", IntegratorKind::distributed},
+    {"cornell-box.yaml", IntegratorKind::path},
+    {"sky.yaml", IntegratorKind::path},
 };
 
 TEST(EyePackets, TheImageIsTheSameBitForBitAsWithRaysOneByOne) {

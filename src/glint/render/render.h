@@ -45,9 +45,9 @@ struct RenderOptions {
     bool record_samples_taken = false;  // fill RenderResult::samples_taken
     AovSet aovs;                        // output variables to fill RenderResult::aovs with
     int pass_size = 0;                  // samples each pixel takes a pass; 0: samples_per_pass
-    // Eye rays traced in packets of neighbouring pixels where the integrator can (Whitted's and
-    // the distributed ray tracer, without adaptive sampling or output variables); false: one by
-    // one. The image is the same bit for bit either way.
+    // Eye rays traced in packets of neighbouring pixels where the integrator can (Whitted's, the
+    // distributed ray tracer and the path tracer, without adaptive sampling or output
+    // variables); false: one by one. The image is the same bit for bit either way.
     bool eye_packets = true;
     // Called on render()'s thread after each pass but the last, with the state so far (to save a
     // checkpoint, say); the render waits for it.

@@ -9,7 +9,10 @@
 //   Integrator(const World&, const Shared&);           // one per tile: per-thread caches
 //   Color trace_eye_ray(const Ray&, const RayDifferential* pencil, SampleStream&, RayStats&);
 //   void record_into(RayRecorder*);                    // explain, the output variables
-// and, when it needs them, the hooks the render loop then calls:
+// and, when it has or needs them, the hooks the render loop then calls:
+//   Color trace_eye_ray(const Ray&, const std::optional<Hit>&, const RayDifferential* pencil,
+//                       SampleStream&, RayStats&);
+//       the same, given the eye ray's nearest hit: eye rays are then traced in packets
 //   void draw_tile(const Tile&, FilmTile&, RayStats&);
 //       instead of tracing eye rays: draws the whole tile, once (beam tracing)
 //   static void begin_pass(Shared&, const World&, int sample, seed, RayStats&);

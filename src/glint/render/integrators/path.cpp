@@ -33,13 +33,19 @@ RayKind kind_of(BsdfLobe lobe) {
 
 Color PathIntegrator::trace_eye_ray(const Ray& ray, const RayDifferential* pencil,
                                     SampleStream& stream, RayStats& stats) {
+    return trace_eye_ray(ray, world_.nearest_hit(ray), pencil, stream, stats);
+}
+
+Color PathIntegrator::trace_eye_ray(const Ray& ray, const std::optional<Hit>& hit,
+                                    const RayDifferential* pencil, SampleStream& stream,
+                                    RayStats& stats) {
     stats.count(RayKind::primary);
     PathState path;
     path.media = world_.eye_media();
     if (pencil) path.pencil = *pencil;
     if (recorder_) [[unlikely]]
-        return radiance<true>(ray, path, stream, stats);
-    return radiance<false>(ray, path, stream, stats);
+        return radiance<true>(ray, hit, path, stream, stats);
+    return radiance<false>(ray, hit, path, stream, stats);
 }
 
 PathIntegrator::EmissionWeight PathIntegrator::emission_weight(const SurfaceContext& c,
@@ -58,11 +64,10 @@ PathIntegrator::EmissionWeight PathIntegrator::emission_weight(const SurfaceCont
 }
 
 template <bool kRecord>
-Color PathIntegrator::radiance(const Ray& ray, PathState path, SampleStream& stream,
-                               RayStats& stats) {
+Color PathIntegrator::radiance(const Ray& ray, const std::optional<Hit>& hit, PathState path,
+                               SampleStream& stream, RayStats& stats) {
     const RenderSettings& settings = world_.settings();
     if constexpr (kRecord) recorder_->begin_ray(ray, path.depth, 1);
-    const auto hit = world_.nearest_hit(ray);
     // Inside an object that fades, all the ray brings back fades on its way.
     const std::optional<FogEffect> fade =
         interior_fade(path.media, hit ? hit->shape_hit.t : kInfinity);
@@ -174,7 +179,9 @@ Color PathIntegrator::radiance(const Ray& ray, PathState path, SampleStream& str
         recorder_->path_vertex(c, record);
         recorder_->branch(kind, factor, s->delta ? std::nullopt : std::optional(u));
     }
-    color = through(fade, color + factor * radiance<kRecord>(scattered, next, stream, stats));
+    color =
+        through(fade, color + factor * radiance<kRecord>(scattered, world_.nearest_hit(scattered),
+                                                         next, stream, stats));
     if constexpr (kRecord) recorder_->end_ray(color);
     return color;
 }

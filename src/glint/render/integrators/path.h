@@ -39,6 +39,10 @@ public:
     // The radiance one sample's path brings back along the eye ray. Counts every ray it traces.
     Color trace_eye_ray(const Ray& ray, const RayDifferential* pencil, SampleStream& stream,
                         RayStats& stats);
+    // The same, given the eye ray's nearest hit, found with the rays of neighbouring pixels in
+    // one packet (World::nearest_hits).
+    Color trace_eye_ray(const Ray& ray, const std::optional<Hit>& hit,
+                        const RayDifferential* pencil, SampleStream& stream, RayStats& stats);
 
     void record_into(RayRecorder* recorder) { recorder_ = recorder; }
 
@@ -57,8 +61,10 @@ private:
         std::optional<RayDifferential> pencil;
     };
 
+    // Along a ray whose nearest hit is `hit`.
     template <bool kRecord>
-    Color radiance(const Ray& ray, PathState path, SampleStream& stream, RayStats& stats);
+    Color radiance(const Ray& ray, const std::optional<Hit>& hit, PathState path,
+                   SampleStream& stream, RayStats& stats);
     // The weight an emitting surface the path hit counts its emission with, weighed against
     // the shadow rays that could have found it, and the densities weighed.
     struct EmissionWeight {
