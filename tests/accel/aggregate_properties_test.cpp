@@ -66,15 +66,24 @@ public:
     }
 
     // Every structure's hits for `rays` asked as one packet, lane by lane against the same
-    // structure's hit for the ray alone: the same t, u, v, part and primitive.
+    // structure's hit for the ray alone: the same t, u, v, part and primitive; and whether each
+    // is blocked, every third lane's range cut short.
     void check_packet(std::span<const Ray> rays, Interval range, const std::string& what) {
+        Interval ranges[kRayPacketSize];
+        for (std::size_t i = 0; i < rays.size(); ++i)
+            ranges[i] = i % 3 == 2 ? Interval{range.min, std::min(range.max, 10.0f)} : range;
         for (const std::uint32_t mask : kMasks)
             for (const auto& [name, aggregate] : structures_) {
                 std::optional<Hit> got[kRayPacketSize];
                 aggregate->intersect_packet(rays, range, mask, got);
+                const unsigned blocked = aggregate->occluded_packet(rays, ranges, mask);
+                ASSERT_EQ(blocked >> rays.size(), 0u) << name << ", " << what;
                 for (std::size_t i = 0; i < rays.size(); ++i) {
                     const std::optional<Hit> alone = aggregate->intersect(rays[i], range, mask);
                     const std::string where = name + ", " + what + ", lane " + std::to_string(i);
+                    ASSERT_EQ(bool(blocked >> i & 1), aggregate->occluded(rays[i], ranges[i], mask))
+                        << where;
+                    packet_blocked_ += blocked >> i & 1;
                     ASSERT_EQ(got[i].has_value(), alone.has_value()) << where;
                     if (!alone) continue;
                     ++packet_hits_;
@@ -92,6 +101,7 @@ public:
 
     int hits() const { return hits_; }
     int packet_hits() const { return packet_hits_; }
+    int packet_blocked() const { return packet_blocked_; }
     std::size_t structure_count() const { return structures_.size(); }
     const PrimitiveList& list() const { return list_; }
 
@@ -108,6 +118,7 @@ private:
     std::vector<Named> structures_;
     int hits_ = 0;
     int packet_hits_ = 0;
+    int packet_blocked_ = 0;
     // Rays checked alone, waiting to be checked as a packet with others over the same range.
     struct Packet {
         Interval range;
@@ -448,6 +459,7 @@ TEST(AggregateProperties, PacketsOfEyeRaysHitWhatEachRayHitsAlone) {
                 if (HasFatalFailure()) break;
             }
             EXPECT_GT(agree.packet_hits(), packets * 4) << simd_path_name(path);
+            EXPECT_GT(agree.packet_blocked(), packets * 4) << simd_path_name(path);
         }
     }
     set_simd_path(saved);

@@ -62,6 +62,10 @@ public:
     bool occluded(const Ray& ray, Interval t_range, std::uint32_t ray_mask) const {
         return is_traceable(ray) && any_hit(ray, t_range, ray_mask);
     }
+    // occluded() for up to kRayPacketSize rays asked together (feelers from neighbouring points
+    // towards one light), each over its own t_ranges[i]: bit i of the result for rays[i].
+    unsigned occluded_packet(std::span<const Ray> rays, const Interval* t_ranges,
+                             std::uint32_t ray_mask) const;
     // Memory the structure takes beyond the primitives themselves, in bytes.
     virtual std::size_t memory_bytes() const = 0;
     // Its nodes, leaves, depth, SAH cost and memory (accel_stats.h), walked from the structure
@@ -73,6 +77,14 @@ protected:
     virtual std::optional<Hit> closest_hit(const Ray& ray, Interval t_range,
                                            std::uint32_t ray_mask) const = 0;
     virtual bool any_hit(const Ray& ray, Interval t_range, std::uint32_t ray_mask) const = 0;
+    // occluded_packet() for traceable rays; by default one after another.
+    virtual unsigned any_hits(std::span<const Ray> rays, const Interval* t_ranges,
+                              std::uint32_t ray_mask) const {
+        unsigned blocked = 0;
+        for (std::size_t i = 0; i < rays.size(); ++i)
+            if (any_hit(rays[i], t_ranges[i], ray_mask)) blocked |= 1u << i;
+        return blocked;
+    }
     // intersect_packet() for traceable rays; by default one after another.
     virtual void closest_hits(std::span<const Ray> rays, Interval t_range, std::uint32_t ray_mask,
                               std::optional<Hit>* hits) const {
@@ -100,6 +112,28 @@ inline void Aggregate::intersect_packet(std::span<const Ray> rays, Interval t_ra
     std::array<std::optional<Hit>, kRayPacketSize> found;
     closest_hits({traced.data(), n}, t_range, ray_mask, found.data());
     for (std::size_t k = 0; k < n; ++k) hits[slot[k]] = found[k];
+}
+
+inline unsigned Aggregate::occluded_packet(std::span<const Ray> rays, const Interval* t_ranges,
+                                           std::uint32_t ray_mask) const {
+    assert(rays.size() <= std::size_t(kRayPacketSize));
+    std::array<Ray, kRayPacketSize> traced;
+    std::array<Interval, kRayPacketSize> ranges;
+    std::array<std::size_t, kRayPacketSize> slot;
+    std::size_t n = 0;
+    for (std::size_t i = 0; i < rays.size(); ++i)
+        if (is_traceable(rays[i])) {
+            traced[n] = rays[i];
+            ranges[n] = t_ranges[i];
+            slot[n++] = i;
+        }
+    if (n == rays.size()) return any_hits(rays, t_ranges, ray_mask);
+    if (n == 0) return 0;
+    const unsigned found = any_hits({traced.data(), n}, ranges.data(), ray_mask);
+    unsigned blocked = 0;
+    for (std::size_t k = 0; k < n; ++k)
+        if (found >> k & 1) blocked |= 1u << slot[k];
+    return blocked;
 }
 
 }  // namespace glint

@@ -249,43 +249,90 @@ void BvhAggregate::closest_hits(std::span<const Ray> rays, Interval t_range, std
     for (std::size_t i = 0; i < n; ++i) hits[i] = nearest[i].result();
 }
 
+bool BvhAggregate::any_in_unbounded(const Ray& ray, Interval range, std::uint32_t ray_mask) const {
+    for (const std::uint32_t i : unbounded_)
+        if (visible(i, ray_mask) && glint::intersect(primitives_[i].shape, ray, range)) return true;
+    return false;
+}
+
+template <bool kSimd, class Triangles, class Spheres>
+inline GLINT_INLINE_LEAF bool BvhAggregate::any_in_leaf(const Ray& ray, std::uint32_t leaf,
+                                                        std::uint32_t count, std::uint32_t ray_mask,
+                                                        Triangles&& triangles, Spheres&& spheres,
+                                                        Interval range) const {
+    switch (leaf_kind(leaf)) {
+        case kWideTriangleLeaf:
+            for (const TriangleBlock& block : leaf_blocks(bvh_, leaf, count))
+                if (triangles().template any<kSimd>(block, range,
+                                                    triangle_lane_visible(block, ray_mask)))
+                    return true;
+            return false;
+        case kWideSphereLeaf:
+            for (const SphereBlock& block : leaf_sphere_blocks(bvh_, leaf, count))
+                if (spheres().template any<kSimd>(block, range,
+                                                  sphere_lane_visible(block, ray_mask)))
+                    return true;
+            return false;
+        default:
+            for (const std::uint32_t i : leaf_primitives(bvh_, leaf, count))
+                if (visible(i, ray_mask) && glint::intersect(primitives_[i].shape, ray, range))
+                    return true;
+            return false;
+    }
+}
+
 bool BvhAggregate::any_hit(const Ray& ray, Interval t_range, std::uint32_t ray_mask) const {
     if (common_visibility_ && (*common_visibility_ & ray_mask) == 0) return false;
-    for (const std::uint32_t i : unbounded_) {
-        if (visible(i, ray_mask) && glint::intersect(primitives_[i].shape, ray, t_range))
-            return true;
-    }
+    if (any_in_unbounded(ray, t_range, ray_mask)) return true;
     MadeOnFirstUse<BlockTester, Ray> triangles(ray);
     MadeOnFirstUse<SphereTester, Ray> spheres(ray);
-    return bvh_any_leaf(
-        bvh_, ray, t_range,
-        [&](auto kernel, std::uint32_t leaf, std::uint32_t count, Interval range)
+    return bvh_any_leaf(bvh_, ray, t_range,
+                        [&](auto kernel, std::uint32_t leaf, std::uint32_t count, Interval range)
+                            GLINT_INLINE_LEAF {
+                                return any_in_leaf<decltype(kernel)::kSimd>(
+                                    ray, leaf, count, ray_mask,
+                                    [&]() -> const BlockTester& { return triangles.get(); },
+                                    [&]() -> const SphereTester& { return spheres.get(); }, range);
+                            });
+}
+
+unsigned BvhAggregate::any_hits(std::span<const Ray> rays, const Interval* t_ranges,
+                                std::uint32_t ray_mask) const {
+    const std::size_t n = rays.size();
+    assert(n <= std::size_t(kRayPacketSize));
+    if (common_visibility_ && (*common_visibility_ & ray_mask) == 0) return 0;
+    // Rays a plane blocks are done; the others go through the tree together.
+    std::array<Ray, kRayPacketSize> left;
+    std::array<Interval, kRayPacketSize> ranges;
+    std::array<std::size_t, kRayPacketSize> slot;
+    unsigned blocked = 0;
+    std::size_t m = 0;
+    for (std::size_t i = 0; i < n; ++i) {
+        if (any_in_unbounded(rays[i], t_ranges[i], ray_mask)) {
+            blocked |= 1u << i;
+            continue;
+        }
+        left[m] = rays[i];
+        ranges[m] = t_ranges[i];
+        slot[m++] = i;
+    }
+    if (m == 0) return blocked;
+    const std::span<const Ray> traced(left.data(), m);
+    EachMadeOnFirstUse<BlockTester, Ray, kRayPacketSize> triangles(traced);
+    EachMadeOnFirstUse<SphereTester, Ray, kRayPacketSize> spheres(traced);
+    const unsigned found = bvh_any_leaf_packet(
+        bvh_, traced, ranges.data(),
+        [&](auto kernel, std::uint32_t leaf, std::uint32_t count, int lane, Interval range)
             GLINT_INLINE_LEAF {
-                constexpr bool kSimd = decltype(kernel)::kSimd;
-                switch (leaf_kind(leaf)) {
-                    case kWideTriangleLeaf:
-                        for (const TriangleBlock& block : leaf_blocks(bvh_, leaf, count)) {
-                            if (triangles.get().any<kSimd>(block, range,
-                                                           triangle_lane_visible(block, ray_mask)))
-                                return true;
-                        }
-                        return false;
-                    case kWideSphereLeaf:
-                        for (const SphereBlock& block : leaf_sphere_blocks(bvh_, leaf, count)) {
-                            if (spheres.get().any<kSimd>(block, range,
-                                                         sphere_lane_visible(block, ray_mask)))
-                                return true;
-                        }
-                        return false;
-                    default:
-                        for (const std::uint32_t i : leaf_primitives(bvh_, leaf, count)) {
-                            if (visible(i, ray_mask) &&
-                                glint::intersect(primitives_[i].shape, ray, range))
-                                return true;
-                        }
-                        return false;
-                }
+                const auto i = std::size_t(lane);
+                return any_in_leaf<decltype(kernel)::kSimd>(
+                    left[i], leaf, count, ray_mask,
+                    [&]() -> const BlockTester& { return triangles.get(i); },
+                    [&]() -> const SphereTester& { return spheres.get(i); }, range);
             });
+    for (std::size_t k = 0; k < m; ++k)
+        if (found >> k & 1) blocked |= 1u << slot[k];
+    return blocked;
 }
 
 std::size_t BvhAggregate::memory_bytes() const {

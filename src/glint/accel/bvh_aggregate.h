@@ -30,6 +30,8 @@ private:
     // A packet through the wide BVH (wide_bvh_packet.h), each ray's leaves tested as alone.
     void closest_hits(std::span<const Ray> rays, Interval t_range, std::uint32_t ray_mask,
                       std::optional<Hit>* hits) const override;
+    unsigned any_hits(std::span<const Ray> rays, const Interval* t_ranges,
+                      std::uint32_t ray_mask) const override;
 
     struct NearestHit;  // the closest hit so far of one ray
     // One ray against the unbounded primitives, or a leaf's, that ray_mask sees: keeps the
@@ -37,6 +39,12 @@ private:
     // block testers.
     void closest_in_unbounded(const Ray& ray, std::uint32_t ray_mask, NearestHit& nearest,
                               Interval& range) const;
+    // Whether the unbounded primitives, or a leaf's, block the ray within range.
+    bool any_in_unbounded(const Ray& ray, Interval range, std::uint32_t ray_mask) const;
+    template <bool kSimd, class Triangles, class Spheres>
+    bool any_in_leaf(const Ray& ray, std::uint32_t leaf, std::uint32_t count,
+                     std::uint32_t ray_mask, Triangles&& triangles, Spheres&& spheres,
+                     Interval range) const;
     template <bool kSimd, class Triangles, class Spheres>
     void closest_in_leaf(const Ray& ray, std::uint32_t leaf, std::uint32_t count,
                          std::uint32_t ray_mask, Triangles&& triangles, Spheres&& spheres,

@@ -5,6 +5,7 @@
 #include <embree3/rtcore.h>
 
 #include <algorithm>
+#include <array>
 #include <atomic>
 #include <map>
 #include <mutex>
@@ -137,20 +138,25 @@ namespace {
 
 using Scene = EmbreeAggregate::Scene;
 
-// Embree hands the context of rtcIntersect1 back to the callbacks; it comes first, so a pointer
-// to it is a pointer to the whole (the usual Embree idiom for per-query data).
+// Embree hands the context of a query back to the callbacks; it comes first, so a pointer to it
+// is a pointer to the whole (the usual Embree idiom for per-query data).
 struct QueryContext {
     RTCIntersectContext embree;
     const Scene* scene;
-    ShapeHit user_hit;  // the glint hit of the last user primitive accepted
-    // The glint ray's time and wavelength for user geometry (moving shapes): Embree's own time
-    // field stays 0, as its static scene has no motion of its own.
-    float time = 0, wavelength = 0;
+    // Per ray of the query (one, or a packet's, in the packet's order, which Embree keeps for
+    // the callbacks): the glint hit of the last user primitive accepted, and the glint ray's time
+    // and wavelength for user geometry (moving shapes): Embree's own time field stays 0, as its
+    // static scene has no motion of its own.
+    std::array<ShapeHit, kRayPacketSize> user_hit;
+    std::array<float, kRayPacketSize> time{}, wavelength{};
 };
 
-Ray to_ray(const RTCRay& r, const QueryContext& context) {
-    return {
-        {r.org_x, r.org_y, r.org_z}, {r.dir_x, r.dir_y, r.dir_z}, context.time, context.wavelength};
+// Ray i of a callback's packet of N (one for rtcIntersect1), through Embree's SOA accessors.
+Ray to_ray(RTCRayN* r, unsigned n, unsigned i, const QueryContext& context) {
+    return {{RTCRayN_org_x(r, n, i), RTCRayN_org_y(r, n, i), RTCRayN_org_z(r, n, i)},
+            {RTCRayN_dir_x(r, n, i), RTCRayN_dir_y(r, n, i), RTCRayN_dir_z(r, n, i)},
+            context.time[i],
+            context.wavelength[i]};
 }
 
 void user_bounds(const RTCBoundsFunctionArguments* args) {
@@ -165,48 +171,57 @@ void user_bounds(const RTCBoundsFunctionArguments* args) {
     out.upper_z = b.max.z;
 }
 
-// Only rtcIntersect1 and rtcOccluded1 are used, so callbacks see one ray at a time (N = 1).
 void user_intersect(const RTCIntersectFunctionNArguments* args) {
-    if (args->N != 1 || args->valid[0] == 0) return;
     auto& context = *reinterpret_cast<QueryContext*>(args->context);
-    auto& rayhit = *reinterpret_cast<RTCRayHit*>(args->rayhit);
     const Scene& scene = *context.scene;
     const std::uint32_t index = scene.geometries[args->geomID].primitives[args->primID];
     const Primitive& primitive = scene.primitives[index];
-    if ((primitive.visibility & rayhit.ray.mask) == 0) return;
-    const auto hit = glint::intersect(primitive.shape, to_ray(rayhit.ray, context),
-                                      {rayhit.ray.tnear, rayhit.ray.tfar});
-    if (!hit) return;
-    // nearer()'s rule at equal t: the lower primitive index wins.
-    if (hit->t == rayhit.ray.tfar && rayhit.hit.geomID != RTC_INVALID_GEOMETRY_ID &&
-        scene.primitive_of(rayhit.hit.geomID, rayhit.hit.primID) < index)
-        return;
-    rayhit.ray.tfar = hit->t;
-    rayhit.hit.Ng_x = rayhit.hit.Ng_y = rayhit.hit.Ng_z = 0;  // glint computes its own normal
-    rayhit.hit.u = hit->u;
-    rayhit.hit.v = hit->v;
-    rayhit.hit.primID = args->primID;
-    rayhit.hit.geomID = args->geomID;
-    rayhit.hit.instID[0] = context.embree.instID[0];
-    context.user_hit = *hit;
+    const unsigned n = args->N;
+    RTCRayN* ray = RTCRayHitN_RayN(args->rayhit, n);
+    RTCHitN* hit = RTCRayHitN_HitN(args->rayhit, n);
+    for (unsigned i = 0; i < n; ++i) {
+        if (args->valid[i] == 0 || (primitive.visibility & RTCRayN_mask(ray, n, i)) == 0) continue;
+        float& t_far = RTCRayN_tfar(ray, n, i);
+        const auto found = glint::intersect(primitive.shape, to_ray(ray, n, i, context),
+                                            {RTCRayN_tnear(ray, n, i), t_far});
+        if (!found) continue;
+        // nearer()'s rule at equal t: the lower primitive index wins.
+        const unsigned geom_id = RTCHitN_geomID(hit, n, i);
+        if (found->t == t_far && geom_id != RTC_INVALID_GEOMETRY_ID &&
+            scene.primitive_of(geom_id, RTCHitN_primID(hit, n, i)) < index)
+            continue;
+        t_far = found->t;
+        // glint computes its own normal.
+        RTCHitN_Ng_x(hit, n, i) = RTCHitN_Ng_y(hit, n, i) = RTCHitN_Ng_z(hit, n, i) = 0;
+        RTCHitN_u(hit, n, i) = found->u;
+        RTCHitN_v(hit, n, i) = found->v;
+        RTCHitN_primID(hit, n, i) = args->primID;
+        RTCHitN_geomID(hit, n, i) = args->geomID;
+        RTCHitN_instID(hit, n, i, 0) = context.embree.instID[0];
+        context.user_hit[i] = *found;
+    }
 }
 
 void user_occluded(const RTCOccludedFunctionNArguments* args) {
-    if (args->N != 1 || args->valid[0] == 0) return;
     const auto& context = *reinterpret_cast<const QueryContext*>(args->context);
-    auto& ray = *reinterpret_cast<RTCRay*>(args->ray);
     const Primitive& primitive =
         context.scene->primitives[context.scene->geometries[args->geomID].primitives[args->primID]];
-    if ((primitive.visibility & ray.mask) == 0) return;
-    if (glint::intersect(primitive.shape, to_ray(ray, context), {ray.tnear, ray.tfar}))
-        ray.tfar = -kInfinity;  // Embree's mark of an occluded ray
+    const unsigned n = args->N;
+    for (unsigned i = 0; i < n; ++i) {
+        if (args->valid[i] == 0 || (primitive.visibility & RTCRayN_mask(args->ray, n, i)) == 0)
+            continue;
+        float& t_far = RTCRayN_tfar(args->ray, n, i);
+        if (glint::intersect(primitive.shape, to_ray(args->ray, n, i, context),
+                             {RTCRayN_tnear(args->ray, n, i), t_far}))
+            t_far = -kInfinity;  // Embree's mark of an occluded ray
+    }
 }
 
 // For Embree builds without ray masks: reject triangle hits that the ray's mask does not see.
 void mask_filter(const RTCFilterFunctionNArguments* args) {
-    if (args->N != 1) return;
     const auto visibility = *static_cast<const std::uint32_t*>(args->geometryUserPtr);
-    if ((visibility & reinterpret_cast<const RTCRay*>(args->ray)->mask) == 0) args->valid[0] = 0;
+    for (unsigned i = 0; i < args->N; ++i)
+        if ((visibility & RTCRayN_mask(args->ray, args->N, i)) == 0) args->valid[i] = 0;
 }
 
 // Attaches an Embree triangle geometry over shared arrays (vertices padded, see Scene).
@@ -334,8 +349,37 @@ EmbreeAggregate::EmbreeAggregate(std::span<const Primitive> primitives, EmbreeBu
 
 EmbreeAggregate::~EmbreeAggregate() = default;
 
-std::optional<Hit> EmbreeAggregate::closest_hit(const Ray& ray, Interval t_range,
-                                                std::uint32_t ray_mask) const {
+namespace {
+
+// The glint hit of Embree's hit on geometry geom_id: a mesh's part is its triangle, as
+// TriangleMesh::intersect says; a user primitive's hit is glint's own.
+Hit hit_of(const Scene& scene, unsigned geom_id, unsigned prim_id, float t, float u, float v,
+           const ShapeHit& user_hit) {
+    Hit hit{{}, scene.primitive_of(geom_id, prim_id)};
+    switch (scene.geometries[geom_id].kind) {
+        case Scene::Kind::mesh:
+            hit.shape_hit = {t, u, v, prim_id};
+            break;
+        case Scene::Kind::triangles:
+            hit.shape_hit = {t, u, v};
+            break;
+        case Scene::Kind::user:
+            hit.shape_hit = user_hit;
+            break;
+    }
+    return hit;
+}
+
+// Embree traces only in front of the origin, and asserts on an empty range.
+bool embree_range(Interval& range) {
+    range.min = std::max(range.min, 0.0f);
+    return range.min <= range.max;
+}
+
+}  // namespace
+
+std::optional<Hit> EmbreeAggregate::closest_unbounded(const Ray& ray, std::uint32_t ray_mask,
+                                                      Interval& t_range) const {
     std::optional<Hit> closest;
     for (const std::uint32_t index : unbounded_) {
         const Primitive& p = primitives_[index];
@@ -346,14 +390,27 @@ std::optional<Hit> EmbreeAggregate::closest_hit(const Ray& ray, Interval t_range
             t_range.max = closest->shape_hit.t;
         }
     }
-    t_range.min = std::max(t_range.min, 0.0f);
-    if (!(t_range.min <= t_range.max)) return closest;  // Embree asserts on invalid rays
+    return closest;
+}
 
+bool EmbreeAggregate::any_unbounded(const Ray& ray, std::uint32_t ray_mask,
+                                    Interval t_range) const {
+    for (const std::uint32_t index : unbounded_) {
+        const Primitive& p = primitives_[index];
+        if ((p.visibility & ray_mask) != 0 && glint::intersect(p.shape, ray, t_range)) return true;
+    }
+    return false;
+}
+
+std::optional<Hit> EmbreeAggregate::closest_hit(const Ray& ray, Interval t_range,
+                                                std::uint32_t ray_mask) const {
+    std::optional<Hit> closest = closest_unbounded(ray, ray_mask, t_range);
+    if (!embree_range(t_range)) return closest;
     QueryContext context;
     rtcInitIntersectContext(&context.embree);
     context.scene = scene_.get();
-    context.time = ray.time;
-    context.wavelength = ray.wavelength;
+    context.time[0] = ray.time;
+    context.wavelength[0] = ray.wavelength;
     RTCRayHit rayhit;
     rayhit.ray = {ray.origin.x,
                   ray.origin.y,
@@ -372,35 +429,20 @@ std::optional<Hit> EmbreeAggregate::closest_hit(const Ray& ray, Interval t_range
     rtcIntersect1(scene_->handle, &context.embree, &rayhit);
     const unsigned geom_id = rayhit.hit.geomID;
     if (geom_id == RTC_INVALID_GEOMETRY_ID) return closest;
-
-    Hit hit{{}, scene_->primitive_of(geom_id, rayhit.hit.primID)};
-    switch (scene_->geometries[geom_id].kind) {
-        case Scene::Kind::mesh:  // part is the mesh's triangle, as TriangleMesh::intersect says
-            hit.shape_hit = {rayhit.ray.tfar, rayhit.hit.u, rayhit.hit.v, rayhit.hit.primID};
-            break;
-        case Scene::Kind::triangles:
-            hit.shape_hit = {rayhit.ray.tfar, rayhit.hit.u, rayhit.hit.v};
-            break;
-        case Scene::Kind::user:
-            hit.shape_hit = context.user_hit;
-            break;
-    }
+    const Hit hit = hit_of(*scene_, geom_id, rayhit.hit.primID, rayhit.ray.tfar, rayhit.hit.u,
+                           rayhit.hit.v, context.user_hit[0]);
     if (!closest || nearer(hit, *closest)) closest = hit;
     return closest;
 }
 
 bool EmbreeAggregate::any_hit(const Ray& ray, Interval t_range, std::uint32_t ray_mask) const {
-    for (const std::uint32_t index : unbounded_) {
-        const Primitive& p = primitives_[index];
-        if ((p.visibility & ray_mask) != 0 && glint::intersect(p.shape, ray, t_range)) return true;
-    }
-    t_range.min = std::max(t_range.min, 0.0f);
-    if (!(t_range.min <= t_range.max)) return false;
+    if (any_unbounded(ray, ray_mask, t_range)) return true;
+    if (!embree_range(t_range)) return false;
     QueryContext context;
     rtcInitIntersectContext(&context.embree);
     context.scene = scene_.get();
-    context.time = ray.time;
-    context.wavelength = ray.wavelength;
+    context.time[0] = ray.time;
+    context.wavelength[0] = ray.wavelength;
     RTCRay r{ray.origin.x,
              ray.origin.y,
              ray.origin.z,
@@ -415,6 +457,83 @@ bool EmbreeAggregate::any_hit(const Ray& ray, Interval t_range, std::uint32_t ra
              0};
     rtcOccluded1(scene_->handle, &context.embree, &r);
     return r.tfar < 0;  // Embree sets tfar to -inf when the ray is blocked
+}
+
+namespace {
+
+// Lane i of an Embree packet of eight set to the ray over range.
+void set_lane(RTCRay8& r, std::size_t i, const Ray& ray, Interval range, std::uint32_t ray_mask) {
+    r.org_x[i] = ray.origin.x;
+    r.org_y[i] = ray.origin.y;
+    r.org_z[i] = ray.origin.z;
+    r.tnear[i] = range.min;
+    r.dir_x[i] = ray.direction.x;
+    r.dir_y[i] = ray.direction.y;
+    r.dir_z[i] = ray.direction.z;
+    r.time[i] = 0;
+    r.tfar[i] = range.max;
+    r.mask[i] = ray_mask;
+    r.id[i] = 0;
+    r.flags[i] = 0;
+}
+
+}  // namespace
+
+void EmbreeAggregate::closest_hits(std::span<const Ray> rays, Interval t_range,
+                                   std::uint32_t ray_mask, std::optional<Hit>* hits) const {
+    static_assert(kRayPacketSize == 8, "rtcIntersect8");
+    QueryContext context;
+    rtcInitIntersectContext(&context.embree);
+    context.embree.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT;
+    context.scene = scene_.get();
+    alignas(32) RTCRayHit8 rayhit{};
+    alignas(32) int valid[8] = {};
+    for (std::size_t i = 0; i < rays.size(); ++i) {
+        Interval range = t_range;
+        hits[i] = closest_unbounded(rays[i], ray_mask, range);
+        if (!embree_range(range)) continue;
+        valid[i] = -1;
+        set_lane(rayhit.ray, i, rays[i], range, ray_mask);
+        rayhit.hit.geomID[i] = RTC_INVALID_GEOMETRY_ID;
+        rayhit.hit.instID[0][i] = RTC_INVALID_GEOMETRY_ID;
+        context.time[i] = rays[i].time;
+        context.wavelength[i] = rays[i].wavelength;
+    }
+    rtcIntersect8(valid, scene_->handle, &context.embree, &rayhit);
+    for (std::size_t i = 0; i < rays.size(); ++i) {
+        const unsigned geom_id = rayhit.hit.geomID[i];
+        if (valid[i] == 0 || geom_id == RTC_INVALID_GEOMETRY_ID) continue;
+        const Hit hit = hit_of(*scene_, geom_id, rayhit.hit.primID[i], rayhit.ray.tfar[i],
+                               rayhit.hit.u[i], rayhit.hit.v[i], context.user_hit[i]);
+        if (!hits[i] || nearer(hit, *hits[i])) hits[i] = hit;
+    }
+}
+
+unsigned EmbreeAggregate::any_hits(std::span<const Ray> rays, const Interval* t_ranges,
+                                   std::uint32_t ray_mask) const {
+    QueryContext context;
+    rtcInitIntersectContext(&context.embree);
+    context.embree.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT;
+    context.scene = scene_.get();
+    alignas(32) RTCRay8 ray{};
+    alignas(32) int valid[8] = {};
+    unsigned blocked = 0;
+    for (std::size_t i = 0; i < rays.size(); ++i) {
+        Interval range = t_ranges[i];
+        if (any_unbounded(rays[i], ray_mask, range)) {
+            blocked |= 1u << i;
+            continue;
+        }
+        if (!embree_range(range)) continue;
+        valid[i] = -1;
+        set_lane(ray, i, rays[i], range, ray_mask);
+        context.time[i] = rays[i].time;
+        context.wavelength[i] = rays[i].wavelength;
+    }
+    rtcOccluded8(valid, scene_->handle, &context.embree, &ray);
+    for (std::size_t i = 0; i < rays.size(); ++i)
+        if (valid[i] != 0 && ray.tfar[i] < 0) blocked |= 1u << i;
+    return blocked;
 }
 
 std::size_t EmbreeAggregate::memory_bytes() const {

@@ -54,6 +54,16 @@ private:
     std::optional<Hit> closest_hit(const Ray& ray, Interval t_range,
                                    std::uint32_t ray_mask) const override;
     bool any_hit(const Ray& ray, Interval t_range, std::uint32_t ray_mask) const override;
+    // Packets through Embree's rtcIntersect8 and rtcOccluded8 (coherent rays).
+    void closest_hits(std::span<const Ray> rays, Interval t_range, std::uint32_t ray_mask,
+                      std::optional<Hit>* hits) const override;
+    unsigned any_hits(std::span<const Ray> rays, const Interval* t_ranges,
+                      std::uint32_t ray_mask) const override;
+    // The unbounded primitives (planes), tested beside Embree's scene: the nearest hit within
+    // t_range, whose far end comes to it; whether any blocks the ray.
+    std::optional<Hit> closest_unbounded(const Ray& ray, std::uint32_t ray_mask,
+                                         Interval& t_range) const;
+    bool any_unbounded(const Ray& ray, std::uint32_t ray_mask, Interval t_range) const;
 
     std::span<const Primitive> primitives_;
     std::unique_ptr<Scene> scene_;
