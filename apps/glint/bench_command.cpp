@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cstdio>
 #include <map>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <utility>
@@ -38,21 +39,24 @@ struct Row {
     double mrays_per_s = 0;
     double bytes_per_prim = 0;
     std::uint64_t hits = 0;
+    int packet = 1;  // rays traced together
 };
 
 void print_json(const Row& r, const std::string& scene, std::size_t primitives) {
     std::printf(
         "{\"accel\": %s, \"scene\": %s, \"rays\": %s, \"ray_count\": %zu, \"threads\": %d, "
         "\"build_s\": %.6g, \"mrays_per_s\": %.6g, \"bytes_per_prim\": %.6g, \"primitives\": %zu, "
-        "\"hits\": %llu, \"repetitions\": %d}\n",
+        "\"hits\": %llu, \"repetitions\": %d, \"packet\": %d}\n",
         json_string(r.accel).c_str(), json_string(scene).c_str(), json_string(r.rays).c_str(),
         r.ray_count, r.threads, r.build_s, r.mrays_per_s, r.bytes_per_prim, primitives,
-        static_cast<unsigned long long>(r.hits), kRepetitions);
+        static_cast<unsigned long long>(r.hits), kRepetitions, r.packet);
 }
 
 void print_row(const Row& r) {
-    std::printf("%-8s %-11s %7d %9.4f %9.2f %11.1f %13s\n", std::string(r.accel).c_str(),
-                std::string(r.rays).c_str(), r.threads, r.build_s, r.mrays_per_s, r.bytes_per_prim,
+    const std::string rays =
+        std::string(r.rays) + (r.packet > 1 ? " x" + std::to_string(r.packet) : "");
+    std::printf("%-8s %-13s %7d %9.4f %9.2f %11.1f %13s\n", std::string(r.accel).c_str(),
+                rays.c_str(), r.threads, r.build_s, r.mrays_per_s, r.bytes_per_prim,
                 with_thousands(r.hits).c_str());
 }
 
@@ -99,6 +103,9 @@ CLI::App* add_bench_command(CLI::App& app, BenchCommand& c) {
         ->delimiter(',')
         ->allow_extra_args(false)
         ->check(CLI::IsMember({"primary", "incoherent", "shadow"}));
+    bench->add_flag("--packets", c.packets,
+                    "Also trace each set in packets of eight rays (primary rays in tiles of 4x2 "
+                    "pixels), as rows of their own");
     bench->add_option("--threads", c.threads, "The 'all threads' count; 0 uses every core")
         ->check(CLI::Range(0, 4096));
     bench->add_option("--rays", c.rays, "Rays in each set (primary, incoherent, shadow)")
@@ -137,7 +144,7 @@ int run_bench(const BenchCommand& command) {
                 with_thousands(sets.sets[0].rays.size()).c_str(), sets.width, sets.height,
                 with_thousands(sets.surface_points).c_str());
             std::printf("  throughput: best of %d runs; build: one run\n\n", kRepetitions);
-            std::printf("%-8s %-11s %7s %9s %9s %11s %13s\n", "accel", "rays", "threads", "build s",
+            std::printf("%-8s %-13s %7s %9s %9s %11s %13s\n", "accel", "rays", "threads", "build s",
                         "Mrays/s", "bytes/prim", "hits");
         }
         std::fflush(stdout);
@@ -155,27 +162,35 @@ int run_bench(const BenchCommand& command) {
                     build.aggregate->memory_bytes() + (name == "embree" ? 0 : mesh_bytes);
                 for (const RaySet& set : sets.sets) {
                     if (!chosen(command.ray_sets, set.name)) continue;
-                    const TraceMeasure trace =
-                        measure_trace(*build.aggregate, set, threads, kRepetitions);
-                    const Row row{name,
-                                  set.name,
-                                  set.rays.size(),
-                                  threads,
-                                  build.seconds,
-                                  trace.mrays_per_second(set.rays.size()),
-                                  counted > 0 ? double(bytes) / double(counted) : 0,
-                                  trace.hits};
-                    // Against every structure so far, this one at the other thread count too.
-                    auto& by_structure = hits[set.name];
-                    by_structure.try_emplace(name, trace.hits);
-                    for (const auto& [other, count] : by_structure)
-                        if (count != trace.hits) disagree = true;
-                    if (command.json) {
-                        print_json(row, command.scene, counted);
-                    } else {
-                        print_row(row);
+                    for (const bool packets : {false, true}) {
+                        if (packets && !command.packets) continue;
+                        std::optional<RaySet> tiled;
+                        if (packets) tiled = in_packet_order(set, sets.width, sets.height);
+                        const RaySet& traced = tiled ? *tiled : set;
+                        const TraceMeasure trace =
+                            measure_trace(*build.aggregate, traced, threads, kRepetitions, packets);
+                        const Row row{name,
+                                      set.name,
+                                      set.rays.size(),
+                                      threads,
+                                      build.seconds,
+                                      trace.mrays_per_second(set.rays.size()),
+                                      counted > 0 ? double(bytes) / double(counted) : 0,
+                                      trace.hits,
+                                      packets ? kRayPacketSize : 1};
+                        // Against every structure so far, this one at the other thread count
+                        // and in packets too.
+                        auto& by_structure = hits[set.name];
+                        by_structure.try_emplace(name, trace.hits);
+                        for (const auto& [other, count] : by_structure)
+                            if (count != trace.hits) disagree = true;
+                        if (command.json) {
+                            print_json(row, command.scene, counted);
+                        } else {
+                            print_row(row);
+                        }
+                        std::fflush(stdout);
                     }
-                    std::fflush(stdout);
                 }
             }
         }

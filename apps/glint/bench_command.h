@@ -17,6 +17,7 @@ struct BenchCommand {
     std::vector<std::string> ray_sets;  // empty: all three (primary, incoherent, shadow)
     int threads = 0;                    // the "all threads" count; 0: every core
     std::size_t rays = 1'000'000;       // rays a set
+    bool packets = false;               // each set traced in packets of eight as well
     SceneReadOptions reading;           // --allow-read, --max-file-size
 };
 

@@ -299,6 +299,32 @@ TEST_F(Cli, BenchRaySetTracesOnlyTheSetsNamed) {
                                                   {"\"shadow\"", every.at("\"shadow\"")}}));
 }
 
+// --packets adds a row for each set traced in packets of eight, which finds the same hits.
+TEST_F(Cli, BenchPacketsTraceEachSetInPacketsToo) {
+    const std::string jacks = std::string("'") + GLINT_SOURCE_DIR + "/tests/data/spd/jacks.nff'";
+    const Outcome r = run_glint("bench " + jacks +
+                                " --json --rays 1000 --threads 1 --accel bvh,kdtree --packets");
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    std::istringstream lines(r.out);
+    std::string line;
+    std::map<std::string, int> rows_by_packet;
+    std::map<std::string, std::string> hits_by_set;
+    while (std::getline(lines, line)) {
+        const auto field = [&](const std::string& key) {
+            const std::size_t at = line.find("\"" + key + "\": ") + key.size() + 4;
+            return line.substr(at, line.find_first_of(",}", at) - at);
+        };
+        ++rows_by_packet[field("packet")];
+        const auto [it, added] = hits_by_set.try_emplace(field("rays"), field("hits"));
+        EXPECT_EQ(it->second, field("hits")) << line;
+    }
+    EXPECT_EQ(rows_by_packet, (std::map<std::string, int>{{"1", 6}, {"8", 6}}));
+    const Outcome table =
+        run_glint("bench " + jacks + " --rays 500 --threads 1 --accel bvh --packets");
+    EXPECT_NE(table.out.find("bvh      primary x8"), std::string::npos) << table.out;
+    EXPECT_NE(table.out.find("hit counts agree"), std::string::npos) << table.out;
+}
+
 TEST_F(Cli, BenchTableAndBadInput) {
     const std::string jacks = std::string("'") + GLINT_SOURCE_DIR + "/tests/data/spd/jacks.nff'";
     const Outcome table = run_glint("bench " + jacks + " --rays 500 --threads 1 --accel list");

@@ -31,9 +31,11 @@ struct TraceMeasure {
 };
 
 // Traces every ray of the set through the aggregate (closest hit or occluded, as the set says),
-// in chunks of consecutive rays spread over `threads` worker threads, `repetitions` times.
+// in chunks of consecutive rays spread over `threads` worker threads, `repetitions` times; with
+// `packets`, kRayPacketSize consecutive rays at a time (Aggregate::intersect_packet and
+// occluded_packet; in_packet_order gives the order).
 TraceMeasure measure_trace(const Aggregate& aggregate, const RaySet& set, int threads,
-                           int repetitions = 3);
+                           int repetitions = 3, bool packets = false);
 
 // The primitives for figures per primitive: a TriangleMesh counts its triangles, so that bytes
 // per primitive compare with structures (Embree) that hold the triangles themselves.

@@ -134,4 +134,18 @@ RaySets make_ray_sets(const World& world, std::size_t count, std::uint64_t seed)
     return out;
 }
 
+RaySet in_packet_order(const RaySet& set, int width, int height) {
+    if (set.name != "primary") return set;
+    RaySet tiled = set;
+    tiled.rays.clear();
+    constexpr int kTileWidth = 4, kTileHeight = kRayPacketSize / kTileWidth;
+    for (int y0 = 0; y0 < height; y0 += kTileHeight)
+        for (int x0 = 0; x0 < width; x0 += kTileWidth)
+            for (int y = y0; y < std::min(y0 + kTileHeight, height); ++y)
+                for (int x = x0; x < std::min(x0 + kTileWidth, width); ++x)
+                    tiled.rays.push_back(
+                        set.rays[std::size_t(y) * std::size_t(width) + std::size_t(x)]);
+    return tiled;
+}
+
 }  // namespace glint

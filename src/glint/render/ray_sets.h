@@ -46,4 +46,9 @@ inline constexpr std::size_t kMaxRaysPerSet = std::size_t(1) << 24;
 // [1, kMaxRaysPerSet].
 RaySets make_ray_sets(const World& world, std::size_t count, std::uint64_t seed = 0);
 
+// The order in which packets of kRayPacketSize rays take a set's rays, eight after eight: the
+// primary rays in tiles of 4 x 2 pixels (the render loop's packets), the others as they are
+// (feelers and bounces from the surface points of neighbouring pixels along a row).
+RaySet in_packet_order(const RaySet& set, int width, int height);
+
 }  // namespace glint
