@@ -149,6 +149,17 @@ struct QueryContext {
     // static scene has no motion of its own.
     std::array<ShapeHit, kRayPacketSize> user_hit;
     std::array<float, kRayPacketSize> time{}, wavelength{};
+
+    // Set up for a query over `s` (`coherent`: a packet of neighbouring rays).
+    QueryContext(const Scene& s, bool coherent) : scene(&s) {
+        rtcInitIntersectContext(&embree);
+        if (coherent) embree.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT;
+    }
+    // Ray i's time and wavelength, for the user geometry's callbacks.
+    void carry(std::size_t i, const Ray& ray) {
+        time[i] = ray.time;
+        wavelength[i] = ray.wavelength;
+    }
 };
 
 // Ray i of a callback's packet of N (one for rtcIntersect1), through Embree's SOA accessors.
@@ -406,11 +417,8 @@ std::optional<Hit> EmbreeAggregate::closest_hit(const Ray& ray, Interval t_range
                                                 std::uint32_t ray_mask) const {
     std::optional<Hit> closest = closest_unbounded(ray, ray_mask, t_range);
     if (!embree_range(t_range)) return closest;
-    QueryContext context;
-    rtcInitIntersectContext(&context.embree);
-    context.scene = scene_.get();
-    context.time[0] = ray.time;
-    context.wavelength[0] = ray.wavelength;
+    QueryContext context(*scene_, false);
+    context.carry(0, ray);
     RTCRayHit rayhit;
     rayhit.ray = {ray.origin.x,
                   ray.origin.y,
@@ -438,11 +446,8 @@ std::optional<Hit> EmbreeAggregate::closest_hit(const Ray& ray, Interval t_range
 bool EmbreeAggregate::any_hit(const Ray& ray, Interval t_range, std::uint32_t ray_mask) const {
     if (any_unbounded(ray, ray_mask, t_range)) return true;
     if (!embree_range(t_range)) return false;
-    QueryContext context;
-    rtcInitIntersectContext(&context.embree);
-    context.scene = scene_.get();
-    context.time[0] = ray.time;
-    context.wavelength[0] = ray.wavelength;
+    QueryContext context(*scene_, false);
+    context.carry(0, ray);
     RTCRay r{ray.origin.x,
              ray.origin.y,
              ray.origin.z,
@@ -482,10 +487,7 @@ void set_lane(RTCRay8& r, std::size_t i, const Ray& ray, Interval range, std::ui
 void EmbreeAggregate::closest_hits(std::span<const Ray> rays, Interval t_range,
                                    std::uint32_t ray_mask, std::optional<Hit>* hits) const {
     static_assert(kRayPacketSize == 8, "rtcIntersect8");
-    QueryContext context;
-    rtcInitIntersectContext(&context.embree);
-    context.embree.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT;
-    context.scene = scene_.get();
+    QueryContext context(*scene_, true);
     alignas(32) RTCRayHit8 rayhit{};
     alignas(32) int valid[8] = {};
     for (std::size_t i = 0; i < rays.size(); ++i) {
@@ -496,8 +498,7 @@ void EmbreeAggregate::closest_hits(std::span<const Ray> rays, Interval t_range,
         set_lane(rayhit.ray, i, rays[i], range, ray_mask);
         rayhit.hit.geomID[i] = RTC_INVALID_GEOMETRY_ID;
         rayhit.hit.instID[0][i] = RTC_INVALID_GEOMETRY_ID;
-        context.time[i] = rays[i].time;
-        context.wavelength[i] = rays[i].wavelength;
+        context.carry(i, rays[i]);
     }
     rtcIntersect8(valid, scene_->handle, &context.embree, &rayhit);
     for (std::size_t i = 0; i < rays.size(); ++i) {
@@ -511,10 +512,7 @@ void EmbreeAggregate::closest_hits(std::span<const Ray> rays, Interval t_range,
 
 unsigned EmbreeAggregate::any_hits(std::span<const Ray> rays, const Interval* t_ranges,
                                    std::uint32_t ray_mask) const {
-    QueryContext context;
-    rtcInitIntersectContext(&context.embree);
-    context.embree.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT;
-    context.scene = scene_.get();
+    QueryContext context(*scene_, true);
     alignas(32) RTCRay8 ray{};
     alignas(32) int valid[8] = {};
     unsigned blocked = 0;
@@ -527,8 +525,7 @@ unsigned EmbreeAggregate::any_hits(std::span<const Ray> rays, const Interval* t_
         if (!embree_range(range)) continue;
         valid[i] = -1;
         set_lane(ray, i, rays[i], range, ray_mask);
-        context.time[i] = rays[i].time;
-        context.wavelength[i] = rays[i].wavelength;
+        context.carry(i, rays[i]);
     }
     rtcOccluded8(valid, scene_->handle, &context.embree, &ray);
     for (std::size_t i = 0; i < rays.size(); ++i)
