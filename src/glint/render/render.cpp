@@ -73,6 +73,11 @@ void render_tile_in_packets(const Tile& tile, Pass pass, const RenderInputs<Inte
     const RenderSettings& settings = world.settings();
     const float pencil_scale =
         world.carries_pencils() ? eye_pencil_scale(settings.samples_per_pixel) : 0;
+    static_assert(
+        !requires(Integrator & i, SampleStream & s, SplatFilm & f, RayStats & r) {
+            i.trace_particle(s, f, r);
+        },
+        "the particles each sample sends are render_tile's");
     Integrator integrator(world, in.shared);  // one per tile: it holds per-thread caches
     FilmTile film_tile = state.film.make_tile(tile);
     constexpr int kBlockWidth = 4, kBlockHeight = kRayPacketSize / kBlockWidth;
