@@ -96,6 +96,9 @@ protected:
 inline void Aggregate::intersect_packet(std::span<const Ray> rays, Interval t_range,
                                         std::uint32_t ray_mask, std::optional<Hit>* hits) const {
     assert(rays.size() <= std::size_t(kRayPacketSize));
+    bool all = true;
+    for (const Ray& ray : rays) all = all && is_traceable(ray);
+    if (all) return closest_hits(rays, t_range, ray_mask, hits);
     // Rays that cannot hit anything leave the packet.
     std::array<Ray, kRayPacketSize> traced;
     std::array<std::size_t, kRayPacketSize> slot;
@@ -107,7 +110,6 @@ inline void Aggregate::intersect_packet(std::span<const Ray> rays, Interval t_ra
             slot[n++] = i;
         }
     }
-    if (n == rays.size()) return closest_hits(rays, t_range, ray_mask, hits);
     if (n == 0) return;
     std::array<std::optional<Hit>, kRayPacketSize> found;
     closest_hits({traced.data(), n}, t_range, ray_mask, found.data());
@@ -117,6 +119,10 @@ inline void Aggregate::intersect_packet(std::span<const Ray> rays, Interval t_ra
 inline unsigned Aggregate::occluded_packet(std::span<const Ray> rays, const Interval* t_ranges,
                                            std::uint32_t ray_mask) const {
     assert(rays.size() <= std::size_t(kRayPacketSize));
+    bool all = true;
+    for (const Ray& ray : rays) all = all && is_traceable(ray);
+    if (all) return any_hits(rays, t_ranges, ray_mask);
+    // Rays that cannot hit anything leave the packet.
     std::array<Ray, kRayPacketSize> traced;
     std::array<Interval, kRayPacketSize> ranges;
     std::array<std::size_t, kRayPacketSize> slot;
@@ -127,7 +133,6 @@ inline unsigned Aggregate::occluded_packet(std::span<const Ray> rays, const Inte
             ranges[n] = t_ranges[i];
             slot[n++] = i;
         }
-    if (n == rays.size()) return any_hits(rays, t_ranges, ray_mask);
     if (n == 0) return 0;
     const unsigned found = any_hits({traced.data(), n}, ranges.data(), ray_mask);
     unsigned blocked = 0;

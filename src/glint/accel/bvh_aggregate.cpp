@@ -160,8 +160,10 @@ struct BvhAggregate::NearestHit {
     std::optional<Hit> result() const { return found ? std::optional<Hit>(closest) : std::nullopt; }
 };
 
-void BvhAggregate::closest_in_unbounded(const Ray& ray, std::uint32_t ray_mask, NearestHit& nearest,
-                                        Interval& range) const {
+inline GLINT_INLINE_LEAF void BvhAggregate::closest_in_unbounded(const Ray& ray,
+                                                                 std::uint32_t ray_mask,
+                                                                 NearestHit& nearest,
+                                                                 Interval& range) const {
     for (const std::uint32_t i : unbounded_) {
         if (!visible(i, ray_mask)) continue;
         if (const auto hit = glint::intersect(primitives_[i].shape, ray, range))
@@ -249,7 +251,8 @@ void BvhAggregate::closest_hits(std::span<const Ray> rays, Interval t_range, std
     for (std::size_t i = 0; i < n; ++i) hits[i] = nearest[i].result();
 }
 
-bool BvhAggregate::any_in_unbounded(const Ray& ray, Interval range, std::uint32_t ray_mask) const {
+inline GLINT_INLINE_LEAF bool BvhAggregate::any_in_unbounded(const Ray& ray, Interval range,
+                                                             std::uint32_t ray_mask) const {
     for (const std::uint32_t i : unbounded_)
         if (visible(i, ray_mask) && glint::intersect(primitives_[i].shape, ray, range)) return true;
     return false;
