@@ -186,6 +186,21 @@ TEST(Camera, ThinLensRaysMeetOnThePlaneOfFocus) {
     }
 }
 
+// The render loop works out a packet's aperture points before its rays: the same rays, bit for
+// bit, as from the lens numbers in one go.
+TEST(Camera, RaysFromApertureOrLensNumbersAreTheSame) {
+    const Camera camera(lens_camera(), 64, 48);
+    for (const Point2 film : {Point2{32, 24}, Point2{3, 40}}) {
+        for (int i = 0; i < 16; ++i) {
+            const Point2 u = lens_u(i, 4);
+            const Ray a = camera.generate_ray(film, u);
+            const Ray b = camera.generate_ray_from_aperture(film, camera.aperture_point(u), 0);
+            EXPECT_EQ(a.origin, b.origin);
+            EXPECT_EQ(a.direction, b.direction);
+        }
+    }
+}
+
 TEST(Camera, OffFocusPointsSpreadOverTheCircleOfConfusion) {
     // At depth z the rays through one film position spread over a disk of radius
     // r |z - f| / f around the pinhole ray: 0.1 * 4 / 4 = 0.1 at z = 8, 0.05 at z = 2.

@@ -150,6 +150,10 @@ Point2 Camera::aperture_point(Point2 u) const {
 }
 
 Ray Camera::generate_ray(Point2 film, Point2 lens, float time) const {
+    return generate_ray_from_aperture(film, has_lens() ? aperture_point(lens) : Point2{0, 0}, time);
+}
+
+Ray Camera::generate_ray_from_aperture(Point2 film, Point2 aperture, float time) const {
     // Viewport to window: x from -1 (left) to 1 (right), y from 1 (top) to -1 (bottom).
     const float x = (2 * film.x / width_ - 1) * half_width_;
     const float y = (1 - 2 * film.y / height_) * half_height_;
@@ -167,8 +171,7 @@ Ray Camera::generate_ray(Point2 film, Point2 lens, float time) const {
         // From a point of the aperture to where the pinhole ray meets the plane of focus: at
         // focus_distance times its direction.
         const Point3 focus = origin + direction * focus_distance_;
-        const Point2 a = aperture_point(lens);
-        ray.origin = origin + (a.x * u_ + a.y * v_) * lens_radius_;
+        ray.origin = origin + (aperture.x * u_ + aperture.y * v_) * lens_radius_;
         ray.direction = normalize(focus - ray.origin);
     } else {
         ray = {origin, orthographic || wide ? direction : normalize(direction)};

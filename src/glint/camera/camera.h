@@ -22,6 +22,9 @@ public:
     // aperture (ignored by a pinhole), `time` the moment (see shutter_time). The direction is
     // unit length.
     Ray generate_ray(Point2 film, Point2 lens = {0.5f, 0.5f}, float time = 0) const;
+    // The same from the point of the aperture `lens` picks (aperture_point(lens); any point for a
+    // pinhole).
+    Ray generate_ray_from_aperture(Point2 film, Point2 aperture, float time) const;
     // Whether the film position sees anything: not outside a fisheye's circle, where samples
     // are black.
     bool sees(Point2 film) const;

@@ -106,12 +106,20 @@ void render_tile_in_packets(const Tile& tile, Pass pass, const RenderInputs<Inte
                     state.samples[pixel] = std::uint32_t(pass.end);
                 }
             for (int s = pass.begin; s < pass.end; ++s) {
+                // The eye rays in phases, each over all lanes (see EyeNumbers).
+                std::array<EyeNumbers, kRayPacketSize> numbers;
+                for (std::size_t i = 0; i < count; ++i) {
+                    lanes[i].stream.emplace(*lanes[i].patterns, std::uint32_t(s));
+                    numbers[i] = eye_numbers(camera, *lanes[i].stream);
+                }
+                for (std::size_t i = 0; i < count; ++i) find_aperture_point(camera, numbers[i]);
+                for (std::size_t i = 0; i < count; ++i)
+                    lanes[i].eye = eye_sample(camera, numbers[i], lanes[i].x, lanes[i].y, nullptr,
+                                              pencil_scale);
+                // Apart from the loop above: a ray read back just after it was written stalls.
                 std::size_t traced = 0;
                 for (std::size_t i = 0; i < count; ++i) {
                     Lane& lane = lanes[i];
-                    lane.stream.emplace(*lane.patterns, std::uint32_t(s));
-                    lane.eye =
-                        eye_sample(camera, *lane.stream, lane.x, lane.y, nullptr, pencil_scale);
                     lane.ray = kNone;
                     if (camera.sees(lane.eye.film)) {
                         lane.ray = traced;
