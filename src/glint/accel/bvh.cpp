@@ -19,6 +19,8 @@ namespace {
 // at most 32 more levels for 2^32 primitives, so no leaf is deeper than kBvhMaxDepth - 2.
 constexpr int kSahDepthLimit = kBvhMaxDepth - 34;
 constexpr int kMaxBins = 64;
+// Ranges of at least this many primitives are binned into two sets of bins (bin_block).
+constexpr std::uint32_t kTwoBinSets = 128;
 // Ranges of at least this many primitives are binned and partitioned in parallel, in blocks of
 // kBlock. Both are constants, not functions of the thread count, so the result is not either.
 constexpr std::uint32_t kParallelRange = 1u << 16;
@@ -277,12 +279,30 @@ private:
         return any;
     }
 
+    static void clear_bins(AxisBins& bins, int count) {
+        for (Bins& axis_bins : bins)
+            for (int k = 0; k < count; ++k) axis_bins[std::size_t(k)] = Bin::empty();
+    }
+
+    // Adds `from`'s bins to `to`'s. A bin's box is the same whatever order its boxes are taken
+    // in (grow() skips NaN; only a zero's sign could differ, which no area sees), so the tree is.
+    static void merge_bins(AxisBins& to, const AxisBins& from, int count) {
+        for (int a = 0; a < 3; ++a)
+            for (int k = 0; k < count; ++k) {
+                Bin& bin = to[std::size_t(a)][std::size_t(k)];
+                const Bin& part = from[std::size_t(a)][std::size_t(k)];
+                bin.bounds.grow(part.bounds);
+                bin.count += part.count;
+                bin.blocked += part.blocked;
+            }
+    }
+
     void bin_block(std::uint32_t b, std::uint32_t e, const Binning& g, AxisBins& bins) const {
         // bin_of on all three axes at once: the same operations lane by lane.
         const Float4 lo{g.lo[0], g.lo[1], g.lo[2], 0};
         const Float4 scale{g.scale[0], g.scale[1], g.scale[2], 0};
         const Float4 last = splat(float(g.count - 1));
-        for (std::uint32_t i = b; i < e; ++i) {
+        const auto add = [&](std::uint32_t i, AxisBins& to) {
             const std::uint32_t p = indices_[i];
             const std::uint32_t is_blocked = blocked(p);
             const Float4 f = (key(p, g) - lo) * scale;
@@ -290,12 +310,25 @@ private:
             const Int4 index = __builtin_convertvector(positive < last ? positive : last, Int4);
             for (int axis = 0; axis < 3; ++axis) {
                 if (!g.used[axis]) continue;
-                Bin& bin = bins[std::size_t(axis)][std::size_t(index[axis])];
+                Bin& bin = to[std::size_t(axis)][std::size_t(index[axis])];
                 bin.bounds.grow(boxes_[p]);
                 ++bin.count;
                 bin.blocked += is_blocked;
             }
+        };
+        std::uint32_t i = b;
+        // Neighbouring primitives often fall in the same bins, and the updates of one bin wait on
+        // each other through memory: a second set of bins takes every other primitive.
+        if (e - b >= kTwoBinSets) {
+            AxisBins other;
+            clear_bins(other, g.count);
+            for (; i + 1 < e; i += 2) {
+                add(i, bins);
+                add(i + 1, other);
+            }
+            merge_bins(bins, other, g.count);
         }
+        for (; i < e; ++i) add(i, bins);
     }
 
     // Partitions r by the cheapest SAH plane of the three axes (in axis order at equal cost;
@@ -311,32 +344,17 @@ private:
             g.by_corner = true;
             if (!place_bins(corners, g)) return false;
         }
-        const auto clear = [&](AxisBins& bins) {
-            for (int a = 0; a < 3; ++a)
-                for (int k = 0; k < g.count; ++k)
-                    bins[std::size_t(a)][std::size_t(k)] = Bin::empty();
-        };
         AxisBins bins;
-        clear(bins);
+        clear_bins(bins, g.count);
         if (r.size() < kParallelRange) {
             bin_block(r.begin, r.end, g, bins);
         } else {
             std::vector<AxisBins> partial(blocks_of(r.size()));
             for_blocks(r.begin, r.end, [&](std::uint32_t b, std::uint32_t e, std::uint32_t k) {
-                clear(partial[k]);
+                clear_bins(partial[k], g.count);
                 bin_block(b, e, g, partial[k]);
             });
-            for (const AxisBins& p : partial) {
-                for (int a = 0; a < 3; ++a) {
-                    for (int k = 0; k < g.count; ++k) {
-                        Bin& bin = bins[std::size_t(a)][std::size_t(k)];
-                        const Bin& part = p[std::size_t(a)][std::size_t(k)];
-                        bin.bounds.grow(part.bounds);
-                        bin.count += part.count;
-                        bin.blocked += part.blocked;
-                    }
-                }
-            }
+            for (const AxisBins& p : partial) merge_bins(bins, p, g.count);
         }
         // cost(split after bin k) = traversal + (A_left T_left + A_right T_right) / A_node, T the
         // leaf tests of a side, swept from both ends so that each candidate costs O(1). Only
