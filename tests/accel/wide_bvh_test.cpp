@@ -401,8 +401,8 @@ TEST(WideBvh, PackingTurnsLeavesOfTrianglesIntoBlocksInIdOrder) {
         kinds.push_back(i % 4 == 0 ? 0 : 1);
     }
     WideBvh bvh = build_wide_bvh(b, kWideBvhTriangleBuildOptions, kinds);
-    pack_block_leaves(bvh, [&](std::uint32_t i) -> std::optional<BlockTriangle> {
-        if (kinds[i] == 0) return std::nullopt;
+    pack_block_leaves(bvh, kinds, [&](std::uint32_t i) {
+        EXPECT_EQ(kinds[i], kBlockTriangle);  // asked only for triangles
         return BlockTriangle{corners[i][0], corners[i][1], corners[i][2], 100000 + i};
     });
     std::vector<int> seen(b.size());

@@ -22,8 +22,8 @@ namespace {
 // Leaf kinds of the build: leaves of triangles or of spheres become blocks of four, anything else
 // stays as it is.
 constexpr std::uint8_t kWholeShape = 0;
-constexpr std::uint8_t kTriangle = 1;
-constexpr std::uint8_t kSphere = 2;
+constexpr std::uint8_t kTriangle = kBlockTriangle;
+constexpr std::uint8_t kSphere = kBlockSphere;
 
 // f(i) for every i in [0, n), on all threads: the per-triangle loops of a mesh of millions.
 template <typename F>
@@ -106,15 +106,14 @@ BvhAggregate::BvhAggregate(std::span<const Primitive> primitives) : primitives_(
     // test them.
     bvh_ = build_wide_bvh(boxes, kWideBvhTriangleBuildOptions, kinds);
     // Triangle lanes name references; sphere lanes, and leaves of whole shapes, primitives. A kind
-    // the scene has none of gets no function, and pack_block_leaves no room for its items.
+    // the scene has none of gets no function.
     const auto any = [&](std::uint8_t kind) {
         return std::find(kinds.begin(), kinds.end(), kind) != kinds.end();
     };
-    std::function<std::optional<BlockTriangle>(std::uint32_t)> triangle_of;
-    std::function<std::optional<BlockSphere>(std::uint32_t)> sphere_of;
+    std::function<BlockTriangle(std::uint32_t)> triangle_of;
+    std::function<BlockSphere(std::uint32_t)> sphere_of;
     if (any(kTriangle))
-        triangle_of = [&](std::uint32_t i) -> std::optional<BlockTriangle> {
-            if (kinds[i] != kTriangle) return std::nullopt;
+        triangle_of = [&](std::uint32_t i) {
             const std::uint32_t ref = bounded[i];
             const Reference r = reference(ref);
             const Shape& shape = primitives[r.primitive].shape;
@@ -128,12 +127,11 @@ BvhAggregate::BvhAggregate(std::span<const Primitive> primitives) : primitives_(
                                  ref};
         };
     if (any(kSphere))
-        sphere_of = [&](std::uint32_t i) -> std::optional<BlockSphere> {
-            if (kinds[i] != kSphere) return std::nullopt;
+        sphere_of = [&](std::uint32_t i) {
             const std::uint32_t primitive = reference(bounded[i]).primitive;
             return BlockSphere{std::get<Sphere>(primitives[primitive].shape), primitive};
         };
-    pack_block_leaves(bvh_, triangle_of, sphere_of);
+    pack_block_leaves(bvh_, kinds, triangle_of, sphere_of);
     for (std::uint32_t& i : bvh_.primitive_indices) i = reference(bounded[i]).primitive;
 }
 

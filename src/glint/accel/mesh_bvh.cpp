@@ -25,7 +25,7 @@ MeshBvh::MeshBvh(std::shared_ptr<const MeshData> mesh) : mesh_(std::move(mesh)) 
         bounds[i] = merge(Bounds3::of(m.positions[t[0]], m.positions[t[1]]), m.positions[t[2]]);
     }
     bvh_ = build_wide_bvh(bounds, kWideBvhTriangleBuildOptions);
-    pack_block_leaves(bvh_, [&](std::uint32_t i) -> std::optional<BlockTriangle> {
+    pack_block_leaves(bvh_, {}, [&](std::uint32_t i) {
         const auto& t = m.triangles[i];
         return BlockTriangle{m.positions[t[0]], m.positions[t[1]], m.positions[t[2]], i};
     });

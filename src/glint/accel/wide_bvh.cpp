@@ -206,30 +206,46 @@ struct LeafSlot {
     std::uint32_t start = 0;
 };
 
-// The leaf's primitives as items of one kind, into items[first, first + leaf.size()) sorted by
-// id (lanes run in ascending id); false when one of them is not of that kind.
-template <typename Item>
-bool gather_leaf(std::span<const std::uint32_t> leaf,
-                 const std::function<std::optional<Item>(std::uint32_t)>& item_of,
-                 LargeVector<Item>& all_items, std::uint32_t first) {
-    if (!item_of) return false;  // and no items: all_items is empty
-    Item* items = all_items.data() + first;
-    for (std::size_t i = 0; i < leaf.size(); ++i) {
-        const auto item = item_of(leaf[i]);
-        if (!item) return false;
-        items[i] = *item;
+// The kind of every primitive of the leaf (kBlockTriangle, kBlockSphere or another), or
+// kKeptAsIs when they differ.
+constexpr std::uint8_t kKeptAsIs = 0;
+std::uint8_t leaf_kind_of(std::span<const std::uint32_t> leaf,
+                          std::span<const std::uint8_t> kinds) {
+    if (kinds.empty()) return kBlockTriangle;
+    const std::uint8_t first = kinds[leaf[0]];
+    for (const std::uint32_t i : leaf)
+        if (kinds[i] != first) return kKeptAsIs;
+    return first;
+}
+
+// item(i) for each of the leaf's primitives, set into the lanes of its blocks in ascending id
+// (so that the lowest lane at equal t is the lowest id). Gathered on the stack, and straight into
+// the blocks: an array of every primitive's item, 40 bytes a triangle, was a tenth of a large
+// mesh's build in fresh pages alone.
+template <typename Item, typename Block, typename SetLane>
+void fill_blocks(std::span<const std::uint32_t> leaf,
+                 const std::function<Item(std::uint32_t)>& item, Block* blocks,
+                 SetLane&& set_lane) {
+    constexpr std::size_t kOnStack = 8;
+    std::array<Item, kOnStack> on_stack;
+    std::vector<Item> on_heap;
+    Item* items = on_stack.data();
+    if (leaf.size() > kOnStack) {
+        on_heap.resize(leaf.size());
+        items = on_heap.data();
     }
+    for (std::size_t j = 0; j < leaf.size(); ++j) items[j] = item(leaf[j]);
     std::sort(items, items + leaf.size(), [](const Item& a, const Item& b) { return a.id < b.id; });
-    return true;
+    for (std::size_t j = 0; j < leaf.size(); ++j) set_lane(blocks[j / 4], int(j % 4), items[j]);
 }
 
 std::uint32_t blocks_for(std::uint32_t count) { return (count + 3) / 4; }
 
 }  // namespace
 
-void pack_block_leaves(WideBvh& bvh,
-                       const std::function<std::optional<BlockTriangle>(std::uint32_t)>& triangle,
-                       const std::function<std::optional<BlockSphere>(std::uint32_t)>& sphere) {
+void pack_block_leaves(WideBvh& bvh, std::span<const std::uint8_t> kinds,
+                       const std::function<BlockTriangle(std::uint32_t)>& triangle,
+                       const std::function<BlockSphere(std::uint32_t)>& sphere) {
     std::vector<LeafSlot> leaves;
     for (WideBvhNode& node : bvh.nodes)
         for (int k = 0; k < kWideBvhWidth; ++k) {
@@ -240,22 +256,18 @@ void pack_block_leaves(WideBvh& bvh,
                               .first = node.child[k] & kWideLeafIndex,
                               .count = node.count[k]});
         }
-    // Each leaf's items go where its primitives are in primitive_indices (the leaves' ranges do
-    // not overlap), so that the leaves are gathered in parallel and laid out in order after.
-    const std::size_t n = bvh.primitive_indices.size();
-    LargeVector<BlockTriangle> triangle_items(triangle ? n : 0);
-    LargeVector<BlockSphere> sphere_items(sphere ? n : 0);
+    const auto leaf_of = [&](const LeafSlot& l) {
+        return std::span<const std::uint32_t>(bvh.primitive_indices.data() + l.first, l.count);
+    };
+    // Each leaf's kind, from its primitives' kinds alone.
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, leaves.size(), 256),
                       [&](const tbb::blocked_range<std::size_t>& r) {
                           for (std::size_t i = r.begin(); i != r.end(); ++i) {
                               LeafSlot& l = leaves[i];
-                              const std::span<const std::uint32_t> leaf(
-                                  bvh.primitive_indices.data() + l.first, l.count);
-                              l.kind = gather_leaf(leaf, triangle, triangle_items, l.first)
-                                           ? LeafKind::triangles
-                                       : gather_leaf(leaf, sphere, sphere_items, l.first)
-                                           ? LeafKind::spheres
-                                           : LeafKind::kept;
+                              const std::uint8_t kind = leaf_kind_of(leaf_of(l), kinds);
+                              l.kind = kind == kBlockTriangle && triangle ? LeafKind::triangles
+                                       : kind == kBlockSphere && sphere   ? LeafKind::spheres
+                                                                          : LeafKind::kept;
                           }
                       });
     // Where each leaf's blocks (or kept indices) start, in the leaves' order.
@@ -282,16 +294,16 @@ void pack_block_leaves(WideBvh& bvh,
     const auto fill = [&](const LeafSlot& l) {
         switch (l.kind) {
             case LeafKind::triangles:
-                for (std::uint32_t j = 0; j < l.count; ++j) {
-                    const BlockTriangle& t = triangle_items[l.first + j];
-                    set_block_lane(bvh.blocks[l.start + j / 4], int(j % 4), t.v0, t.v1, t.v2, t.id);
-                }
+                fill_blocks(leaf_of(l), triangle, bvh.blocks.data() + l.start,
+                            [](TriangleBlock& block, int lane, const BlockTriangle& t) {
+                                set_block_lane(block, lane, t.v0, t.v1, t.v2, t.id);
+                            });
                 break;
             case LeafKind::spheres:
-                for (std::uint32_t j = 0; j < l.count; ++j) {
-                    const BlockSphere& s = sphere_items[l.first + j];
-                    set_sphere_lane(bvh.sphere_blocks[l.start + j / 4], int(j % 4), s.sphere, s.id);
-                }
+                fill_blocks(leaf_of(l), sphere, bvh.sphere_blocks.data() + l.start,
+                            [](SphereBlock& block, int lane, const BlockSphere& s) {
+                                set_sphere_lane(block, lane, s.sphere, s.id);
+                            });
                 break;
             case LeafKind::kept:
                 std::copy_n(bvh.primitive_indices.data() + l.first, l.count,

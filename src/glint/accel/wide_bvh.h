@@ -100,15 +100,20 @@ struct BlockSphere {
     std::uint32_t id;
 };
 
+// What pack_block_leaves makes of a primitive, by its kind (build_bvh's kinds): triangles and
+// spheres go into blocks, any other kind stays as it is.
+inline constexpr std::uint8_t kBlockTriangle = 1;
+inline constexpr std::uint8_t kBlockSphere = 2;
+
 // Turns every leaf whose primitives are all triangles into a leaf of TriangleBlocks, and every
-// leaf whose primitives are all spheres into one of SphereBlocks: triangle(i) and sphere(i)
-// return primitive i as such, or nothing when it is not one (either may be empty: no such
-// leaves; both are called from several threads at once). Within a leaf, lanes run in ascending
-// id, so that the lowest lane at equal t is the lowest id. The entries of primitive_indices that
-// such leaves used are dropped. Builds whose leaves may mix kinds should separate them (build_bvh's
-// kinds).
-void pack_block_leaves(WideBvh& bvh,
-                       const std::function<std::optional<BlockTriangle>(std::uint32_t)>& triangle,
-                       const std::function<std::optional<BlockSphere>(std::uint32_t)>& sphere = {});
+// leaf whose primitives are all spheres into one of SphereBlocks. kinds[i] is primitive i's kind
+// (empty: every primitive a triangle); triangle(i) and sphere(i) return primitive i as such, and
+// are asked only for primitives of that kind (either may be empty: no such leaves; both are
+// called from several threads at once). Within a leaf, lanes run in ascending id, so that the
+// lowest lane at equal t is the lowest id. The entries of primitive_indices that such leaves used
+// are dropped. Builds whose leaves may mix kinds should separate them (build_bvh's kinds).
+void pack_block_leaves(WideBvh& bvh, std::span<const std::uint8_t> kinds,
+                       const std::function<BlockTriangle(std::uint32_t)>& triangle,
+                       const std::function<BlockSphere(std::uint32_t)>& sphere = {});
 
 }  // namespace glint
