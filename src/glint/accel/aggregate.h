@@ -42,6 +42,30 @@ inline bool is_traceable(const Ray& ray) {
 }
 
 // Built over a primitive array that the caller keeps alive and unchanged.
+// Some of a packet's rays, gathered in order with their ranges, and the slot in the packet each
+// came from: what a structure traces on when the others have left the packet (rays that cannot
+// hit anything, or that a plane already blocks).
+struct PacketSubset {
+    std::array<Ray, kRayPacketSize> rays;
+    std::array<Interval, kRayPacketSize> ranges;
+    std::array<std::size_t, kRayPacketSize> slot;
+    std::size_t size = 0;
+
+    void add(std::size_t i, const Ray& ray, Interval range) {
+        rays[size] = ray;
+        ranges[size] = range;
+        slot[size++] = i;
+    }
+    std::span<const Ray> rays_span() const { return {rays.data(), size}; }
+    // Bit k (ray k of the subset) as bit slot[k] of the packet.
+    unsigned in_packet(unsigned bits) const {
+        unsigned out = 0;
+        for (std::size_t k = 0; k < size; ++k)
+            if (bits >> k & 1) out |= 1u << slot[k];
+        return out;
+    }
+};
+
 class Aggregate {
 public:
     virtual ~Aggregate() = default;
@@ -100,20 +124,15 @@ inline void Aggregate::intersect_packet(std::span<const Ray> rays, Interval t_ra
     for (const Ray& ray : rays) all = all && is_traceable(ray);
     if (all) return closest_hits(rays, t_range, ray_mask, hits);
     // Rays that cannot hit anything leave the packet.
-    std::array<Ray, kRayPacketSize> traced;
-    std::array<std::size_t, kRayPacketSize> slot;
-    std::size_t n = 0;
+    PacketSubset traced;
     for (std::size_t i = 0; i < rays.size(); ++i) {
         hits[i].reset();
-        if (is_traceable(rays[i])) {
-            traced[n] = rays[i];
-            slot[n++] = i;
-        }
+        if (is_traceable(rays[i])) traced.add(i, rays[i], t_range);
     }
-    if (n == 0) return;
+    if (traced.size == 0) return;
     std::array<std::optional<Hit>, kRayPacketSize> found;
-    closest_hits({traced.data(), n}, t_range, ray_mask, found.data());
-    for (std::size_t k = 0; k < n; ++k) hits[slot[k]] = found[k];
+    closest_hits(traced.rays_span(), t_range, ray_mask, found.data());
+    for (std::size_t k = 0; k < traced.size; ++k) hits[traced.slot[k]] = found[k];
 }
 
 inline unsigned Aggregate::occluded_packet(std::span<const Ray> rays, const Interval* t_ranges,
@@ -123,22 +142,11 @@ inline unsigned Aggregate::occluded_packet(std::span<const Ray> rays, const Inte
     for (const Ray& ray : rays) all = all && is_traceable(ray);
     if (all) return any_hits(rays, t_ranges, ray_mask);
     // Rays that cannot hit anything leave the packet.
-    std::array<Ray, kRayPacketSize> traced;
-    std::array<Interval, kRayPacketSize> ranges;
-    std::array<std::size_t, kRayPacketSize> slot;
-    std::size_t n = 0;
+    PacketSubset traced;
     for (std::size_t i = 0; i < rays.size(); ++i)
-        if (is_traceable(rays[i])) {
-            traced[n] = rays[i];
-            ranges[n] = t_ranges[i];
-            slot[n++] = i;
-        }
-    if (n == 0) return 0;
-    const unsigned found = any_hits({traced.data(), n}, ranges.data(), ray_mask);
-    unsigned blocked = 0;
-    for (std::size_t k = 0; k < n; ++k)
-        if (found >> k & 1) blocked |= 1u << slot[k];
-    return blocked;
+        if (is_traceable(rays[i])) traced.add(i, rays[i], t_ranges[i]);
+    if (traced.size == 0) return 0;
+    return traced.in_packet(any_hits(traced.rays_span(), traced.ranges.data(), ray_mask));
 }
 
 }  // namespace glint

@@ -303,37 +303,28 @@ unsigned BvhAggregate::any_hits(std::span<const Ray> rays, const Interval* t_ran
     assert(n <= std::size_t(kRayPacketSize));
     if (common_visibility_ && (*common_visibility_ & ray_mask) == 0) return 0;
     // Rays a plane blocks are done; the others go through the tree together.
-    std::array<Ray, kRayPacketSize> left;
-    std::array<Interval, kRayPacketSize> ranges;
-    std::array<std::size_t, kRayPacketSize> slot;
+    PacketSubset left;
     unsigned blocked = 0;
-    std::size_t m = 0;
     for (std::size_t i = 0; i < n; ++i) {
-        if (any_in_unbounded(rays[i], t_ranges[i], ray_mask)) {
+        if (any_in_unbounded(rays[i], t_ranges[i], ray_mask))
             blocked |= 1u << i;
-            continue;
-        }
-        left[m] = rays[i];
-        ranges[m] = t_ranges[i];
-        slot[m++] = i;
+        else
+            left.add(i, rays[i], t_ranges[i]);
     }
-    if (m == 0) return blocked;
-    const std::span<const Ray> traced(left.data(), m);
-    EachMadeOnFirstUse<BlockTester, Ray, kRayPacketSize> triangles(traced);
-    EachMadeOnFirstUse<SphereTester, Ray, kRayPacketSize> spheres(traced);
+    if (left.size == 0) return blocked;
+    EachMadeOnFirstUse<BlockTester, Ray, kRayPacketSize> triangles(left.rays_span());
+    EachMadeOnFirstUse<SphereTester, Ray, kRayPacketSize> spheres(left.rays_span());
     const unsigned found = bvh_any_leaf_packet(
-        bvh_, traced, ranges.data(),
+        bvh_, left.rays_span(), left.ranges.data(),
         [&](auto kernel, std::uint32_t leaf, std::uint32_t count, int lane, Interval range)
             GLINT_INLINE_LEAF {
                 const auto i = std::size_t(lane);
                 return any_in_leaf<decltype(kernel)::kSimd>(
-                    left[i], leaf, count, ray_mask,
+                    left.rays[i], leaf, count, ray_mask,
                     [&]() -> const BlockTester& { return triangles.get(i); },
                     [&]() -> const SphereTester& { return spheres.get(i); }, range);
             });
-    for (std::size_t k = 0; k < m; ++k)
-        if (found >> k & 1) blocked |= 1u << slot[k];
-    return blocked;
+    return blocked | left.in_packet(found);
 }
 
 std::size_t BvhAggregate::memory_bytes() const {
