@@ -223,6 +223,27 @@ TEST(Bvh, LeafSizeOptionIsRespected) {
     }
 }
 
+// Coincident boxes, which no split parts: leaves are cut by count at max_leaf_size tests, a test
+// being one shape of kind 0 or a block of four of another kind, so sixteen triangles (four blocks)
+// or four shapes.
+TEST(Bvh, LeavesHoldAtMostMaxLeafTestsOfShapesOrBlocks) {
+    const std::vector<Bounds3> b(128, Bounds3{{0, 0, 0}, {1, 1, 1}});
+    BvhBuildOptions options;
+    options.max_leaf_size = 4;
+    options.block_size = 4;
+    for (const std::uint8_t kind : {0, 1}) {
+        const std::vector<std::uint8_t> kinds(b.size(), kind);
+        const Bvh bvh = build_bvh(b, options, kinds);
+        const std::uint32_t most = kind == 0 ? 4 : 16;
+        expect_valid(bvh, b, int(most));
+        for (const BvhNode& n : bvh.nodes) {
+            if (n.is_leaf()) {
+                EXPECT_EQ(n.count, most) << int(kind);
+            }
+        }
+    }
+}
+
 TEST(Bvh, ClosestHitMatchesBruteForceOnRandomRays) {
     for (unsigned seed : {1u, 2u, 3u}) {
         const auto soup = random_soup(2000, seed);

@@ -199,13 +199,13 @@ private:
         return axis;
     }
 
-    // Splits r in two, or returns false for a leaf (at most max_leaf_ primitives, of one kind).
+    // Splits r in two, or returns false for a leaf (at most max_leaf_ tests, of one kind).
     bool split(const Range& r, int depth, Range& left, Range& right, int& axis) {
         const std::uint32_t count = r.size();
         if (count <= 1) return false;
         if (depth < kSahDepthLimit && sah_split(r, left, right, axis)) return true;
         axis = longest_axis(r.centroids);
-        if (count > max_leaf_) {
+        if (!fits_leaf(r)) {
             median_split(r, axis, left, right);
             return true;
         }
@@ -230,6 +230,14 @@ private:
         measure(left);
         measure(right);
         return true;
+    }
+
+    // Whether r may be a leaf: at most max_leaf_ leaf tests (and 255 primitives).
+    bool fits_leaf(const Range& r) const {
+        if (r.size() > std::min(255u, max_leaf_ * block_size_)) return false;
+        std::uint32_t n = 0;
+        for (std::uint32_t i = r.begin; i < r.end; ++i) n += blocked(indices_[i]);
+        return r.size() - n + (n + block_size_ - 1) / block_size_ <= max_leaf_;
     }
 
     std::uint32_t blocked(std::uint32_t p) const {

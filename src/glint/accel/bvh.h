@@ -36,8 +36,10 @@ struct BvhNode {
 static_assert(sizeof(BvhNode) == 32, "two nodes to a cache line");
 
 struct BvhBuildOptions {
-    int max_leaf_size = 4;  // in [1, 255]; leaves never hold more
-    int bins = 16;          // SAH candidates on each axis, in [2, 64]
+    // Leaf tests a leaf may take, in [1, 255]: primitives of kind 0, or blocks (block_size
+    // primitives of another kind); never more than 255 primitives.
+    int max_leaf_size = 4;
+    int bins = 16;  // SAH candidates on each axis, in [2, 64]
     // SAH cost of visiting a node relative to one leaf test (pbrt-v4 uses 1/2).
     float traversal_cost = 0.5f;
     // Primitives of a kind other than 0 (see build_bvh) that one leaf test handles at once: SAH
@@ -71,8 +73,8 @@ struct Bvh {
 // Construction of SAH-based Bounding Volume Hierarchies"), 16 bins on each axis of the centroids'
 // extent, the cheapest plane of the three taken (as Embree's builder does); where the centroids
 // coincide, the boxes' lower corners are binned instead. Where SAH cannot split (all boxes
-// alike) or the depth budget runs low, the range is halved by count instead, so every leaf holds
-// at most max_leaf_size primitives and depth stays below kBvhMaxDepth for up to 2^32 primitives.
+// alike) or the depth budget runs low, the range is halved by count instead, so every leaf takes
+// at most max_leaf_size tests and depth stays below kBvhMaxDepth for up to 2^32 primitives.
 // Bounds should be finite; empty or non-finite boxes are kept (they are never hit by the slab
 // test) but placed arbitrarily.
 // Runs on the calling thread's oneTBB arena (subtrees as tasks, large nodes binned and

@@ -226,7 +226,8 @@ template <typename Item, typename Block, typename SetLane>
 void fill_blocks(std::span<const std::uint32_t> leaf,
                  const std::function<Item(std::uint32_t)>& item, Block* blocks,
                  SetLane&& set_lane) {
-    constexpr std::size_t kOnStack = 8;
+    // Four blocks, the largest leaf of kWideBvhTriangleBuildOptions.
+    constexpr std::size_t kOnStack = 16;
     std::array<Item, kOnStack> on_stack;
     std::vector<Item> on_heap;
     Item* items = on_stack.data();
