@@ -223,14 +223,17 @@ TEST(Aovs, IdsAreThoseOfThePixelsFirstSample) {
 
 TEST(Aovs, CountTheNodesAndPrimitivesEachSampleTests) {
     if (!counts_traversal()) GTEST_SKIP() << "built without -DGLINT_TRAVERSAL_COUNTERS=ON";
-    // Five spheres, no lights, no mirrors: each eye ray is the sample's only ray. A list tests
-    // every sphere and visits no node; a BVH visits nodes and tests fewer.
+    // 32 spheres in a row, no lights, no mirrors: each eye ray is the sample's only ray. A list
+    // tests every sphere and visits no node; a BVH visits nodes and tests fewer (a few spheres
+    // would be one leaf of blocks, which every ray tests).
     Scene scene = sphere_scene();
-    for (int i = 1; i <= 4; ++i) scene.objects.push_back({Sphere{{float(3 * i), 0, 0}, 1}, 1});
+    constexpr int kSpheres = 32;
+    for (int i = 1; i < kSpheres; ++i)
+        scene.objects.push_back({Sphere{{float(3 * i), 0, 0}, 1}, 1});
     const AovSet cost = parse_aov_list("cost");
     const RenderResult list = render_with(scene, cost, AccelKind::list);
     for (std::size_t i = 0; i < list.image.pixels.size(); ++i) {
-        EXPECT_EQ(layer(list, Aov::primitives).pixels[i], Color::gray(5));
+        EXPECT_EQ(layer(list, Aov::primitives).pixels[i], Color::gray(kSpheres));
         EXPECT_EQ(layer(list, Aov::nodes).pixels[i], Color{});
     }
     const RenderResult bvh = render_with(scene, cost, AccelKind::bvh);
@@ -240,7 +243,7 @@ TEST(Aovs, CountTheNodesAndPrimitivesEachSampleTests) {
         tested += layer(bvh, Aov::primitives).pixels[i].r;
     }
     EXPECT_GT(nodes, 0);
-    EXPECT_LT(tested, 5.0f * float(bvh.image.pixels.size()));
+    EXPECT_LT(tested, float(kSpheres) * float(bvh.image.pixels.size()));
 }
 
 TEST(Aovs, PicturesGetALegendStripAndTheirMap) {
