@@ -41,7 +41,6 @@ inline bool is_traceable(const Ray& ray) {
     return o.x + o.y + o.z + d.x + d.y + d.z == 0;
 }
 
-// Built over a primitive array that the caller keeps alive and unchanged.
 // Some of a packet's rays, gathered in order with their ranges, and the slot in the packet each
 // came from: what a structure traces on when the others have left the packet (rays that cannot
 // hit anything, or that a plane already blocks).
@@ -66,6 +65,7 @@ struct PacketSubset {
     }
 };
 
+// Built over a primitive array that the caller keeps alive and unchanged.
 class Aggregate {
 public:
     virtual ~Aggregate() = default;

@@ -226,8 +226,9 @@ template <typename Item, typename Block, typename SetLane>
 void fill_blocks(std::span<const std::uint32_t> leaf,
                  const std::function<Item(std::uint32_t)>& item, Block* blocks,
                  SetLane&& set_lane) {
-    // Four blocks, the largest leaf of kWideBvhTriangleBuildOptions.
-    constexpr std::size_t kOnStack = 16;
+    // The largest leaf of kWideBvhTriangleBuildOptions (four blocks).
+    constexpr auto kOnStack = std::size_t(kWideBvhTriangleBuildOptions.max_leaf_size *
+                                          kWideBvhTriangleBuildOptions.block_size);
     std::array<Item, kOnStack> on_stack;
     std::vector<Item> on_heap;
     Item* items = on_stack.data();
